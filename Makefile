@@ -1,0 +1,41 @@
+# softglass — the two entry points of a fresh machine, plus a few conveniences.
+#   make demo   install what is missing, build (Release), run the main job
+#   make test   install what is missing, build (Release), run the test suite
+BUILD    ?= build
+JOBS     ?= $(shell nproc)
+CMAKE_FLAGS ?=
+
+.PHONY: all deps build test demo sanitize bench format clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+# The CI suite: everything but the long validation runs.
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE validation
+
+demo: build
+	@mkdir -p out
+	@$(BUILD)/micro/micro run cases/demo.prm --output out/demo.h5 --force
+
+# The same suite under AddressSanitizer and UndefinedBehaviorSanitizer.
+sanitize: deps
+	@cmake -S . -B $(BUILD)-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOFTGLASS_SANITIZE=ON >/dev/null
+	@cmake --build $(BUILD)-sanitize -j $(JOBS)
+	@cd $(BUILD)-sanitize && ctest --output-on-failure -j $(JOBS) -L sanitize
+
+bench: build
+	@bash scripts/install-deps.sh bench
+	@bash bench/run_all.sh $(BUILD)
+
+format:
+	@git ls-files '*.h' '*.cpp' | xargs clang-format -i
+
+clean:
+	@rm -rf $(BUILD) $(BUILD)-sanitize

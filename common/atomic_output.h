@@ -1,0 +1,33 @@
+// Writing a result file so that it is either complete or absent.
+//
+// The file is written under a temporary name in the same directory and renamed
+// onto the final path only when `commit()` is called; an exception or a kill
+// before that leaves any earlier file at the final path untouched.
+#pragma once
+
+#include <filesystem>
+
+namespace softglass {
+
+class AtomicOutput {
+ public:
+  /// Refuses (OutputExistsError) when `final_path` exists and `overwrite` is false.
+  AtomicOutput(std::filesystem::path final_path, bool overwrite);
+  ~AtomicOutput();
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+
+  /// Where to write; unique per process.
+  const std::filesystem::path& temporary_path() const { return temporary_; }
+  const std::filesystem::path& final_path() const { return final_; }
+
+  /// Renames the temporary file onto the final path (atomic on POSIX).
+  void commit();
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path temporary_;
+  bool committed_ = false;
+};
+
+}  // namespace softglass

@@ -1,0 +1,63 @@
+#include "micro/contact/piecewise_power_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace softglass::micro {
+
+namespace {
+double branch_energy(const PiecewisePowerLaw::Branch& b, double eps) {
+  // ∫ a ε^n dε = a ε^{n+1}/(n+1)
+  return b.prefactor * std::pow(eps, b.exponent + 1.0) / (b.exponent + 1.0);
+}
+}  // namespace
+
+PiecewisePowerLaw::PiecewisePowerLaw(std::vector<Branch> branches)
+    : branches_(std::move(branches)) {
+  if (branches_.empty() || branches_.front().start != 0.0) {
+    throw std::invalid_argument("a piecewise power law must start at deformation 0");
+  }
+  for (std::size_t k = 0; k < branches_.size(); ++k) {
+    const Branch& b = branches_[k];
+    if (!(b.prefactor > 0.0) || !(b.exponent > 0.0) || !std::isfinite(b.exponent)) {
+      throw std::invalid_argument("power-law branch " + std::to_string(k) +
+                                  " needs a positive prefactor and exponent");
+    }
+    if (k > 0) {
+      const Branch& prev = branches_[k - 1];
+      if (!(b.start > prev.start)) throw std::invalid_argument("branch starts must increase");
+      const double left = prev.prefactor * std::pow(b.start, prev.exponent);
+      const double right = b.prefactor * std::pow(b.start, b.exponent);
+      if (std::abs(left - right) > 1e-9 * std::max(left, right)) {
+        throw std::invalid_argument("power-law branches do not join at deformation " +
+                                    std::to_string(b.start));
+      }
+    }
+    kinds_.push_back(b.exponent == 1.5 ? Kind::three_halves
+                     : b.exponent == 2.0 ? Kind::two
+                     : b.exponent == 3.0 ? Kind::three
+                                         : Kind::general);
+  }
+  energy_at_start_.assign(branches_.size(), 0.0);
+  for (std::size_t k = 1; k < branches_.size(); ++k) {
+    const Branch& prev = branches_[k - 1];
+    energy_at_start_[k] = energy_at_start_[k - 1] + branch_energy(prev, branches_[k].start) -
+                          branch_energy(prev, prev.start);
+  }
+}
+
+std::size_t PiecewisePowerLaw::bisect(double eps) const {
+  const auto it = std::upper_bound(branches_.begin(), branches_.end(), eps,
+                                   [](double e, const Branch& b) { return e < b.start; });
+  return static_cast<std::size_t>(it - branches_.begin()) - 1;
+}
+
+double PiecewisePowerLaw::energy(double eps) const {
+  const std::size_t k = branch_of(eps);
+  const Branch& b = branches_[k];
+  return energy_at_start_[k] + branch_energy(b, eps) - branch_energy(b, b.start);
+}
+
+}  // namespace softglass::micro

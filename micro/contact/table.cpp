@@ -1,0 +1,101 @@
+// `table`: a user-measured or computed force law, read from a text file of
+// (ε, F = f/(E* R_c²)) rows and interpolated linearly in log–log coordinates,
+// i.e. as a power law between consecutive points. Below the first point the first
+// segment's power law continues to ε = 0 (so F → 0); above the last point the
+// last segment's power law continues. Both columns must increase strictly.
+//
+// File format: two numbers per line separated by spaces, tabs or a comma; blank
+// lines and lines starting with '#' are ignored.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.h"
+#include "micro/contact/contact_law.h"
+#include "micro/contact/piecewise_power_law.h"
+
+namespace softglass::micro {
+namespace {
+
+struct Point {
+  double eps, force;
+};
+
+std::vector<Point> read_points(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", file.string()));
+  std::vector<Point> points;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    for (char& c : line)
+      if (c == ',' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream fields(line);
+    std::string first;
+    if (!(fields >> first) || first.front() == '#') continue;
+    Point p{};
+    std::string rest;
+    fields.clear();
+    fields.str(line);
+    if (!(fields >> p.eps >> p.force) || (fields >> rest)) {
+      throw InputError(fmt::format("contact-law table '{}' line {}: expected two numbers "
+                                   "(deformation, reduced force), got '{}'",
+                                   file.string(), number, line));
+    }
+    if (!std::isfinite(p.eps) || !std::isfinite(p.force) || p.eps <= 0.0 || p.force <= 0.0) {
+      throw InputError(fmt::format("contact-law table '{}' line {}: deformation and force must "
+                                   "be positive and finite, got {} {}",
+                                   file.string(), number, p.eps, p.force));
+    }
+    if (!points.empty() && (p.eps <= points.back().eps || p.force <= points.back().force)) {
+      throw InputError(fmt::format("contact-law table '{}' line {}: deformation and force must "
+                                   "both increase strictly from one row to the next",
+                                   file.string(), number));
+    }
+    points.push_back(p);
+  }
+  if (points.size() < 2) {
+    throw InputError(fmt::format("contact-law table '{}' needs at least two rows, has {}",
+                                 file.string(), points.size()));
+  }
+  return points;
+}
+
+PiecewisePowerLaw interpolate(const std::vector<Point>& p) {
+  std::vector<PiecewisePowerLaw::Branch> branches;
+  for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+    const double exponent = std::log(p[k + 1].force / p[k].force) / std::log(p[k + 1].eps / p[k].eps);
+    const double prefactor = p[k].force / std::pow(p[k].eps, exponent);
+    branches.push_back({k == 0 ? 0.0 : p[k].eps, prefactor, exponent});
+  }
+  return PiecewisePowerLaw(std::move(branches));
+}
+
+class TableLaw final : public ContactLaw {
+ public:
+  explicit TableLaw(const std::filesystem::path& file) : law_(interpolate(read_points(file))) {}
+
+  std::string name() const override { return "table"; }
+
+  void evaluate(std::span<const double> eps, std::span<double> force,
+                std::span<double> stiffness) const override {
+    for (std::size_t k = 0; k < eps.size(); ++k) law_.evaluate(eps[k], force[k], stiffness[k]);
+  }
+
+  double energy(double eps) const override { return law_.energy(eps); }
+
+ private:
+  PiecewisePowerLaw law_;
+};
+
+}  // namespace
+
+std::unique_ptr<ContactLaw> make_table_law(const ContactLawSpec& spec) {
+  if (spec.table_file.empty()) {
+    throw InputError("contact law 'table' needs a table file (parameter 'table file')");
+  }
+  return std::make_unique<TableLaw>(spec.table_file);
+}
+
+}  // namespace softglass::micro

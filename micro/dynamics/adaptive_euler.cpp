@@ -1,0 +1,76 @@
+// `euler`: explicit Euler with a step that follows the stiffness and a local
+// error estimate.
+//
+// Step size. dt = min(stability_fraction · 2/λ, error-controlled step, max_step),
+// where λ is the Gershgorin bound on the fastest elastic relaxation rate
+// (overdamped_shear.h). Since λ bounds every eigenvalue of the linearised
+// dynamics, dt λ < 2 keeps explicit Euler stable whatever γ̃ is.
+//
+// Error. The difference between the Euler step and Heun's second-order step from
+// the same point is  e = (dt/2)|u(x_{n+1}) − u(x_n)|, and u(x_{n+1}) is what the
+// next step needs anyway, so the estimate costs nothing. A step whose largest
+// per-particle e exceeds the tolerance is rejected and retried smaller; the next
+// step is dt·min(2, 0.9 √(tol/e)) (Euler's local error is O(dt²)).
+#include <algorithm>
+#include <cmath>
+
+#include "micro/dynamics/integrator.h"
+
+namespace softglass::micro {
+namespace {
+
+class AdaptiveEuler final : public Integrator {
+ public:
+  explicit AdaptiveEuler(const IntegratorSpec& spec) : spec_(spec) {}
+
+  std::string name() const override { return "euler"; }
+
+  double step(OverdampedShear& flow, double max_step) override {
+    if (!flow.evaluated()) flow.evaluate();
+    const double stable = spec_.stability_fraction * 2.0 / std::max(flow.relaxation_rate(), 1e-300);
+    double dt = std::min({proposal_, stable, spec_.max_step, max_step});
+
+    for (;;) {
+      flow.prepare_step(dt);
+      OverdampedShear::Snapshot before = flow.save();
+      flow.step(dt);
+      flow.evaluate();
+      const double error = error_estimate(before.position.size(), before.velocity, flow, dt);
+      const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
+      if (error <= spec_.tolerance) {
+        record_accepted(dt);
+        // A step cut short by max_step says nothing about the step the error allows.
+        if (dt < max_step || factor < 1.0) proposal_ = dt * std::min(2.0, factor);
+        return dt;
+      }
+      flow.restore(std::move(before));
+      ++stats_.rejected;
+      dt *= std::max(0.2, factor);
+    }
+  }
+
+ private:
+  // max_α (dt/2)|u_α(x_{n+1}) − u_α(x_n)|; u = y e_x + v, and y changed by dt v_y.
+  static double error_estimate(std::size_t n, const std::vector<Vec3>& v_before,
+                               const OverdampedShear& flow, double dt) {
+    const auto v_after = flow.velocities();
+    double worst = 0.0;
+    for (std::size_t a = 0; a < n; ++a) {
+      Vec3 change = v_after[a] - v_before[a];
+      change.x() += dt * v_before[a].y();
+      worst = std::max(worst, change.squaredNorm());
+    }
+    return 0.5 * dt * std::sqrt(worst);
+  }
+
+  IntegratorSpec spec_;
+  double proposal_ = 1e300;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_adaptive_euler(const IntegratorSpec& spec) {
+  return std::make_unique<AdaptiveEuler>(spec);
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,55 @@
+#include "micro/dynamics/integrator.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+
+#include "common/errors.h"
+
+namespace softglass::micro {
+
+// Each scheme lives in its own file and provides its factory.
+std::unique_ptr<Integrator> make_adaptive_euler(const IntegratorSpec&);
+
+namespace {
+struct RegisteredIntegrator {
+  const char* name;
+  std::unique_ptr<Integrator> (*make)(const IntegratorSpec&);
+};
+constexpr std::array kRegistry{RegisteredIntegrator{"euler", make_adaptive_euler}};
+}  // namespace
+
+void Integrator::record_accepted(double dt) {
+  stats_.smallest_step = stats_.accepted == 0 ? dt : std::min(stats_.smallest_step, dt);
+  stats_.largest_step = std::max(stats_.largest_step, dt);
+  stats_.last_step = dt;
+  ++stats_.accepted;
+}
+
+void IntegratorSpec::validate() const {
+  require(tolerance > 0.0 && tolerance <= 0.1,
+          fmt::format("integrator tolerance = {} is outside (0, 0.1] (units of R)", tolerance));
+  require(stability_fraction > 0.0 && stability_fraction < 1.0,
+          fmt::format("stability fraction = {} is outside (0, 1)", stability_fraction));
+  require(max_step > 0.0 && max_step <= 1.0,
+          fmt::format("maximum step = {} is outside (0, 1] (strain)", max_step));
+}
+
+std::vector<std::string> integrator_names() {
+  std::vector<std::string> names;
+  for (const auto& i : kRegistry) names.emplace_back(i.name);
+  return names;
+}
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec) {
+  spec.validate();
+  for (const auto& i : kRegistry) {
+    if (spec.name == i.name) return i.make(spec);
+  }
+  throw InputError(fmt::format("integrator '{}' is unknown; allowed: {}", spec.name,
+                               fmt::join(integrator_names(), ", ")));
+}
+
+}  // namespace softglass::micro

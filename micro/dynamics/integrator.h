@@ -1,0 +1,53 @@
+// Time integrators for the overdamped shear dynamics: one small interface, one
+// scheme per file, chosen by name (`integrator = euler` in the parameter file).
+//
+// An integrator advances an OverdampedShear by one accepted step at a time and
+// keeps the flow evaluated at its current state between calls, so the caller
+// can read the stress after every step.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "micro/dynamics/overdamped_shear.h"
+
+namespace softglass::micro {
+
+struct IntegratorStats {
+  std::size_t accepted = 0;
+  std::size_t rejected = 0;
+  double smallest_step = 0.0;
+  double largest_step = 0.0;
+  double last_step = 0.0;
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string name() const = 0;
+
+  /// Takes one accepted step of at most `max_step` strain and returns its size.
+  virtual double step(OverdampedShear& flow, double max_step) = 0;
+
+  const IntegratorStats& stats() const { return stats_; }
+
+ protected:
+  void record_accepted(double dt);
+  IntegratorStats stats_;
+};
+
+struct IntegratorSpec {
+  std::string name = "euler";
+  double tolerance = 1e-4;          // local position error per step, units of R
+  double stability_fraction = 0.8;  // fraction of the explicit stability limit 2/λ
+  double max_step = 0.05;           // strain
+
+  void validate() const;
+};
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec);
+std::vector<std::string> integrator_names();
+
+}  // namespace softglass::micro

@@ -1,0 +1,98 @@
+#include "micro/dynamics/overdamped_shear.h"
+
+#include <fmt/format.h>
+
+#include <numbers>
+
+#include "common/errors.h"
+
+namespace softglass::micro {
+
+void ShearModel::validate() const {
+  require(std::isfinite(gamma_tilde) && gamma_tilde >= 1e-14 && gamma_tilde <= 1e-1,
+          fmt::format("dimensionless shear rate γ̃ = {} is outside [1e-14, 1e-1]", gamma_tilde));
+  require(std::isfinite(mobility_factor) && mobility_factor > 0.0 && mobility_factor <= 1.0,
+          fmt::format("mobility factor f_r = {} is outside (0, 1]", mobility_factor));
+  drag.validate();
+}
+
+ShearObservables observables(const Eigen::Matrix3d& s) {
+  return {s(1, 0), s(0, 0) - s(1, 1), s(1, 1) - s(2, 2), -s.trace() / 3.0};
+}
+
+OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model)
+    : system_(std::move(system)), model_(model), drag_(model.drag) {
+  model_.validate();
+}
+
+void OverdampedShear::evaluate() {
+  const bool with_drag = model_.drag.enabled;
+  const ContactField& field = system_.compute_forces({.energy = false, .contacts = with_drag});
+  Particles& p = system_.particles();
+  const std::size_t n = p.size();
+  const double friction_per_radius = 6.0 * std::numbers::pi * model_.gamma_tilde / model_.mobility_factor;
+  friction_.resize(n);
+  for (std::size_t a = 0; a < n; ++a) friction_[a] = friction_per_radius * p.radius[a];
+
+  if (with_drag) {
+    last_solve_ = drag_.solve(field.contacts, model_.gamma_tilde, friction_, field.force, p.velocity);
+    viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity);
+  } else {
+    for (std::size_t a = 0; a < n; ++a) p.velocity[a] = field.force[a] / friction_[a];
+    viscous_virial_.setZero();
+  }
+  elastic_virial_ = field.virial;
+
+  double rate = 0.0, speed2 = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    rate = std::max(rate, 2.0 * field.stiffness_sum[a] / friction_[a]);
+    speed2 = std::max(speed2, p.velocity[a].squaredNorm());
+  }
+  relaxation_rate_ = rate;
+  max_speed_ = std::sqrt(speed2);
+  if (!std::isfinite(max_speed_)) {
+    throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
+  }
+  evaluated_ = true;
+  ++evaluations_;
+}
+
+StressSample OverdampedShear::stress() const {
+  const double volume = system_.box().volume();
+  return {-elastic_virial_ / volume, -viscous_virial_ / volume};
+}
+
+void OverdampedShear::prepare_step(double dt) {
+  // A rebuild reorders the particles; velocities move with them, and the step
+  // needs nothing else from the last evaluation.
+  system_.ensure_neighbours(dt * max_speed_, strain() + dt);
+}
+
+void OverdampedShear::step(double dt) {
+  const auto& x = system_.particles().position;
+  const auto& v = system_.particles().velocity;
+  system_.move_all([&](std::size_t i) {
+    const Vec3 nonaffine = dt * v[i];
+    return std::pair{Vec3(nonaffine + Vec3(dt * x[i].y(), 0.0, 0.0)), nonaffine};
+  });
+  system_.advance_strain(dt);
+  evaluated_ = false;
+}
+
+OverdampedShear::Snapshot OverdampedShear::save() const {
+  return {system_.particles().position, system_.particles().velocity, system_.tracking(), strain(),
+          relaxation_rate_, max_speed_, elastic_virial_, viscous_virial_};
+}
+
+void OverdampedShear::restore(Snapshot s) {
+  system_.restore_positions(s.position, s.strain);
+  system_.particles().velocity = std::move(s.velocity);
+  system_.restore_tracking(std::move(s.tracking));
+  relaxation_rate_ = s.relaxation_rate;
+  max_speed_ = s.max_speed;
+  elastic_virial_ = s.elastic_virial;
+  viscous_virial_ = s.viscous_virial;
+  evaluated_ = true;
+}
+
+}  // namespace softglass::micro

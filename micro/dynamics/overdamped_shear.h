@@ -1,0 +1,99 @@
+// Overdamped particles in simple shear: the paper's equation of motion.
+//
+// In reduced units (lengths R, time 1/γ̇ so that time is strain, forces E* R²)
+//     dx_α/dγ = y_α e_x + v_α,     ζ_α v_α = F^e_α + F^EHD_α(v),
+//     ζ_α = γ̃ / m_α = 6π γ̃ R_α / f_r,
+// where v is the non-affine velocity (spec model.md §4). This class evaluates the
+// right-hand side at the current configuration — elastic forces, the implicit
+// EHD velocity solve, the stress, and a bound on the stiffness — and moves the
+// particles; integrators (integrator.h) decide the steps.
+//
+// Stiffness. Linearised about a configuration, the elastic part of the motion is
+// δẋ = −ζ⁻¹ H δx with H the Hessian of the elastic energy. Block Gershgorin
+// bounds its fastest rate by  λ = max_α 2 Σ_c ‖K_c‖ / ζ_α  (per unit strain); the
+// EHD drag adds friction and only slows relaxation. An explicit step dt is stable
+// when dt λ < 2, so the step follows the stiffness and scales like γ̃.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "micro/forces/ehd_drag.h"
+#include "micro/system/contact_system.h"
+
+namespace softglass::micro {
+
+struct ShearModel {
+  double gamma_tilde = 1e-5;      // γ̇ η_s / E*
+  double mobility_factor = 0.01;  // f_r
+  EhdSettings drag;
+
+  void validate() const;
+};
+
+/// Stress tensors (units of E*), σ = −(1/V) Σ d ⊗ f over contacts.
+struct StressSample {
+  Eigen::Matrix3d elastic = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d viscous = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d total() const { return elastic + viscous; }
+};
+
+class OverdampedShear {
+ public:
+  OverdampedShear(ContactSystem system, const ShearModel& model);
+
+  ContactSystem& system() { return system_; }
+  const ContactSystem& system() const { return system_; }
+  const ShearModel& model() const { return model_; }
+  double strain() const { return system_.box().strain(); }
+
+  /// Forces, velocities, stress and stiffness bound at the current configuration.
+  void evaluate();
+  bool evaluated() const { return evaluated_; }
+
+  /// Non-affine velocities v of the last evaluation (units γ̇ R).
+  std::span<const Vec3> velocities() const { return system_.particles().velocity; }
+  double relaxation_rate() const { return relaxation_rate_; }
+  double max_speed() const { return max_speed_; }
+  StressSample stress() const;
+  std::size_t contact_count() const { return system_.forces().contact_count; }
+  const VelocitySolveStats& last_solve() const { return last_solve_; }
+  std::size_t evaluations() const { return evaluations_; }
+
+  /// Makes the neighbour list valid for an Euler step of `dt` from here. May
+  /// reorder particles (velocities move with them).
+  void prepare_step(double dt);
+  /// x += dt (y e_x + v), strain += dt, with v from the last evaluation.
+  void step(double dt);
+
+  /// Everything `step` and `evaluate` change, for rejecting a trial step.
+  struct Snapshot {
+    std::vector<Vec3> position, velocity;
+    ContactSystem::Tracking tracking;
+    double strain, relaxation_rate, max_speed;
+    Eigen::Matrix3d elastic_virial, viscous_virial;
+  };
+  Snapshot save() const;
+  void restore(Snapshot snapshot);
+
+ private:
+  ContactSystem system_;
+  ShearModel model_;
+  EhdDrag drag_;
+  std::vector<double> friction_;
+  bool evaluated_ = false;
+  double relaxation_rate_ = 0.0;
+  double max_speed_ = 0.0;
+  Eigen::Matrix3d elastic_virial_ = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d viscous_virial_ = Eigen::Matrix3d::Zero();
+  VelocitySolveStats last_solve_;
+  std::size_t evaluations_ = 0;
+};
+
+/// σ = σ_yx, N1 = σ_xx − σ_yy, N2 = σ_yy − σ_zz, Π = −tr σ / 3.
+struct ShearObservables {
+  double shear, n1, n2, pressure;
+};
+ShearObservables observables(const Eigen::Matrix3d& sigma);
+
+}  // namespace softglass::micro

@@ -1,0 +1,67 @@
+// Elastic contact forces, their virial and stiffness, from the neighbour list.
+//
+// Reduced units: lengths R, forces E* R², stresses E*. For each overlapping pair
+// (h = R_i + R_j − r > 0) the force on i from j is
+//     f = R_c² F(ε) n⊥,   n⊥ = (x_i − x_j)/r,   ε = h/R_c,
+// and the pair's Hessian block has the norm max(R_c F'(ε), |f|/r) (normal
+// stiffness and the tangential "prestress" term f/r). The per-particle sum of
+// these norms bounds the largest eigenvalue of the Hessian (block Gershgorin),
+// which sets the stable step of an explicit integrator.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "micro/contact/contact_law.h"
+#include "micro/neighbour/neighbour_list.h"
+#include "micro/system/lees_edwards_box.h"
+
+namespace softglass::micro {
+
+/// The contacts of the current configuration, kept when a velocity-dependent
+/// drag or an analysis needs them.
+struct ContactList {
+  std::vector<std::uint32_t> i, j;
+  std::vector<Vec3> separation;      // d = x_i − x_j (nearest image)
+  std::vector<double> deformation;   // ε
+  std::vector<double> contact_radius;  // R_c
+  std::vector<double> force;         // |f| = R_c² F(ε)
+  std::vector<double> stiffness;     // df/dh = R_c F'(ε)
+
+  std::size_t size() const { return i.size(); }
+  void clear();
+};
+
+struct ForceRequest {
+  bool energy = false;    // Σ R_c³ W(ε): one more law call per contact
+  bool contacts = false;  // fill `ContactField::contacts`
+};
+
+/// Result of one force evaluation; buffers are reused between evaluations.
+struct ContactField {
+  std::vector<Vec3> force;             // F^e_i
+  std::vector<double> stiffness_sum;   // Σ over contacts of the Hessian block norm
+  Eigen::Matrix3d virial = Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V)
+  double energy = 0.0;
+  double force_magnitude_sum = 0.0;  // Σ_c |f_c|
+  std::size_t contact_count = 0;
+  ContactList contacts;
+
+  std::size_t memory_bytes() const;
+
+ private:
+  friend void compute_contact_forces(const ContactLaw&, const LeesEdwardsBox&,
+                                     std::span<const Vec3>, std::span<const double>,
+                                     const NeighbourList&, const ForceRequest&, ContactField&);
+  std::vector<std::vector<double>> thread_buffers_;  // per-thread (f_x, f_y, f_z, k) for j
+  std::vector<ContactList> thread_contacts_;
+};
+
+void compute_contact_forces(const ContactLaw& law, const LeesEdwardsBox& box,
+                            std::span<const Vec3> x, std::span<const double> radius,
+                            const NeighbourList& neighbours, const ForceRequest& request,
+                            ContactField& out);
+
+}  // namespace softglass::micro

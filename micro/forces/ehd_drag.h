@@ -1,0 +1,107 @@
+// Elastohydrodynamic (EHD) drag and the velocities it makes implicit.
+//
+// Drag on α from β (spec model.md §3), in reduced units (forces E* R²,
+// velocities γ̇ R):
+//     f^EHD = −a_c |w|^{1/2} ŵ,     a_c = ( γ̃ C R_c³ ε^{(2n+1)/2} )^{1/2},
+// with w the tangential part of the relative velocity (including the affine
+// flow). Because C ε^n = ¾ F(ε) for every law, a_c² = ¾ γ̃ R_c³ F(ε) √ε = ¾ γ̃ R_c |f| √ε:
+// the drag needs only the elastic force, so it follows any contact law.
+//
+// Velocities. Overdamped motion, u_α = u∞(x_α) + (m_α/γ̃)(F^e_α + F^EHD_α) with
+// m_α = f_r/(6π R_α). Writing v = u − u∞ for the non-affine velocity and
+// ζ_α = γ̃/m_α for the friction, v solves
+//     ζ_α v_α − F^EHD_α(v) = F^e_α ,
+// in which the relative velocity of a contact is v_i − v_j + d_y e_x. This is the
+// stationarity condition of the strictly convex function
+//     Φ(v) = Σ_α ½ ζ_α |v_α|² + Σ_c ⅔ a_c |P_c(v_i − v_j + d_y e_x)|^{3/2} − Σ_α F^e_α·v_α ,
+// (P_c projects on the contact plane), so the solution exists, is unique, and is
+// found by Newton's method with a backtracking line search on Φ. The Hessian of
+// ⅔|w|^{3/2} is |w|^{−1/2}(P − ½ŵŵ), unbounded as w → 0 (the √u∥ law); Newton
+// uses it with |w| floored at a small fraction of the velocity scale. The floor
+// changes only the search direction: convergence is judged on the exact
+// gradient, and the line search on Φ keeps every iteration a descent.
+// Each Newton system is solved by conjugate gradients with a 3×3 block-Jacobi
+// preconditioner (the Hessian is symmetric positive definite).
+//
+// `lagged` coupling replaces all this by one fixed-point sweep per step: the
+// drag is evaluated with the previous velocities. It is there to measure what
+// that shortcut costs (docs/numerics.md); it diverges when the drag dominates
+// the friction, i.e. at low γ̃.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "micro/forces/contact_forces.h"
+
+namespace softglass::micro {
+
+enum class DragCoupling { implicit, lagged };
+DragCoupling parse_drag_coupling(const std::string& name);
+std::string to_string(DragCoupling coupling);
+
+struct EhdSettings {
+  bool enabled = true;
+  DragCoupling coupling = DragCoupling::implicit;
+  double tolerance = 1e-6;   // velocity residual relative to max(1, max|v|)
+  int max_newton_iterations = 60;
+  int max_cg_iterations = 1000;
+
+  void validate() const;
+};
+
+struct VelocitySolveStats {
+  int newton_iterations = 0;
+  int cg_iterations = 0;
+  double residual = 0.0;  // final, relative
+};
+
+class EhdDrag {
+ public:
+  explicit EhdDrag(EhdSettings settings);
+  const EhdSettings& settings() const { return settings_; }
+
+  /// Non-affine velocities v for the given contacts and elastic forces; `v` holds
+  /// the initial guess on entry. Throws NumericalError if Newton fails.
+  VelocitySolveStats solve(const ContactList& contacts, double gamma_tilde,
+                           std::span<const double> friction, std::span<const Vec3> elastic_force,
+                           std::span<Vec3> v);
+
+  /// Σ_c d ⊗ f^EHD at velocities v (σ^v = −virial/V); also the drag on each
+  /// particle if `drag` is not empty.
+  Eigen::Matrix3d virial(const ContactList& contacts, double gamma_tilde,
+                         std::span<const Vec3> v, std::span<Vec3> drag = {}) const;
+
+ private:
+  struct Geometry {  // per contact
+    std::vector<Vec3> normal;
+    std::vector<double> coefficient;  // a_c
+  };
+  void prepare(const ContactList& contacts, double gamma_tilde);
+  void build_incidence(const ContactList& contacts, std::size_t n);
+  /// Φ(v) and its gradient; leaves the tangential relative velocities in `w`.
+  double objective(const ContactList& contacts, std::span<const double> friction,
+                   std::span<const Vec3> force, std::span<const Vec3> v, std::vector<Vec3>& w,
+                   std::vector<Vec3>& gradient);
+  /// Adds per-contact vectors to particles: out_α += Σ_{c∋α} ±y_c.
+  void gather(std::span<const Vec3> per_contact, std::span<Vec3> out) const;
+  /// Newton direction: H δ = −g by block-Jacobi preconditioned CG to ‖r‖ ≤ η‖g‖.
+  int newton_direction(const ContactList& contacts, std::span<const double> friction,
+                       double velocity_scale, double eta);
+
+  EhdSettings settings_;
+  Geometry geometry_;
+  std::vector<Vec3> scratch_;    // per-contact vectors
+  std::vector<std::size_t> incidence_start_;
+  std::vector<std::uint32_t> incidence_;   // contact index × 2 + (0: i side, 1: j side)
+  // Newton state, reused between solves: current and trial points.
+  std::vector<Vec3> w_, w_trial_, gradient_, gradient_trial_, trial_;
+  std::vector<Vec3> step_, r_, z_, p_, hp_;
+  std::vector<Eigen::Matrix3d> block_inverse_;
+  std::vector<double> s_;          // a_c / √max(|w|, floor)
+  std::vector<Vec3> unit_w_;       // ŵ
+};
+
+}  // namespace softglass::micro

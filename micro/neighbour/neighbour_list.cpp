@@ -1,0 +1,152 @@
+#include "micro/neighbour/neighbour_list.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "common/errors.h"
+
+namespace softglass::micro {
+
+namespace {
+inline int cell_coordinate(double position, double width, int cells) {
+  return std::min(static_cast<int>(position / width), cells - 1);
+}
+inline int periodic(int c, int cells) { return c < 0 ? c + cells : (c >= cells ? c - cells : c); }
+}  // namespace
+
+NeighbourList::NeighbourList(double skin) : skin_(skin) {
+  require(skin > 0.0 && std::isfinite(skin), fmt::format("neighbour skin = {} must be positive", skin));
+}
+
+NeighbourList::Grid NeighbourList::grid_for(const LeesEdwardsBox& box, double max_radius) const {
+  const double reach = 2.0 * max_radius + skin_;
+  const int cells = static_cast<int>(std::floor(box.side() / reach));
+  if (cells < 3) {
+    throw InputError(fmt::format(
+        "the cell (side L = {:.4g} R) is too small for the neighbour grid: it needs L ≥ 3 × "
+        "(2 R_max + skin) = {:.4g} R; use more particles or a smaller skin",
+        box.side(), 3.0 * reach));
+  }
+  return {cells, box.side() / cells};
+}
+
+std::vector<std::uint32_t> NeighbourList::spatial_order(const LeesEdwardsBox& box,
+                                                        std::span<const Vec3> x,
+                                                        double max_radius) const {
+  const Grid g = grid_for(box, max_radius);
+  std::vector<std::uint32_t> cell(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const int cx = cell_coordinate(x[i].x(), g.width, g.cells);
+    const int cy = cell_coordinate(x[i].y(), g.width, g.cells);
+    const int cz = cell_coordinate(x[i].z(), g.width, g.cells);
+    cell[i] = static_cast<std::uint32_t>((cz * g.cells + cy) * g.cells + cx);
+  }
+  std::vector<std::uint32_t> order(x.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return cell[a] < cell[b]; });
+  return order;
+}
+
+void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
+                          std::span<const double> radius) {
+  const std::size_t n = x.size();
+  max_radius_ = n ? *std::max_element(radius.begin(), radius.end()) : 0.0;
+  const Grid g = grid_for(box, max_radius_);
+  const int nc = g.cells;
+  const double reach = 2.0 * max_radius_ + skin_;
+  const double offset = box.image_offset();
+
+  // Counting sort of the particles into cells.
+  const std::size_t ncell = static_cast<std::size_t>(nc) * nc * nc;
+  std::vector<std::uint32_t> cell_of(n);
+  cell_start_.assign(ncell + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int cx = cell_coordinate(x[i].x(), g.width, nc);
+    const int cy = cell_coordinate(x[i].y(), g.width, nc);
+    const int cz = cell_coordinate(x[i].z(), g.width, nc);
+    cell_of[i] = static_cast<std::uint32_t>((cz * nc + cy) * nc + cx);
+    ++cell_start_[cell_of[i] + 1];
+  }
+  std::partial_sum(cell_start_.begin(), cell_start_.end(), cell_start_.begin());
+  cell_members_.resize(n);
+  {
+    std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) cell_members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  }
+
+  counts_.assign(n, 0);
+  const int threads = n >= 4096 ? omp_get_max_threads() : 1;
+  thread_pairs_.resize(threads);
+
+#pragma omp parallel num_threads(threads)
+  {
+    std::vector<std::uint32_t>& pairs = thread_pairs_[omp_get_thread_num()];
+    pairs.clear();
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 xi = x[i];
+      const double ri = radius[i];
+      const int cx = cell_coordinate(xi.x(), g.width, nc);
+      const int cy = cell_coordinate(xi.y(), g.width, nc);
+      const int cz = cell_coordinate(xi.z(), g.width, nc);
+      std::uint32_t count = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        int y = cy + dy;
+        // x range of candidate cells; shifted across the Lees–Edwards boundary.
+        int x_lo = cx - 1, x_hi = cx + 1;
+        if (y < 0 || y >= nc) {
+          const double shifted = y < 0 ? xi.x() + offset : xi.x() - offset;
+          x_lo = static_cast<int>(std::floor((shifted - reach) / g.width));
+          x_hi = static_cast<int>(std::floor((shifted + reach) / g.width));
+          y = periodic(y, nc);
+        }
+        for (int dz = -1; dz <= 1; ++dz) {
+          const int z = periodic(cz + dz, nc);
+          for (int xc = x_lo; xc <= x_hi; ++xc) {
+            const int xw = ((xc % nc) + nc) % nc;
+            const std::size_t c = (static_cast<std::size_t>(z) * nc + y) * nc + xw;
+            for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+              const std::uint32_t j = cell_members_[k];
+              if (j <= i) continue;
+              const double cutoff = ri + radius[j] + skin_;
+              if (box.minimum_image(xi - x[j]).squaredNorm() < cutoff * cutoff) {
+                pairs.push_back(j);
+                ++count;
+              }
+            }
+          }
+        }
+      }
+      counts_[i] = count;
+    }
+  }
+
+  // Concatenate the per-thread lists into CSR form. With a static schedule the
+  // threads own consecutive ranges of i, so thread order is index order.
+  start_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) start_[i + 1] = start_[i] + counts_[i];
+  neighbours_.clear();
+  neighbours_.reserve(start_[n]);
+  for (const auto& pairs : thread_pairs_) neighbours_.insert(neighbours_.end(), pairs.begin(), pairs.end());
+  // Neighbours of each i in increasing j: a fixed summation order whatever the grid.
+  for (std::size_t i = 0; i < n; ++i) {
+    std::sort(neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i]),
+              neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i + 1]));
+  }
+
+  strain_at_build_ = box.strain();
+  built_ = true;
+  ++builds_;
+}
+
+std::size_t NeighbourList::memory_bytes() const {
+  return start_.capacity() * sizeof(std::size_t) + neighbours_.capacity() * sizeof(std::uint32_t) +
+         (cell_start_.capacity() + cell_members_.capacity() + counts_.capacity()) *
+             sizeof(std::uint32_t);
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,178 @@
+#include "micro/protocol/shear_run.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "common/errors.h"
+
+namespace softglass::micro {
+
+namespace {
+// The observables whose precision decides when to stop.
+constexpr const char* kStoppingObservables[] = {"sigma", "N1", "N2"};
+}  // namespace
+
+void ShearProtocol::validate() const {
+  require(sample_interval > 0.0 && sample_interval <= 0.5,
+          fmt::format("sample interval = {} is outside (0, 0.5] (strain)", sample_interval));
+  require(check_interval >= sample_interval,
+          fmt::format("check interval = {} is below the sample interval {}", check_interval, sample_interval));
+  require(min_strain >= 0.0 && std::isfinite(min_strain),
+          fmt::format("minimum strain = {} must be non-negative", min_strain));
+  require(max_strain >= min_strain && max_strain <= 1e6,
+          fmt::format("maximum strain = {} is outside [minimum strain = {}, 1e6]", max_strain, min_strain));
+  require(min_stationary_strain >= 20 * sample_interval,
+          fmt::format("minimum stationary strain = {} holds fewer than 20 samples", min_stationary_strain));
+  require(target_relative_error > 0.0 && target_relative_error < 1.0,
+          fmt::format("target relative error = {} is outside (0, 1)", target_relative_error));
+}
+
+const std::vector<std::string>& shear_observable_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const char* base : {"sigma", "N1", "N2", "pressure"})
+      for (const char* part : {"", "_elastic", "_viscous"}) n.push_back(std::string(base) + part);
+    return n;
+  }();
+  return names;
+}
+
+std::vector<double> TimeSeries::component(const std::string& observable) const {
+  const auto underscore = observable.find('_');
+  const std::string base = observable.substr(0, underscore);
+  const std::string part = underscore == std::string::npos ? "" : observable.substr(underscore + 1);
+  const auto value = [&](std::size_t k) -> double {
+    const Eigen::Matrix3d s = part == "elastic" ? elastic[k]
+                              : part == "viscous" ? viscous[k]
+                                                  : Eigen::Matrix3d(elastic[k] + viscous[k]);
+    const ShearObservables o = observables(s);
+    if (base == "sigma") return o.shear;
+    if (base == "N1") return o.n1;
+    if (base == "N2") return o.n2;
+    if (base == "pressure") return o.pressure;
+    throw std::invalid_argument("unknown observable " + observable);
+  };
+  std::vector<double> values(size());
+  for (std::size_t k = 0; k < size(); ++k) values[k] = value(k);
+  return values;
+}
+
+const MeanEstimate& ShearSummary::operator[](const std::string& name) const {
+  for (const auto& o : observables)
+    if (o.name == name) return o.estimate;
+  throw std::invalid_argument("no observable " + name);
+}
+
+double ShearSummary::worst_relative_error() const {
+  double worst = 0.0;
+  for (const char* name : kStoppingObservables) {
+    const MeanEstimate& e = (*this)[name];
+    worst = std::max(worst, e.mean != 0.0 ? std::abs(e.standard_error / e.mean)
+                                          : std::numeric_limits<double>::infinity());
+  }
+  return worst;
+}
+
+ShearSummary summarise(const TimeSeries& series, double min_stationary_strain) {
+  ShearSummary summary;
+  if (series.size() < 2) return summary;
+  const double interval = series.strain[1] - series.strain[0];
+  const auto min_samples = static_cast<std::size_t>(std::ceil(min_stationary_strain / interval));
+
+  const auto& names = shear_observable_names();
+  std::vector<std::vector<double>> values;
+  for (const auto& name : names) values.push_back(series.component(name));
+  std::vector<std::span<const double>> deciding;
+  for (const char* name : kStoppingObservables) {
+    deciding.emplace_back(values[std::find(names.begin(), names.end(), name) - names.begin()]);
+  }
+
+  const SteadyStateAnalysis analysis = analyse_steady_state(deciding, min_samples);
+  const std::size_t first = analysis.transient_samples;
+  summary.transient_strain = series.strain[first] - series.strain.front();
+  summary.averaged_strain = series.strain.back() - series.strain[first];
+  summary.transient_resolved = !analysis.transient_unresolved && analysis.enough_samples;
+
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::span<const double> stationary(values[k].data() + first, values[k].size() - first);
+    summary.observables.push_back({names[k], block_average(stationary)});
+  }
+  const double viscous = summary["sigma_viscous"].mean;
+  summary.elastic_to_viscous = viscous != 0.0 ? summary["sigma_elastic"].mean / viscous : 0.0;
+  double z = 0.0;
+  for (std::size_t k = first; k < series.size(); ++k) z += series.coordination[k];
+  summary.coordination = z / static_cast<double>(series.size() - first);
+  return summary;
+}
+
+ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const ShearProtocol& protocol,
+                      const std::function<void(const ShearProgress&)>& progress) {
+  protocol.validate();
+  const auto clock_start = std::chrono::steady_clock::now();
+  ShearResult result;
+  TimeSeries& series = result.series;
+  const double start = flow.strain();
+  const std::size_t builds_before = flow.system().neighbours().builds();
+  std::size_t newton = 0, cg = 0;
+
+  if (!flow.evaluated()) flow.evaluate();
+  const auto record = [&] {
+    const StressSample s = flow.stress();
+    series.strain.push_back(flow.strain());
+    series.elastic.push_back(s.elastic);
+    series.viscous.push_back(s.viscous);
+    series.coordination.push_back(2.0 * static_cast<double>(flow.contact_count()) /
+                                  static_cast<double>(flow.system().size()));
+    series.step.push_back(integrator.stats().last_step);
+  };
+  record();
+
+  double next_sample = start + protocol.sample_interval;
+  double next_check = start + std::max(protocol.check_interval, protocol.min_strain);
+  double worst = std::numeric_limits<double>::infinity();
+  for (;;) {
+    integrator.step(flow, next_sample - flow.strain());
+    newton += static_cast<std::size_t>(flow.last_solve().newton_iterations);
+    cg += static_cast<std::size_t>(flow.last_solve().cg_iterations);
+    if (flow.strain() < next_sample - 1e-9 * protocol.sample_interval) continue;
+
+    record();
+    next_sample += protocol.sample_interval;
+    const double sheared = flow.strain() - start;
+    if (flow.strain() >= next_check - 1e-9 * protocol.sample_interval) {
+      next_check += protocol.check_interval;
+      result.summary = summarise(series, protocol.min_stationary_strain);
+      worst = result.summary.worst_relative_error();
+      bool reliable = result.summary.transient_resolved;
+      for (const char* name : kStoppingObservables) reliable = reliable && result.summary[name].reliable;
+      if (reliable && worst <= protocol.target_relative_error) {
+        result.converged = true;
+        result.stop_reason = fmt::format("stationary, relative standard errors ≤ {:.3g}", worst);
+        break;
+      }
+    }
+    if (progress) progress({sheared, protocol.max_strain, worst});
+    if (sheared >= protocol.max_strain - 1e-9 * protocol.sample_interval) {
+      result.summary = summarise(series, protocol.min_stationary_strain);
+      result.stop_reason = fmt::format(
+          "maximum strain {} reached before the target error {} (worst {:.3g}){}", protocol.max_strain,
+          protocol.target_relative_error, result.summary.worst_relative_error(),
+          result.summary.transient_resolved ? "" : "; the transient may not be over");
+      break;
+    }
+  }
+
+  const IntegratorStats& stats = integrator.stats();
+  result.counters = {stats.accepted, stats.rejected, flow.evaluations(),
+                     flow.system().neighbours().builds() - builds_before, newton, cg,
+                     stats.smallest_step, stats.largest_step};
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return result;
+}
+
+}  // namespace softglass::micro

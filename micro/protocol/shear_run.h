@@ -1,0 +1,97 @@
+// Steady shear at fixed γ̃ until the stresses are stationary and known to the
+// requested accuracy (spec §6.2).
+//
+// The stress tensors are sampled every `sample_interval` of strain. Every
+// `check_interval` the series is analysed (analysis/steady_state.h): the start-up
+// transient is removed by MSER-5 applied to σ, N1 and N2 together, and the means
+// of the rest get standard errors by automated blocking. The run stops when
+//   • at least `min_strain` has been sheared,
+//   • the transient is resolved and the stationary part spans `min_stationary_strain`,
+//   • every error bar is reliable and |SE/mean| ≤ `target_relative_error` for σ, N1, N2,
+// or, unconverged, at `max_strain`.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "micro/analysis/steady_state.h"
+#include "micro/dynamics/integrator.h"
+#include "micro/dynamics/overdamped_shear.h"
+
+namespace softglass::micro {
+
+struct ShearProtocol {
+  double sample_interval = 0.01;
+  double check_interval = 1.0;
+  double min_strain = 5.0;
+  double max_strain = 200.0;
+  double min_stationary_strain = 5.0;
+  double target_relative_error = 0.05;
+
+  void validate() const;
+};
+
+/// The sampled history of a run.
+struct TimeSeries {
+  std::vector<double> strain;
+  std::vector<Eigen::Matrix3d> elastic, viscous;  // σ^e, σ^v (units of E*)
+  std::vector<double> coordination;               // Z = 2 × contacts / N
+  std::vector<double> step;                       // last accepted step (strain)
+
+  std::size_t size() const { return strain.size(); }
+  /// One scalar observable over the whole series, e.g. σ_yx^e.
+  std::vector<double> component(const std::string& observable) const;
+};
+
+/// Names of the scalar observables: σ, N1, N2, Π and their elastic and viscous
+/// parts ("sigma", "sigma_elastic", "sigma_viscous", "N1", …).
+const std::vector<std::string>& shear_observable_names();
+
+struct ObservableEstimate {
+  std::string name;
+  MeanEstimate estimate;
+};
+
+struct ShearSummary {
+  double transient_strain = 0.0;   // removed as start-up
+  double averaged_strain = 0.0;    // stationary window
+  bool transient_resolved = false;
+  std::vector<ObservableEstimate> observables;  // in shear_observable_names() order
+  double elastic_to_viscous = 0.0;              // σ^e / σ^v
+  double coordination = 0.0;                    // mean Z over the stationary part
+
+  const MeanEstimate& operator[](const std::string& name) const;
+  /// Largest |SE/mean| among σ, N1, N2.
+  double worst_relative_error() const;
+};
+
+/// Steady-state analysis of a series (usable at run time and afterwards).
+ShearSummary summarise(const TimeSeries& series, double min_stationary_strain);
+
+struct ShearCounters {
+  std::size_t steps = 0, rejected_steps = 0, evaluations = 0, neighbour_builds = 0;
+  std::size_t newton_iterations = 0, cg_iterations = 0;
+  double smallest_step = 0.0, largest_step = 0.0;
+};
+
+struct ShearResult {
+  TimeSeries series;
+  ShearSummary summary;
+  ShearCounters counters;
+  bool converged = false;
+  std::string stop_reason;
+  double seconds = 0.0;
+};
+
+struct ShearProgress {
+  double strain;         // sheared so far
+  double max_strain;
+  double worst_relative_error;  // at the last check (∞ before the first)
+};
+
+ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const ShearProtocol& protocol,
+                      const std::function<void(const ShearProgress&)>& progress = {});
+
+}  // namespace softglass::micro

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian packages softglass needs, and only those that are missing.
+#   scripts/install-deps.sh          build, tests and demo
+#   scripts/install-deps.sh bench    also the peers measured in bench/ (LAMMPS)
+set -euo pipefail
+
+packages=(
+  cmake g++ make ccache pkg-config
+  libeigen3-dev libhdf5-dev hdf5-tools libboost-math-dev
+  libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+  libdeal.ii-dev
+  gnuplot-nox
+)
+if [ "${1:-}" = bench ]; then
+  packages+=(lammps time)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "softglass: installing missing Debian packages: ${missing[*]}"
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "error: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

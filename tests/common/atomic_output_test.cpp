@@ -1,0 +1,122 @@
+// AtomicOutput: a result file appears whole on commit() or not at all, and an
+// existing result is only replaced when asked for.
+#include "common/atomic_output.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "common/errors.h"
+
+namespace softglass {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each test works in a directory of its own, removed afterwards.
+class AtomicOutputTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("softglass-" + std::string(test->test_suite_name()) + "-" +
+                                        test->name() + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path result() const { return dir_ / "result.h5"; }
+
+  fs::path dir_;
+};
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+bool directory_is_empty(const fs::path& dir) {
+  return fs::directory_iterator(dir) == fs::directory_iterator();
+}
+
+TEST_F(AtomicOutputTest, CommitMovesTheTemporaryFileOntoTheFinalPath) {
+  AtomicOutput output(result(), false);
+  EXPECT_EQ(output.final_path(), result());
+  EXPECT_NE(output.temporary_path(), result());
+  EXPECT_EQ(output.temporary_path().parent_path(), dir_);  // same file system: rename is atomic
+
+  write_text(output.temporary_path(), "complete");
+  EXPECT_FALSE(fs::exists(result()));
+  output.commit();
+
+  EXPECT_EQ(read_text(result()), "complete");
+  EXPECT_FALSE(fs::exists(output.temporary_path()));
+}
+
+TEST_F(AtomicOutputTest, DestructionWithoutCommitLeavesNothing) {
+  {
+    AtomicOutput output(result(), false);
+    write_text(output.temporary_path(), "partial");
+  }
+  EXPECT_TRUE(directory_is_empty(dir_));
+}
+
+TEST_F(AtomicOutputTest, DestructionWithoutCommitKeepsTheEarlierResult) {
+  write_text(result(), "earlier");
+  fs::path temporary;
+  {
+    AtomicOutput output(result(), true);
+    temporary = output.temporary_path();
+    write_text(temporary, "partial");
+  }
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_EQ(read_text(result()), "earlier");
+}
+
+TEST_F(AtomicOutputTest, RefusesAnExistingFileWithoutOverwrite) {
+  write_text(result(), "earlier");
+  try {
+    AtomicOutput output(result(), false);
+    FAIL() << "no OutputExistsError";
+  } catch (const OutputExistsError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(result().string()), std::string::npos) << message;
+    EXPECT_NE(message.find("--force"), std::string::npos) << message;
+  }
+  EXPECT_EQ(read_text(result()), "earlier");
+}
+
+TEST_F(AtomicOutputTest, OverwriteReplacesTheEarlierResultOnCommit) {
+  write_text(result(), "earlier");
+  AtomicOutput output(result(), true);
+  write_text(output.temporary_path(), "later");
+  EXPECT_EQ(read_text(result()), "earlier");  // untouched until commit
+  output.commit();
+  EXPECT_EQ(read_text(result()), "later");
+  EXPECT_FALSE(fs::exists(output.temporary_path()));
+}
+
+TEST_F(AtomicOutputTest, AMissingDirectoryIsAnInputError) {
+  const auto missing = dir_ / "missing";
+  try {
+    AtomicOutput output(missing / "result.h5", false);
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(missing.string()), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(AtomicOutputTest, AnEmptyPathIsAnInputError) {
+  EXPECT_THROW(AtomicOutput(fs::path(), false), InputError);
+}
+
+}  // namespace
+}  // namespace softglass
