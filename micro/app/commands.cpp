@@ -1,0 +1,159 @@
+#include "micro/app/commands.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "common/atomic_output.h"
+#include "common/progress.h"
+#include "micro/analysis/shear_modulus.h"
+#include "micro/app/parameter_file.h"
+#include "micro/io/run_file.h"
+
+namespace softglass::micro {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct Prepared {
+  MicroParameters parameters;
+  std::shared_ptr<const ContactLaw> law;
+  RunRecord record;
+};
+
+// Parameters, law and the relaxed packing with its G0: the common first half of
+// `pack` and `run`.
+Prepared prepare(const CommandOptions& options, const std::string& command, AtomicOutput*& out,
+                 std::optional<AtomicOutput>& storage) {
+  const auto start = Clock::now();
+  Prepared p;
+  p.parameters = read_parameter_file(options.parameter_file);
+  MicroParameters& prm = p.parameters;
+  storage.emplace(options.output.value_or(prm.output_file), prm.overwrite || options.force);
+  out = &*storage;
+  p.law = make_contact_law(prm.contact_law);
+
+  RunRecord& record = p.record;
+  record.command = command;
+  record.parameters = prm.text;
+  record.timings.threads = omp_get_max_threads();
+
+  if (!prm.packing_input.empty()) {
+    StoredPacking stored = read_packing(prm.packing_input);
+    record.packing_particles = std::move(stored.particles);
+    record.packing_box = stored.box;
+    record.packing = stored.report;
+    record.modulus = stored.modulus;
+    if (!options.quiet) std::fprintf(stderr, "packing read from %s\n", prm.packing_input.c_str());
+  } else {
+    Progress bar("packing", prm.packing.volume_fraction - prm.packing.initial_volume_fraction,
+                 options.quiet);
+    Packing packing = make_packing(prm.packing, p.law, [&](double phi) {
+      bar.update(phi - prm.packing.initial_volume_fraction, fmt::format("phi {:.3f}", phi));
+    });
+    bar.finish();
+    record.packing_particles = std::move(packing.particles);
+    record.packing_box = packing.box;
+    record.packing = packing.report;
+    record.timings.packing = seconds_since(start);
+
+    const auto modulus_start = Clock::now();
+    ContactSystem system(record.packing_particles, record.packing_box, p.law, prm.packing.skin);
+    record.modulus = shear_modulus(system);
+    record.timings.modulus = seconds_since(modulus_start);
+  }
+  return p;
+}
+
+void print_packing(const RunRecord& r, const MicroParameters& prm) {
+  const PackingReport& k = r.packing;
+  fmt::print("packing  N = {}, phi = {:.4f}, L = {:.3f} R, law {}, seed {}\n", k.particles,
+             k.volume_fraction, k.side, prm.contact_law.name, prm.packing.seed);
+  fmt::print("         Z = {:.3f} (backbone {:.3f}, {} rattlers), <eps> = {:.4f}, max eps = {:.4f}\n",
+             k.coordination, k.coordination_nonrattler, k.rattlers, k.mean_deformation,
+             k.max_deformation);
+  fmt::print("         Pi = {:.4e} E*, G0 = {:.4e} E* (affine {:.4e}), residual {:.1e}{}\n",
+             k.pressure, r.modulus.modulus, r.modulus.affine_modulus, k.residual,
+             k.converged ? "" : "  NOT CONVERGED");
+}
+
+void print_shear(const ShearRecord& s, double particles) {
+  const ShearResult& r = s.result;
+  const ShearSummary& m = r.summary;
+  fmt::print("shear    gamma~ = {:.3e}: {:.2f} strain, transient {:.2f}, averaged {:.2f}\n",
+             s.gamma_tilde, r.series.strain.back() - r.series.strain.front(), m.transient_strain,
+             m.averaged_strain);
+  fmt::print("         {}: {}\n", r.converged ? "converged" : "NOT CONVERGED", r.stop_reason);
+  fmt::print("         {:<8} {:>12} {:>10} {:>7}   {:>12} {:>12}\n", "(E*)", "total", "std.err",
+             "rel.", "elastic", "viscous");
+  for (const char* base : {"sigma", "N1", "N2", "pressure"}) {
+    const std::string b(base);
+    const MeanEstimate& t = m[b];
+    fmt::print("         {:<8} {:>12.5e} {:>10.2e} {:>6.1f}%   {:>12.5e} {:>12.5e}\n", b, t.mean,
+               t.standard_error, t.mean != 0 ? 100 * std::abs(t.standard_error / t.mean) : 0.0,
+               m[b + "_elastic"].mean, m[b + "_viscous"].mean);
+  }
+  const ShearCounters& c = r.counters;
+  fmt::print("         sigma^e/sigma^v = {:.1f}, Z = {:.3f}\n", m.elastic_to_viscous, m.coordination);
+  fmt::print("cost     {} steps ({} rejected), {} list builds, {:.2f} Newton and {:.2f} CG per "
+             "evaluation, {:.1f} s, {:.3g} particle-steps/s\n",
+             c.steps, c.rejected_steps, c.neighbour_builds,
+             double(c.newton_iterations) / double(std::max<std::size_t>(c.evaluations, 1)),
+             double(c.cg_iterations) / double(std::max<std::size_t>(c.evaluations, 1)), r.seconds,
+             particles * double(c.evaluations) / std::max(r.seconds, 1e-9));
+}
+
+void finish(RunRecord& record, AtomicOutput& out, Clock::time_point start) {
+  record.timings.total = seconds_since(start);
+  write_run_file(out.temporary_path(), record);
+  out.commit();
+  fmt::print("written  {}\n", out.final_path().string());
+}
+
+}  // namespace
+
+void pack_command(const CommandOptions& options) {
+  const auto start = Clock::now();
+  std::optional<AtomicOutput> storage;
+  AtomicOutput* out = nullptr;
+  Prepared p = prepare(options, "pack", out, storage);
+  print_packing(p.record, p.parameters);
+  finish(p.record, *out, start);
+}
+
+void run_command(const CommandOptions& options) {
+  const auto start = Clock::now();
+  std::optional<AtomicOutput> storage;
+  AtomicOutput* out = nullptr;
+  Prepared p = prepare(options, "run", out, storage);
+  const MicroParameters& prm = p.parameters;
+  RunRecord& record = p.record;
+  print_packing(record, prm);
+
+  const auto shear_start = Clock::now();
+  ContactSystem system(record.packing_particles, record.packing_box, p.law, prm.packing.skin);
+  OverdampedShear flow(std::move(system), prm.shear_model);
+  const auto integrator = make_integrator(prm.integrator);
+  Progress bar("shear", prm.protocol.max_strain, options.quiet);
+  ShearRecord shear;
+  shear.gamma_tilde = prm.shear_model.gamma_tilde;
+  shear.result = run_shear(flow, *integrator, prm.protocol, [&](const ShearProgress& progress) {
+    bar.update(progress.strain, fmt::format("strain {:.2f}, worst rel. error {:.3g}",
+                                            progress.strain, progress.worst_relative_error));
+  });
+  bar.finish();
+  shear.final_particles = flow.system().particles().in_label_order();
+  shear.final_box = flow.system().box();
+  record.timings.shear = seconds_since(shear_start);
+  print_shear(shear, static_cast<double>(record.packing.particles));
+  record.shear = std::move(shear);
+  finish(record, *out, start);
+}
+
+}  // namespace softglass::micro

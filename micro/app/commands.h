@@ -1,0 +1,22 @@
+// The `micro` subcommands: what each does, start to finish.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+namespace softglass::micro {
+
+struct CommandOptions {
+  std::filesystem::path parameter_file;
+  std::optional<std::filesystem::path> output;  // overrides the file's output entry
+  bool force = false;                           // overwrite an existing output
+  bool quiet = false;                           // no progress display
+};
+
+/// Make and relax a packing, measure it (Z, ε, Π, G0) and write it.
+void pack_command(const CommandOptions& options);
+
+/// Pack (or reuse a packing), shear at one γ̃ to a stationary state, summarise.
+void run_command(const CommandOptions& options);
+
+}  // namespace softglass::micro

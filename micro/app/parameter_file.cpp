@@ -1,0 +1,240 @@
+#include "micro/app/parameter_file.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "common/errors.h"
+
+namespace softglass::micro {
+
+namespace {
+
+using dealii::ParameterHandler;
+namespace Patterns = dealii::Patterns;
+
+/// What the file sets, before conversion to the engine's types.
+struct Entries {
+  MicroParameters p;
+  std::string distribution = "gaussian";
+  std::string coupling = "implicit";
+  std::string packing_input, table_file, output_file = "micro.h5";
+  unsigned long particles = 1000;
+  unsigned long seed = 1;
+  unsigned long stage_iterations = 2000;
+  unsigned long max_relaxation_iterations = 500000;
+};
+
+// Declares an entry bound to `value`, its documentation ending with what the
+// pattern allows, so that the template states every range.
+template <class T>
+void entry(ParameterHandler& prm, const std::string& name, T& value, const std::string& doc,
+           const Patterns::PatternBase& pattern) {
+  prm.add_parameter(name, value, doc + " Allowed: " + pattern.description(Patterns::PatternBase::Text) + ".",
+                    pattern);
+}
+
+void declare(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
+  prm.enter_subsection("particles");
+  entry(prm, "number", e.particles, "Number of particles N.", Patterns::Integer(2, 50000000));
+  entry(prm, "volume fraction", p.packing.volume_fraction,
+                    "phi = sum (4/3) pi R^3 / V; soft glasses live above random close packing "
+                    "(0.64). The paper studies 0.70 ... 0.90.",
+                    Patterns::Double(0.64, 0.95));
+  entry(prm, "polydispersity", p.packing.radii.polydispersity,
+                    "Standard deviation / mean of the radius (the paper: 0.10).",
+                    Patterns::Double(0.0, 0.3));
+  entry(prm, "distribution", e.distribution, "Shape of the radius distribution.",
+                    Patterns::Selection("gaussian|uniform|lognormal|bidisperse"));
+  entry(prm, "truncation", p.packing.radii.truncation_sigmas,
+                    "Gaussian and lognormal radii are cut at this many standard deviations.",
+                    Patterns::Double(1.0, 5.0));
+  entry(prm, "seed", e.seed, "Seed of every random number of the packing.",
+                    Patterns::Integer(0));
+  prm.leave_subsection();
+
+  prm.enter_subsection("packing");
+  entry(prm, "input file", e.packing_input,
+                    "Reuse the relaxed packing of an earlier run file (HDF5) instead of making "
+                    "one; empty: make a packing. Relative to this parameter file.",
+                    Patterns::Anything());
+  entry(prm, "initial volume fraction", p.packing.initial_volume_fraction,
+                    "Random placement happens at this volume fraction, before compression.",
+                    Patterns::Double(0.05, 0.95));
+  entry(prm, "compression step", p.packing.compression_step,
+                    "Increase of phi between relaxations during compression.",
+                    Patterns::Double(1e-4, 0.1));
+  entry(prm, "stage tolerance", p.packing.stage_tolerance,
+                    "Residual max|F|/<|f|> at which a compression stage stops.",
+                    Patterns::Double(1e-12, 1.0));
+  entry(prm, "stage iterations", e.stage_iterations,
+                    "FIRE iterations allowed per compression stage (the compression rate).",
+                    Patterns::Integer(1));
+  entry(prm, "force tolerance", p.packing.relaxation.force_tolerance,
+                    "Residual max|F|/<|f|> of the final relaxation to force balance.",
+                    Patterns::Double(1e-15, 1e-2));
+  entry(prm, "max iterations", e.max_relaxation_iterations,
+                    "FIRE iterations allowed for the final relaxation.", Patterns::Integer(1));
+  prm.leave_subsection();
+
+  prm.enter_subsection("contact law");
+  entry(prm, "law", p.contact_law.name,
+                    "Elastic contact law: seth2011 (the paper's, Hertz up to eps = 0.1 then "
+                    "stiffer), hertz, or table (from 'table file').",
+                    Patterns::Selection("seth2011|hertz|table"));
+  entry(prm, "table file", e.table_file,
+                    "For law = table: text file of rows (eps, f/(E* R_c^2)), both increasing. "
+                    "Relative to this parameter file.",
+                    Patterns::Anything());
+  prm.leave_subsection();
+
+  prm.enter_subsection("shear");
+  entry(prm, "gamma dot tilde", p.shear_model.gamma_tilde,
+                    "Dimensionless shear rate gamma_dot eta_s / E* (the paper: 1e-9 ... 1e-4).",
+                    Patterns::Double(1e-14, 1e-1));
+  entry(prm, "mobility factor", p.shear_model.mobility_factor,
+                    "f_r in the mobility M = f_r / (6 pi eta_s R) (the paper: 0.01; results "
+                    "unchanged below 0.1).",
+                    Patterns::Double(1e-6, 1.0));
+  entry(prm, "sample interval", p.protocol.sample_interval,
+                    "Strain between stress samples.", Patterns::Double(1e-6, 0.5));
+  entry(prm, "check interval", p.protocol.check_interval,
+                    "Strain between steady-state checks.", Patterns::Double(1e-6, 1e6));
+  entry(prm, "min strain", p.protocol.min_strain, "Never stop before this strain.",
+                    Patterns::Double(0.0, 1e6));
+  entry(prm, "max strain", p.protocol.max_strain,
+                    "Stop (unconverged) at this strain.", Patterns::Double(0.0, 1e6));
+  entry(prm, "min stationary strain", p.protocol.min_stationary_strain,
+                    "The averaged (stationary) window must span at least this strain.",
+                    Patterns::Double(0.0, 1e6));
+  entry(prm, "target relative error", p.protocol.target_relative_error,
+                    "Stop when the standard errors of sigma, N1 and N2 are below this fraction "
+                    "of their means.",
+                    Patterns::Double(1e-6, 1.0));
+  prm.leave_subsection();
+
+  prm.enter_subsection("drag");
+  entry(prm, "ehd", p.shear_model.drag.enabled,
+                    "Include the elastohydrodynamic drag between sliding facets.", Patterns::Bool());
+  entry(prm, "coupling", e.coupling,
+                    "implicit: velocities solved with the drag at every step (Newton); lagged: "
+                    "drag from the previous velocities (for measuring that error only).",
+                    Patterns::Selection("implicit|lagged"));
+  entry(prm, "tolerance", p.shear_model.drag.tolerance,
+                    "Velocity residual of the implicit solve, relative to max(1, max|v|).",
+                    Patterns::Double(1e-14, 1e-2));
+  entry(prm, "max newton iterations", p.shear_model.drag.max_newton_iterations,
+                    "Newton iterations allowed per velocity solve.", Patterns::Integer(1, 10000));
+  prm.leave_subsection();
+
+  prm.enter_subsection("integrator");
+  entry(prm, "scheme", p.integrator.name, "Time integrator.", Patterns::Selection("euler"));
+  entry(prm, "tolerance", p.integrator.tolerance,
+                    "Local position error allowed per step, in units of R.",
+                    Patterns::Double(1e-12, 0.1));
+  entry(prm, "stability fraction", p.integrator.stability_fraction,
+                    "Fraction of the explicit stability limit 2/lambda used at most.",
+                    Patterns::Double(0.01, 0.99));
+  entry(prm, "max step", p.integrator.max_step, "Largest step (strain).",
+                    Patterns::Double(1e-12, 1.0));
+  prm.leave_subsection();
+
+  prm.enter_subsection("neighbours");
+  entry(prm, "skin", p.packing.skin, "Verlet-list skin, in units of R.",
+                    Patterns::Double(0.01, 2.0));
+  prm.leave_subsection();
+
+  prm.enter_subsection("output");
+  entry(prm, "file", e.output_file,
+                    "HDF5 result file (relative to the current directory); the command line "
+                    "option --output overrides it.",
+                    Patterns::Anything());
+  entry(prm, "overwrite", p.overwrite, "Replace an existing output file.", Patterns::Bool());
+  prm.leave_subsection();
+}
+
+std::filesystem::path beside(const std::filesystem::path& prm_file, const std::string& name) {
+  if (name.empty()) return {};
+  const std::filesystem::path path(name);
+  return path.is_absolute() ? path : prm_file.parent_path() / path;
+}
+
+// deal.II's exception text carries source locations; keep the user's part.
+std::string clean_message(const std::string& what) {
+  const auto pos = what.find("Additional information:");
+  std::string text = pos == std::string::npos ? what : what.substr(pos + 23);
+  const auto stack = text.find("Stacktrace:");
+  if (stack != std::string::npos) text = text.substr(0, stack);
+  std::string collapsed;
+  bool space = false;
+  for (char c : text) {
+    const bool blank = c == '\n' || c == ' ' || c == '\t';
+    if (blank && !collapsed.empty()) space = true;
+    if (!blank) {
+      if (space) collapsed += ' ';
+      collapsed += c;
+      space = false;
+    }
+  }
+  return collapsed;
+}
+
+}  // namespace
+
+MicroParameters read_parameter_file(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(fmt::format("parameter file '{}' does not exist", file.string()));
+  }
+  ParameterHandler prm;
+  Entries e;
+  declare(prm, e);
+  try {
+    prm.parse_input(file.string(), "", false, false);
+  } catch (const std::exception& error) {
+    throw InputError(fmt::format("parameter file '{}': {}", file.string(), clean_message(error.what())));
+  }
+
+  MicroParameters p = e.p;
+  p.packing.particles = e.particles;
+  p.packing.seed = e.seed;
+  p.packing.stage_iterations = e.stage_iterations;
+  p.packing.relaxation.max_iterations = e.max_relaxation_iterations;
+  p.packing.radii.shape = parse_radius_shape(e.distribution);
+  p.shear_model.drag.coupling = parse_drag_coupling(e.coupling);
+  p.packing_input = beside(file, e.packing_input);
+  p.contact_law.table_file = beside(file, e.table_file);
+  p.output_file = e.output_file;
+  require(!e.output_file.empty(), "output file name is empty");
+  require(p.contact_law.name != "table" || !e.table_file.empty(),
+          "contact law 'table' needs 'table file' in subsection 'contact law'");
+  require(p.packing.initial_volume_fraction <= p.packing.volume_fraction,
+          fmt::format("initial volume fraction = {} exceeds the volume fraction {}",
+                      p.packing.initial_volume_fraction, p.packing.volume_fraction));
+  require(p.protocol.max_strain >= p.protocol.min_strain,
+          fmt::format("max strain = {} is below min strain = {}", p.protocol.max_strain,
+                      p.protocol.min_strain));
+  p.packing.validate();
+  p.shear_model.validate();
+  p.protocol.validate();
+  p.integrator.validate();
+
+  std::ostringstream text;
+  prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+  p.text = text.str();
+  return p;
+}
+
+std::string parameter_template() {
+  ParameterHandler prm;
+  Entries e;
+  declare(prm, e);
+  std::ostringstream text;
+  text << "# softglass micro: parameter file for `micro pack` and `micro run`.\n"
+          "# Reduced units: lengths R (mean radius), stresses E*, time 1/gamma_dot (strain).\n";
+  prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+  return text.str();
+}
+
+}  // namespace softglass::micro

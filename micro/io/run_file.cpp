@@ -1,0 +1,221 @@
+#include "micro/io/run_file.h"
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <ctime>
+
+#include "common/errors.h"
+#include "common/h5_file.h"
+#include "common/version.h"
+
+namespace softglass::micro {
+
+namespace {
+
+constexpr std::int64_t kFormatVersion = 1;
+
+std::vector<double> flatten(const std::vector<Vec3>& v) {
+  std::vector<double> flat;
+  flat.reserve(3 * v.size());
+  for (const Vec3& x : v) flat.insert(flat.end(), {x.x(), x.y(), x.z()});
+  return flat;
+}
+
+std::vector<double> flatten(const std::vector<Eigen::Matrix3d>& m) {
+  std::vector<double> flat;
+  flat.reserve(9 * m.size());
+  for (const auto& s : m)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) flat.push_back(s(i, j));  // row-major: [k][i][j] = σ_ij
+  return flat;
+}
+
+void write_configuration(H5Group&& g, const Particles& p, const LeesEdwardsBox& box) {
+  g.write("position", flatten(p.position), {p.size(), 3},
+          {"R", "particle centres in the primary cell [0, L)^3; x flow, y gradient, z vorticity"});
+  g.write("radius", p.radius, {}, {"R", "particle radii (mean 1)"});
+  g.write("velocity", flatten(p.velocity), {p.size(), 3},
+          {"gamma_dot R", "non-affine velocity u - gamma_dot y e_x (zero for a packing)"});
+  g.write_scalar("side", box.side(), {"R", "side L of the cubic cell"});
+  g.write_scalar("strain", box.strain(), {"1", "accumulated Lees-Edwards strain"});
+}
+
+void write_packing(H5Group& g, const PackingReport& r, const ShearModulus& m) {
+  const auto scalar = [&](const char* name, double value, const char* units, const char* what) {
+    g.write_scalar(name, value, {units, what});
+  };
+  scalar("particles", static_cast<double>(r.particles), "1", "number of particles N");
+  scalar("volume_fraction", r.volume_fraction, "1", "phi = sum (4/3) pi R^3 / V");
+  scalar("side", r.side, "R", "cell side L");
+  scalar("coordination", r.coordination, "1", "Z = 2 x contacts / N");
+  scalar("coordination_nonrattler", r.coordination_nonrattler, "1",
+         "Z of the backbone after removing rattlers (< 4 contacts, iteratively)");
+  scalar("rattlers", static_cast<double>(r.rattlers), "1", "number of rattlers");
+  scalar("mean_deformation", r.mean_deformation, "1", "mean contact deformation eps = h/R_c");
+  scalar("max_deformation", r.max_deformation, "1", "largest contact deformation");
+  scalar("pressure", r.pressure, "E*", "Pi = -tr(sigma^e)/3");
+  scalar("energy_per_particle", r.energy_per_particle, "E* R^3", "elastic energy per particle");
+  scalar("residual", r.residual, "1", "max |F_i| / mean contact force after relaxation");
+  scalar("iterations", static_cast<double>(r.iterations), "1", "FIRE iterations, all stages");
+  scalar("converged", r.converged ? 1.0 : 0.0, "1", "1 if the residual met the tolerance");
+  scalar("shear_modulus", m.modulus, "E*", "G0, linear shear modulus (exact linear response)");
+  scalar("affine_shear_modulus", m.affine_modulus, "E*", "affine (unrelaxed) shear modulus");
+  scalar("shear_modulus_solver_error", m.solver_error, "1", "relative residual of H u = Xi");
+}
+
+void write_shear(H5Group&& g, const ShearRecord& s) {
+  const ShearResult& r = s.result;
+  g.write_scalar("gamma_tilde", s.gamma_tilde, {"1", "dimensionless shear rate gamma_dot eta_s / E*"});
+
+  H5Group ts = g.create_group("timeseries");
+  const TimeSeries& t = r.series;
+  ts.write("strain", t.strain, {}, {"1", "strain at each sample"});
+  ts.write("stress_elastic", flatten(t.elastic), {t.size(), 3, 3},
+           {"E*", "elastic stress tensor sigma^e_ij = -(1/V) sum d_i f_j, [sample][i][j]"});
+  ts.write("stress_viscous", flatten(t.viscous), {t.size(), 3, 3},
+           {"E*", "viscous (EHD) stress tensor sigma^v_ij, not symmetric, [sample][i][j]"});
+  ts.write("coordination", t.coordination, {}, {"1", "Z = 2 x contacts / N"});
+  ts.write("step", t.step, {}, {"1", "last accepted integrator step (strain)"});
+
+  H5Group sum = g.create_group("summary");
+  sum.set_attribute("converged", static_cast<std::int64_t>(r.converged));
+  sum.set_attribute("stop_reason", r.stop_reason);
+  sum.set_attribute("transient_strain", r.summary.transient_strain);
+  sum.set_attribute("averaged_strain", r.summary.averaged_strain);
+  sum.set_attribute("transient_resolved", static_cast<std::int64_t>(r.summary.transient_resolved));
+  sum.set_attribute("elastic_to_viscous", r.summary.elastic_to_viscous);
+  sum.set_attribute("coordination", r.summary.coordination);
+  for (const auto& o : r.summary.observables) {
+    H5Group q = sum.create_group(o.name);
+    q.set_attribute("mean", o.estimate.mean);
+    q.set_attribute("standard_error", o.estimate.standard_error);
+    q.set_attribute("samples", static_cast<std::int64_t>(o.estimate.samples));
+    q.set_attribute("block_size", static_cast<std::int64_t>(o.estimate.block_size));
+    q.set_attribute("reliable", static_cast<std::int64_t>(o.estimate.reliable));
+    q.set_attribute("units", std::string("E*"));
+  }
+
+  H5Group c = g.create_group("counters");
+  const ShearCounters& k = r.counters;
+  c.set_attribute("steps", static_cast<std::int64_t>(k.steps));
+  c.set_attribute("rejected_steps", static_cast<std::int64_t>(k.rejected_steps));
+  c.set_attribute("evaluations", static_cast<std::int64_t>(k.evaluations));
+  c.set_attribute("neighbour_builds", static_cast<std::int64_t>(k.neighbour_builds));
+  c.set_attribute("newton_iterations", static_cast<std::int64_t>(k.newton_iterations));
+  c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
+  c.set_attribute("smallest_step", k.smallest_step);
+  c.set_attribute("largest_step", k.largest_step);
+
+  write_configuration(g.create_group("configuration"), s.final_particles, s.final_box);
+}
+
+std::string now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(now));
+}
+
+std::vector<Vec3> unflatten(const H5Array& a, const std::string& what) {
+  if (a.dims.size() != 2 || a.dims[1] != 3) {
+    throw InputError(fmt::format("dataset '{}' must have shape N x 3", what));
+  }
+  std::vector<Vec3> v(a.dims[0]);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data[3 * i], a.data[3 * i + 1], a.data[3 * i + 2]);
+  return v;
+}
+
+}  // namespace
+
+void write_run_file(const std::filesystem::path& path, const RunRecord& record) {
+  H5File file = H5File::create(path);
+  H5Group root = file.root();
+  root.set_attribute("software", std::string("softglass micro"));
+  root.set_attribute("version", std::string(kVersion));
+  root.set_attribute("git_revision", std::string(kGitRevision));
+  root.set_attribute("created", now_iso8601());
+  root.set_attribute("command", record.command);
+  root.set_attribute("format_version", kFormatVersion);
+  root.write_string("parameters", record.parameters,
+                    {"", "the complete parameter file of the run, defaults included"});
+
+  H5Group t = root.create_group("timings");
+  t.write_scalar("packing", record.timings.packing, {"s", "wall time to make and relax the packing"});
+  t.write_scalar("shear_modulus", record.timings.modulus, {"s", "wall time for G0"});
+  t.write_scalar("shear", record.timings.shear, {"s", "wall time of the sheared run"});
+  t.write_scalar("total", record.timings.total, {"s", "wall time of the command"});
+  t.write_scalar("threads", record.timings.threads, {"1", "OpenMP threads"});
+
+  H5Group p = root.create_group("packing");
+  write_packing(p, record.packing, record.modulus);
+  write_configuration(p.create_group("configuration"), record.packing_particles, record.packing_box);
+
+  if (record.shear) write_shear(root.create_group("shear"), *record.shear);
+  file.close();
+}
+
+StoredPacking read_packing(const std::filesystem::path& path) {
+  const H5File file = H5File::open(path);
+  const H5Group root = file.root();
+  if (root.attribute_int("format_version") != kFormatVersion) {
+    throw InputError(fmt::format("'{}' has run-file format {}, this version reads {}", path.string(),
+                                 root.attribute_int("format_version"), kFormatVersion));
+  }
+  const H5Group p = root.group("packing");
+  const H5Group c = p.group("configuration");
+  StoredPacking s;
+  std::vector<double> radius = c.read_array("radius").data;
+  std::vector<Vec3> position = unflatten(c.read_array("position"), "/packing/configuration/position");
+  if (radius.size() != position.size()) {
+    throw InputError(fmt::format("'{}': {} positions but {} radii", path.string(), position.size(), radius.size()));
+  }
+  s.particles = Particles(std::move(position), std::move(radius));
+  s.box = LeesEdwardsBox(c.read_scalar("side"));
+  s.box.set_strain(c.read_scalar("strain"));
+  PackingReport& r = s.report;
+  r.particles = s.particles.size();
+  r.volume_fraction = p.read_scalar("volume_fraction");
+  r.side = p.read_scalar("side");
+  r.coordination = p.read_scalar("coordination");
+  r.coordination_nonrattler = p.read_scalar("coordination_nonrattler");
+  r.rattlers = static_cast<std::size_t>(p.read_scalar("rattlers"));
+  r.mean_deformation = p.read_scalar("mean_deformation");
+  r.max_deformation = p.read_scalar("max_deformation");
+  r.pressure = p.read_scalar("pressure");
+  r.energy_per_particle = p.read_scalar("energy_per_particle");
+  r.residual = p.read_scalar("residual");
+  r.iterations = static_cast<std::size_t>(p.read_scalar("iterations"));
+  r.converged = p.read_scalar("converged") != 0.0;
+  s.modulus.modulus = p.read_scalar("shear_modulus");
+  s.modulus.affine_modulus = p.read_scalar("affine_shear_modulus");
+  s.modulus.solver_error = p.read_scalar("shear_modulus_solver_error");
+  return s;
+}
+
+TimeSeries read_time_series(const std::filesystem::path& path) {
+  const H5File file = H5File::open(path);
+  const H5Group ts = file.root().group("shear").group("timeseries");
+  TimeSeries t;
+  t.strain = ts.read_array("strain").data;
+  t.coordination = ts.read_array("coordination").data;
+  t.step = ts.read_array("step").data;
+  const auto tensors = [&](const char* name) {
+    const H5Array a = ts.read_array(name);
+    if (a.dims.size() != 3 || a.dims[0] != t.strain.size() || a.dims[1] != 3 || a.dims[2] != 3) {
+      throw InputError(fmt::format("'{}': dataset '{}' must have shape n x 3 x 3", path.string(), name));
+    }
+    std::vector<Eigen::Matrix3d> m(a.dims[0]);
+    for (std::size_t k = 0; k < m.size(); ++k)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[k](i, j) = a.data[9 * k + 3 * i + j];
+    return m;
+  };
+  t.elastic = tensors("stress_elastic");
+  t.viscous = tensors("stress_viscous");
+  if (t.coordination.size() != t.size() || t.step.size() != t.size()) {
+    throw InputError(fmt::format("'{}': time-series datasets differ in length", path.string()));
+  }
+  return t;
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,60 @@
+// The HDF5 record of a `micro pack` or `micro run`: one file per run, documented
+// group by group in docs/output.md. Everything needed to reproduce and to judge
+// the run is in it: the full parameter set, the software version, timings, the
+// packing and its measurements, the sampled stress history, the final
+// configuration and the steady-state summary with standard errors.
+//
+// Units are those of the simulation (spec model.md §4): lengths R (mean radius),
+// stresses E*, strain for time; every dataset carries a `units` attribute.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "micro/analysis/shear_modulus.h"
+#include "micro/packing/packing.h"
+#include "micro/protocol/shear_run.h"
+
+namespace softglass::micro {
+
+struct Timings {
+  double packing = 0.0, modulus = 0.0, shear = 0.0, total = 0.0;  // seconds (wall)
+  int threads = 1;
+};
+
+struct ShearRecord {
+  double gamma_tilde = 0.0;
+  ShearResult result;
+  Particles final_particles;  // label order
+  LeesEdwardsBox final_box;
+};
+
+struct RunRecord {
+  std::string command;          // "pack" or "run"
+  std::string parameters;       // the complete parameter file, defaults included
+  PackingReport packing;
+  ShearModulus modulus;
+  Particles packing_particles;  // the relaxed packing, label order
+  LeesEdwardsBox packing_box;
+  std::optional<ShearRecord> shear;
+  Timings timings;
+};
+
+/// Writes `record` to `path` (which must not exist or is replaced: the caller
+/// decides, see common/atomic_output.h).
+void write_run_file(const std::filesystem::path& path, const RunRecord& record);
+
+/// The relaxed packing stored in a run file, to shear it again.
+struct StoredPacking {
+  Particles particles;
+  LeesEdwardsBox box;
+  PackingReport report;
+  ShearModulus modulus;
+};
+StoredPacking read_packing(const std::filesystem::path& path);
+
+/// The stress history stored in a run file (for re-analysis).
+TimeSeries read_time_series(const std::filesystem::path& path);
+
+}  // namespace softglass::micro
