@@ -7,8 +7,12 @@
 //
 // so the paper's law is F(ε) = (4/3) C ε^n. The pair stiffness along the normal
 // is df/dh = E* R_c F'(ε). The EHD drag needs only F as well (see
-// forces/ehd_drag.h), so a new law is one new file implementing this interface
-// plus one line in contact_law.cpp's registry.
+// forces/ehd_drag.h).
+//
+// A new law is one new file — a class deriving from ContactLawImpl (see
+// contact_law_impl.h) that defines F, F′ and W — plus one line in
+// contact_law.cpp's registry. ContactLawImpl compiles the force kernel with the
+// law's F inlined, so the law costs no call per contact.
 #pragma once
 
 #include <filesystem>
@@ -19,19 +23,24 @@
 
 namespace softglass::micro {
 
+struct ForceKernelInput;  // forces/contact_forces.h
+struct ContactField;
+
 class ContactLaw {
  public:
   virtual ~ContactLaw() = default;
 
   virtual std::string name() const = 0;
 
-  /// F(ε) and F'(ε) for a batch of deformations ε > 0. Called once per particle
-  /// with all its contacts, so the dispatch stays out of the innermost loop.
+  /// F(ε) and F'(ε) for deformations ε > 0.
   virtual void evaluate(std::span<const double> deformation, std::span<double> force,
                         std::span<double> stiffness) const = 0;
 
   /// W(ε) = ∫₀^ε F(e) de.
   virtual double energy(double deformation) const = 0;
+
+  /// Every contact force of a configuration (forces/contact_forces.h).
+  virtual void compute_forces(const ForceKernelInput& input, ContactField& out) const = 0;
 
   double force(double deformation) const;
   double stiffness(double deformation) const;

@@ -3,22 +3,19 @@
 // With f = E* R_c² F(ε) and ε = h/R_c this is f = (4/3) E* R_c^{1/2} h^{3/2}.
 #include <cmath>
 
-#include "micro/contact/contact_law.h"
+#include "micro/contact/contact_law_impl.h"
 
 namespace softglass::micro {
 namespace {
 
-class HertzLaw final : public ContactLaw {
+class HertzLaw final : public ContactLawImpl<HertzLaw> {
  public:
   std::string name() const override { return "hertz"; }
 
-  void evaluate(std::span<const double> eps, std::span<double> force,
-                std::span<double> stiffness) const override {
-    for (std::size_t k = 0; k < eps.size(); ++k) {
-      const double root = std::sqrt(eps[k]);
-      force[k] = (4.0 / 3.0) * eps[k] * root;
-      stiffness[k] = 2.0 * root;
-    }
+  void force_and_stiffness(double eps, double& force, double& stiffness) const {
+    const double root = std::sqrt(eps);
+    force = (4.0 / 3.0) * eps * root;
+    stiffness = 2.0 * root;
   }
 
   double energy(double eps) const override { return (8.0 / 15.0) * eps * eps * std::sqrt(eps); }

@@ -49,8 +49,9 @@ PiecewisePowerLaw::PiecewisePowerLaw(std::vector<Branch> branches)
 }
 
 std::size_t PiecewisePowerLaw::bisect(double eps) const {
-  const auto it = std::upper_bound(branches_.begin(), branches_.end(), eps,
-                                   [](double e, const Branch& b) { return e < b.start; });
+  // The first branch starting at or above ε is the one after ε's branch.
+  const auto it = std::lower_bound(branches_.begin() + 1, branches_.end(), eps,
+                                   [](const Branch& b, double e) { return b.start < e; });
   return static_cast<std::size_t>(it - branches_.begin()) - 1;
 }
 

@@ -1,4 +1,4 @@
-// F(ε) = a_k ε^{n_k} on consecutive intervals [ε_k, ε_{k+1}), continuous in ε.
+// F(ε) = a_k ε^{n_k} on consecutive intervals (ε_k, ε_{k+1}], continuous in ε.
 //
 // The `seth2011` law (three branches) and the `table` law (log–log interpolation
 // of user data, which is exactly a piecewise power law) share this evaluator.
@@ -39,13 +39,14 @@ class PiecewisePowerLaw {
 
  private:
   enum class Kind { three_halves, two, three, general };
-  /// Index of the branch holding ε: a scan for the few branches of an analytic
-  /// law, bisection for long tables.
+  /// Index of the branch holding ε, intervals closed on the right (a joint
+  /// belongs to the branch below it, as in "ε ≤ 0.1: Hertz"): a scan for the few
+  /// branches of an analytic law, bisection for long tables.
   std::size_t branch_of(double eps) const {
     const std::size_t count = branches_.size();
     if (count <= 8) {
       std::size_t k = count - 1;
-      while (k > 0 && eps < branches_[k].start) --k;
+      while (k > 0 && eps <= branches_[k].start) --k;
       return k;
     }
     return bisect(eps);

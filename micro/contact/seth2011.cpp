@@ -11,7 +11,7 @@
 // breakpoints, so changing a breakpoint or an exponent keeps the law continuous.
 #include <cmath>
 
-#include "micro/contact/contact_law.h"
+#include "micro/contact/contact_law_impl.h"
 #include "micro/contact/piecewise_power_law.h"
 
 namespace softglass::micro {
@@ -30,15 +30,14 @@ PiecewisePowerLaw seth2011_branches(const Breakpoints& bp) {
   return PiecewisePowerLaw({{0.0, a0, 1.5}, {bp.hertz_end, a1, 2.0}, {bp.quadratic_end, a2, 3.0}});
 }
 
-class Seth2011Law final : public ContactLaw {
+class Seth2011Law final : public ContactLawImpl<Seth2011Law> {
  public:
   Seth2011Law() : law_(seth2011_branches(Breakpoints{})) {}
 
   std::string name() const override { return "seth2011"; }
 
-  void evaluate(std::span<const double> eps, std::span<double> force,
-                std::span<double> stiffness) const override {
-    for (std::size_t k = 0; k < eps.size(); ++k) law_.evaluate(eps[k], force[k], stiffness[k]);
+  void force_and_stiffness(double eps, double& force, double& stiffness) const {
+    law_.evaluate(eps, force, stiffness);
   }
 
   double energy(double eps) const override { return law_.energy(eps); }

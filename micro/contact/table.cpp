@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "common/errors.h"
-#include "micro/contact/contact_law.h"
+#include "micro/contact/contact_law_impl.h"
 #include "micro/contact/piecewise_power_law.h"
 
 namespace softglass::micro {
@@ -72,15 +72,14 @@ PiecewisePowerLaw interpolate(const std::vector<Point>& p) {
   return PiecewisePowerLaw(std::move(branches));
 }
 
-class TableLaw final : public ContactLaw {
+class TableLaw final : public ContactLawImpl<TableLaw> {
  public:
   explicit TableLaw(const std::filesystem::path& file) : law_(interpolate(read_points(file))) {}
 
   std::string name() const override { return "table"; }
 
-  void evaluate(std::span<const double> eps, std::span<double> force,
-                std::span<double> stiffness) const override {
-    for (std::size_t k = 0; k < eps.size(); ++k) law_.evaluate(eps[k], force[k], stiffness[k]);
+  void force_and_stiffness(double eps, double& force, double& stiffness) const {
+    law_.evaluate(eps, force, stiffness);
   }
 
   double energy(double eps) const override { return law_.energy(eps); }

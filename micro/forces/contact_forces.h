@@ -39,6 +39,15 @@ struct ForceRequest {
   bool contacts = false;  // fill `ContactField::contacts`
 };
 
+/// What a force evaluation reads.
+struct ForceKernelInput {
+  const LeesEdwardsBox& box;
+  std::span<const Vec3> x;
+  std::span<const double> radius;
+  const NeighbourList& neighbours;
+  ForceRequest request;
+};
+
 /// Result of one force evaluation; buffers are reused between evaluations.
 struct ContactField {
   std::vector<Vec3> force;             // F^e_i
@@ -51,14 +60,15 @@ struct ContactField {
 
   std::size_t memory_bytes() const;
 
- private:
-  friend void compute_contact_forces(const ContactLaw&, const LeesEdwardsBox&,
-                                     std::span<const Vec3>, std::span<const double>,
-                                     const NeighbourList&, const ForceRequest&, ContactField&);
-  std::vector<std::vector<double>> thread_buffers_;  // per-thread (f_x, f_y, f_z, k) for j
-  std::vector<ContactList> thread_contacts_;
+  /// Workspace of the kernel (contact_kernel.h), kept to avoid reallocation.
+  struct Scratch {
+    std::vector<std::vector<double>> accumulators;  // per thread: (f_x, f_y, f_z, Σ‖K‖) per particle
+    std::vector<double> inverse_radius;
+    std::vector<ContactList> contacts;              // per thread
+  } scratch;
 };
 
+/// Elastic forces with `law` (dispatches once to the law's compiled kernel).
 void compute_contact_forces(const ContactLaw& law, const LeesEdwardsBox& box,
                             std::span<const Vec3> x, std::span<const double> radius,
                             const NeighbourList& neighbours, const ForceRequest& request,

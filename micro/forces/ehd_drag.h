@@ -15,11 +15,25 @@
 // stationarity condition of the strictly convex function
 //     Φ(v) = Σ_α ½ ζ_α |v_α|² + Σ_c ⅔ a_c |P_c(v_i − v_j + d_y e_x)|^{3/2} − Σ_α F^e_α·v_α ,
 // (P_c projects on the contact plane), so the solution exists, is unique, and is
-// found by Newton's method with a backtracking line search on Φ. The Hessian of
-// ⅔|w|^{3/2} is |w|^{−1/2}(P − ½ŵŵ), unbounded as w → 0 (the √u∥ law); Newton
-// uses it with |w| floored at a small fraction of the velocity scale. The floor
-// changes only the search direction: convergence is judged on the exact
-// gradient, and the line search on Φ keeps every iteration a descent.
+// found by a Newton-type method with a backtracking line search on Φ.
+//
+// The √u∥ law. The Hessian of ⅔|w|^{3/2} is |w|^{−1/2}(P − ½ŵŵ): unbounded as
+// w → 0, and a poor model when a contact approaches a small |w*| from above: the
+// drag a√|w| is concave in |w|, so the Newton tangent overshoots past w* (even
+// past 0) and the iteration crawls. Each contact therefore gets the curvature
+// |w|^{−1/2}(P − θ_c ŵŵ), where θ_c = 0 is the tangent majoriser of the concave
+// |w|^{3/2} = (|w|²)^{3/4} (the Kačanov / iteratively reweighted step, which moves
+// |w| to about √(|w||w*|), closing a gap of decades in a few iterations) and
+// θ_c = ½ the exact Hessian. A contact uses the majoriser while its |w| shrinks
+// by more than 10 % per iteration and Newton otherwise (approaching from below,
+// Newton cannot overshoot a concave law), which gives quadratic convergence at
+// the end. Measured on 44 unrelaxed configurations with drag up to 5× the
+// friction: 399 iterations in all against 720 (+ stalls) for pure Newton and
+// 337… 1000+ for the pure majoriser (docs/numerics.md). Both models are positive
+// definite, so every direction is a descent direction and the line search on Φ
+// makes the method globally convergent. In the model only, |w| is floored where
+// the contact's drag falls below the force tolerance; convergence is judged on
+// the exact gradient.
 // Each Newton system is solved by conjugate gradients with a 3×3 block-Jacobi
 // preconditioner (the Hessian is symmetric positive definite).
 //
@@ -81,10 +95,18 @@ class EhdDrag {
   };
   void prepare(const ContactList& contacts, double gamma_tilde);
   void build_incidence(const ContactList& contacts, std::size_t n);
-  /// Φ(v) and its gradient; leaves the tangential relative velocities in `w`.
-  double objective(const ContactList& contacts, std::span<const double> friction,
+  /// ∇Φ(v); leaves the tangential relative velocities in `w`.
+  void gradient_at(const ContactList& contacts, std::span<const double> friction,
                    std::span<const Vec3> force, std::span<const Vec3> v, std::vector<Vec3>& w,
                    std::vector<Vec3>& gradient);
+  /// Φ(v + tδ) − Φ(v) for the Newton step δ, without cancellation, and a bound
+  /// on its rounding error; leaves the trial point, its tangential velocities
+  /// and gradient in the trial buffers.
+  struct Change {
+    double value, rounding;
+  };
+  Change change_along_step(const ContactList& contacts, std::span<const double> friction,
+                           std::span<const Vec3> force, std::span<const Vec3> v, double t);
   /// Adds per-contact vectors to particles: out_α += Σ_{c∋α} ±y_c.
   void gather(std::span<const Vec3> per_contact, std::span<Vec3> out) const;
   /// Newton direction: H δ = −g by block-Jacobi preconditioned CG to ‖r‖ ≤ η‖g‖.
@@ -101,6 +123,7 @@ class EhdDrag {
   std::vector<Vec3> step_, r_, z_, p_, hp_;
   std::vector<Eigen::Matrix3d> block_inverse_;
   std::vector<double> s_;          // a_c / √max(|w|, floor)
+  std::vector<double> relief_;     // θ_c: ½ (Newton) or 0 (majoriser)
   std::vector<Vec3> unit_w_;       // ŵ
 };
 

@@ -4,12 +4,46 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <random>
 
 #include "common/errors.h"
 
 namespace softglass::micro {
+
+namespace {
+
+// Standard normal distribution function.
+double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); }
+
+// Variance of a standard normal truncated to [−c, c]: 1 − 2cφ(c)/(2Φ(c) − 1).
+double truncated_normal_variance(double c) {
+  const double density = std::exp(-0.5 * c * c) / std::sqrt(2.0 * std::numbers::pi);
+  return 1.0 - 2.0 * c * density / (2.0 * normal_cdf(c) - 1.0);
+}
+
+// E[e^{tZ}] for Z standard normal truncated to [−c, c].
+double truncated_normal_mgf(double t, double c) {
+  return std::exp(0.5 * t * t) * (normal_cdf(c - t) - normal_cdf(-c - t)) / (2.0 * normal_cdf(c) - 1.0);
+}
+
+// Width s of ln R ~ N(·, s²) truncated at ±c s such that sd/mean of R is `target`:
+// CV² = M(2s)/M(s)² − 1 increases with s; bisection.
+double lognormal_width(double target, double c) {
+  const auto cv = [c](double s) {
+    return std::sqrt(truncated_normal_mgf(2 * s, c) / std::pow(truncated_normal_mgf(s, c), 2) - 1.0);
+  };
+  double lo = 0.0, hi = 1.0;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (cv(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
 
 RadiusShape parse_radius_shape(const std::string& name) {
   if (name == "gaussian") return RadiusShape::gaussian;
@@ -30,26 +64,14 @@ std::string to_string(RadiusShape shape) {
   return "?";
 }
 
-double RadiusDistribution::max_relative_radius() const {
-  const double d = polydispersity;
-  switch (shape) {
-    case RadiusShape::gaussian: return 1.0 + truncation_sigmas * d;
-    case RadiusShape::uniform: return 1.0 + std::sqrt(3.0) * d;
-    case RadiusShape::bidisperse: return 1.0 + d;
-    case RadiusShape::lognormal: {
-      const double s = std::sqrt(std::log1p(d * d));
-      return std::exp(-0.5 * s * s + truncation_sigmas * s);
-    }
-  }
-  return 1.0;
-}
-
 void RadiusDistribution::validate() const {
   require(std::isfinite(polydispersity) && polydispersity >= 0.0 && polydispersity <= 0.3,
           fmt::format("polydispersity = {} is outside [0, 0.3]", polydispersity));
   require(std::isfinite(truncation_sigmas) && truncation_sigmas >= 1.0 && truncation_sigmas <= 5.0,
           fmt::format("truncation = {} standard deviations is outside [1, 5]", truncation_sigmas));
-  const double smallest = shape == RadiusShape::gaussian   ? 1.0 - truncation_sigmas * polydispersity
+  const double smallest = shape == RadiusShape::gaussian
+                              ? 1.0 - truncation_sigmas * polydispersity /
+                                          std::sqrt(truncated_normal_variance(truncation_sigmas))
                           : shape == RadiusShape::uniform  ? 1.0 - std::sqrt(3.0) * polydispersity
                           : shape == RadiusShape::bidisperse ? 1.0 - polydispersity
                                                              : 1.0;
@@ -69,12 +91,14 @@ std::vector<double> sample_radii(std::size_t n, const RadiusDistribution& distri
 
   switch (distribution.shape) {
     case RadiusShape::gaussian: {
+      // The cut narrows the distribution; widen it so that the sd is d.
+      const double width = d / std::sqrt(truncated_normal_variance(cut));
       std::normal_distribution<double> normal(0.0, 1.0);
       for (double& r : radii) {
         double z;
         do z = normal(rng);
         while (std::abs(z) > cut);
-        r = 1.0 + d * z;
+        r = 1.0 + width * z;
       }
       break;
     }
@@ -84,14 +108,15 @@ std::vector<double> sample_radii(std::size_t n, const RadiusDistribution& distri
       break;
     }
     case RadiusShape::lognormal: {
-      // ln R ~ N(μ, s²) with s² = ln(1 + d²), μ = −s²/2: mean 1, sd d.
-      const double s = std::sqrt(std::log1p(d * d));
+      // ln R ~ N(0, s²) cut at ± cut·s, s chosen so that sd/mean is d after the
+      // cut (the final rescaling sets the mean to 1).
+      const double s = d > 0.0 ? lognormal_width(d, cut) : 0.0;
       std::normal_distribution<double> normal(0.0, 1.0);
       for (double& r : radii) {
         double z;
         do z = normal(rng);
         while (std::abs(z) > cut);
-        r = std::exp(-0.5 * s * s + s * z);
+        r = std::exp(s * z);
       }
       break;
     }

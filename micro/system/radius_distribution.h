@@ -1,7 +1,9 @@
 // Particle radii with a prescribed polydispersity (standard deviation / mean).
 //
 // Radii are drawn from the chosen distribution and rescaled so that their sample
-// mean is exactly 1: the mean radius R is the unit of length.
+// mean is exactly 1: the mean radius R is the unit of length. Truncation narrows
+// a distribution; the gaussian and lognormal widths are set so that sd/mean is
+// the requested polydispersity after truncation.
 #pragma once
 
 #include <cstdint>
@@ -19,9 +21,6 @@ struct RadiusDistribution {
 
   /// Throws InputError when the parameters would allow non-positive radii.
   void validate() const;
-  /// Largest radius the distribution can produce, relative to its mean (before
-  /// the sample is rescaled); sets the neighbour-grid size for a given N.
-  double max_relative_radius() const;
 };
 
 RadiusShape parse_radius_shape(const std::string& name);

@@ -1,0 +1,237 @@
+// The `micro` command line, driven as a user would: exit codes (common/errors.h:
+// 0 ok, 2 bad input, 3 output exists), error messages that name the offending
+// parameter and its allowed range, the template, and result files that appear
+// whole or not at all.
+//
+// Every test works in a fresh temporary directory: `work/` holds parameter and
+// result files, `capture/` the command's stdout and stderr (kept apart so that
+// the check for leftover temporary files sees only what micro wrote).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "micro/io/run_file.h"
+#include "micro_test_support.h"
+
+namespace softglass::micro {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+// A small, fast packing: N = 200 needs a skin below ~0.6 for the neighbour grid.
+const std::string kTiny =
+    "subsection particles\n"
+    "  set number          = 200\n"
+    "  set volume fraction = 0.7\n"
+    "end\n"
+    "subsection neighbours\n"
+    "  set skin = 0.3\n"
+    "end\n"
+    "subsection output\n"
+    "  set file = tiny.h5\n"
+    "end\n";
+
+class MicroCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    fs::create_directories(work());
+    fs::create_directories(dir_ / "capture");
+  }
+
+  fs::path work() const { return dir_ / "work"; }
+
+  // Runs `micro <arguments>` in work/ and returns its exit code and output.
+  Outcome micro(const std::string& arguments) const {
+    const fs::path out = dir_ / "capture" / "stdout.txt", err = dir_ / "capture" / "stderr.txt";
+    const std::string command = "cd '" + work().string() + "' && '" SOFTGLASS_MICRO_EXECUTABLE "' " +
+                                arguments + " > '" + out.string() + "' 2> '" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status)) << command;
+    return {WEXITSTATUS(status), testing::read_text(out), testing::read_text(err)};
+  }
+
+  // Writes `text` as work/<name> and returns the file name.
+  std::string parameters(const std::string& name, const std::string& text) const {
+    testing::write_text(work() / name, text);
+    return name;
+  }
+
+  std::vector<std::string> files_in_work() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(work())) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  testing::TemporaryDirectory dir_;
+};
+
+// The tiny parameter file with the entry `name` of `subsection` set to `value`
+// (added if the subsection does not set it yet).
+std::string tiny_with(const std::string& subsection, const std::string& name, const std::string& value) {
+  return kTiny + "subsection " + subsection + "\n  set " + name + " = " + value + "\nend\n";
+}
+
+TEST_F(MicroCli, HelpExitsZero) {
+  const Outcome o = micro("--help");
+  EXPECT_EQ(o.code, 0) << o.err;
+  for (const char* word : {"pack", "run", "template"}) EXPECT_NE(o.out.find(word), std::string::npos) << o.out;
+}
+
+TEST_F(MicroCli, BadCommandLinesExitTwo) {
+  EXPECT_EQ(micro("").code, 2) << "a subcommand is required";
+  EXPECT_EQ(micro("pack").code, 2) << "pack needs a parameter file";
+  EXPECT_EQ(micro("frobnicate").code, 2);
+  EXPECT_EQ(micro("--threads 0 template").code, 2);
+}
+
+TEST_F(MicroCli, MissingParameterFileExitsTwoNamingIt) {
+  const Outcome o = micro("pack --quiet no_such_file.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("no_such_file.prm"), std::string::npos) << o.err;
+  EXPECT_TRUE(files_in_work().empty());
+}
+
+// A rejected parameter: exit code 2, and the message names the entry and (where
+// there is one) what is allowed.
+struct BadParameter {
+  const char* what;
+  std::string file;
+  std::vector<std::string> message_contains;
+};
+
+TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
+  const std::vector<BadParameter> cases = {
+      {"unknown entry", tiny_with("particles", "colour", "red"), {"colour", "Line <12>"}},
+      {"unknown subsection", kTiny + "subsection nonsense\n  set number = 1\nend\n", {"nonsense"}},
+      {"volume fraction below 0.64", tiny_with("particles", "volume fraction", "0.5"),
+       {"volume fraction", "0.64", "0.95"}},
+      {"volume fraction above 0.95", tiny_with("particles", "volume fraction", "0.99"),
+       {"volume fraction", "0.64", "0.95"}},
+      {"negative polydispersity", tiny_with("particles", "polydispersity", "-0.1"),
+       {"polydispersity", "0.3"}},
+      {"non-numeric value", tiny_with("particles", "volume fraction", "abc"),
+       {"abc", "volume fraction", "0.64", "0.95"}},
+      {"nan volume fraction", tiny_with("particles", "volume fraction", "nan"),
+       {"volume fraction", "0.64", "0.95"}},
+      {"nan polydispersity", tiny_with("particles", "polydispersity", "nan"), {"polydispersity", "0.3"}},
+      {"nan shear rate", tiny_with("shear", "gamma dot tilde", "nan"), {"gamma dot tilde", "1e-14", "0.1"}},
+      {"nan skin", tiny_with("neighbours", "skin", "nan"), {"skin", "0.01", "2"}},
+      {"nan max strain", tiny_with("shear", "max strain", "nan"), {"max strain"}},
+      {"unknown law", tiny_with("contact law", "law", "kelvin"), {"kelvin", "seth2011", "hertz", "table"}},
+      {"table law without file", tiny_with("contact law", "law", "table"), {"table file"}},
+      {"unknown distribution", tiny_with("particles", "distribution", "weibull"),
+       {"weibull", "gaussian", "uniform", "lognormal", "bidisperse"}},
+      {"negative number of particles", tiny_with("particles", "number", "-5"), {"number"}},
+      {"shear rate out of range", tiny_with("shear", "gamma dot tilde", "1"),
+       {"gamma dot tilde", "1e-14", "0.1"}},
+      {"unknown integrator", tiny_with("integrator", "scheme", "rk4"), {"rk4", "euler"}},
+  };
+  int index = 0;
+  for (const BadParameter& c : cases) {
+    const std::string file = parameters("bad" + std::to_string(index++) + ".prm", c.file);
+    const Outcome o = micro("pack --quiet " + file);
+    EXPECT_EQ(o.code, 2) << c.what << "\n" << o.err;
+    EXPECT_NE(o.err.find("micro: error:"), std::string::npos) << c.what << "\n" << o.err;
+    for (const std::string& word : c.message_contains) {
+      EXPECT_NE(o.err.find(word), std::string::npos) << c.what << ": no '" << word << "' in\n" << o.err;
+    }
+    EXPECT_FALSE(fs::exists(work() / "tiny.h5")) << c.what << ": no output for bad input";
+  }
+}
+
+TEST_F(MicroCli, TemplateDocumentsEverySubsectionAndParsesBack) {
+  const Outcome o = micro("template");
+  ASSERT_EQ(o.code, 0) << o.err;
+  for (const char* subsection : {"particles", "packing", "contact law", "shear", "drag",
+                                 "integrator", "neighbours", "output"}) {
+    EXPECT_NE(o.out.find(std::string("subsection ") + subsection), std::string::npos) << subsection;
+  }
+  EXPECT_NE(o.out.find("Allowed:"), std::string::npos) << "entries state their ranges";
+
+  // Shrink the template's defaults to a tiny packing, line by line, and run it.
+  const std::vector<std::pair<std::string, std::string>> overrides = {
+      {"number", "200"}, {"volume fraction", "0.7"}, {"skin", "0.3"}, {"file", "from_template.h5"}};
+  std::istringstream in(o.out);
+  std::string text, line;
+  int replaced = 0;
+  while (std::getline(in, line)) {
+    const auto set = line.find("set ");
+    if (set != std::string::npos && line.find_first_not_of(' ') == set) {
+      for (const auto& [name, value] : overrides) {
+        const std::string rest = line.substr(set + 4);
+        if (rest.rfind(name, 0) == 0 && rest.find_first_not_of(' ', name.size()) == rest.find('=')) {
+          line = line.substr(0, set) + "set " + name + " = " + value;
+          ++replaced;
+        }
+      }
+    }
+    text += line + "\n";
+  }
+  ASSERT_EQ(replaced, 4) << "each overridden entry appears once in the template";
+  const Outcome pack = micro("pack --quiet " + parameters("template.prm", text));
+  EXPECT_EQ(pack.code, 0) << pack.err;
+  EXPECT_EQ(read_packing(work() / "from_template.h5").particles.size(), 200u);
+}
+
+TEST_F(MicroCli, PackWritesAValidFileAndNoTemporaryFile) {
+  const std::string prm = parameters("tiny.prm", kTiny);
+  const Outcome o = micro("pack --quiet " + prm);
+  ASSERT_EQ(o.code, 0) << o.err;
+  const StoredPacking p = read_packing(work() / "tiny.h5");
+  EXPECT_EQ(p.particles.size(), 200u);
+  EXPECT_NEAR(p.report.volume_fraction, 0.7, 1e-12);
+  EXPECT_TRUE(p.report.converged);
+  EXPECT_GT(p.modulus.modulus, 0.0);
+  EXPECT_EQ(files_in_work(), (std::vector<std::string>{"tiny.h5", "tiny.prm"}));
+  EXPECT_NE(o.out.find("tiny.h5"), std::string::npos) << "says where it wrote";
+}
+
+TEST_F(MicroCli, ExistingOutputIsKeptWithoutForceAndReplacedWithIt) {
+  const std::string prm = parameters("tiny.prm", kTiny);
+  const std::string original = "an earlier result, not to be lost\n";
+  testing::write_text(work() / "tiny.h5", original);
+
+  const Outcome refused = micro("pack --quiet " + prm);
+  EXPECT_EQ(refused.code, 3) << refused.err;
+  EXPECT_NE(refused.err.find("tiny.h5"), std::string::npos) << refused.err;
+  EXPECT_EQ(testing::read_text(work() / "tiny.h5"), original);  // same bytes
+  EXPECT_EQ(files_in_work(), (std::vector<std::string>{"tiny.h5", "tiny.prm"}));
+
+  // The same through -o.
+  testing::write_text(work() / "other.h5", original);
+  EXPECT_EQ(micro("pack --quiet -o other.h5 " + prm).code, 3);
+  EXPECT_EQ(testing::read_text(work() / "other.h5"), original);
+
+  const Outcome forced = micro("pack --quiet --force " + prm);
+  ASSERT_EQ(forced.code, 0) << forced.err;
+  EXPECT_NE(testing::read_text(work() / "tiny.h5"), original);
+  EXPECT_EQ(read_packing(work() / "tiny.h5").particles.size(), 200u);
+  EXPECT_EQ(files_in_work(), (std::vector<std::string>{"other.h5", "tiny.h5", "tiny.prm"}));
+}
+
+TEST_F(MicroCli, RunWritesATimeSeries) {
+  const std::string prm = parameters(
+      "run.prm", kTiny +
+                     "subsection shear\n  set gamma dot tilde = 1e-4\n  set min strain = 0.3\n"
+                     "  set max strain = 0.3\n  set min stationary strain = 0.2\nend\n");
+  const Outcome o = micro("run --quiet -o run.h5 " + prm);
+  ASSERT_EQ(o.code, 0) << o.err;
+  const TimeSeries t = read_time_series(work() / "run.h5");
+  ASSERT_GT(t.size(), 20u);
+  EXPECT_NEAR(t.strain.back() - t.strain.front(), 0.3, 1e-9);
+  EXPECT_EQ(files_in_work(), (std::vector<std::string>{"run.h5", "run.prm"}));
+}
+
+}  // namespace
+}  // namespace softglass::micro

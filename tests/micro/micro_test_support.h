@@ -1,0 +1,149 @@
+// Helpers shared by the micro tests: random configurations, an independent
+// brute-force nearest-image search, a per-test temporary directory.
+//
+// The brute-force search deliberately does NOT call LeesEdwardsBox::minimum_image:
+// it enumerates the explicit Lees–Edwards images of particle j,
+//     x_j + n_y (δ, L, 0) + n_x L e_x + n_z L e_z,
+// and keeps the closest, so that tests comparing with it check the engine's
+// image logic rather than reuse it.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <random>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "micro/contact/contact_law.h"
+#include "micro/system/lees_edwards_box.h"
+#include "micro/system/particles.h"
+
+namespace softglass::micro::testing {
+
+/// The contact law called `name` (no table file).
+inline std::shared_ptr<const ContactLaw> named_law(const std::string& name) {
+  ContactLawSpec spec;
+  spec.name = name;
+  return make_contact_law(spec);
+}
+
+/// Uniformly random centres and Gaussian radii (mean 1, sd `polydispersity`,
+/// cut at ±2.5 sd) in a cubic cell sized for volume fraction `phi`. Overlaps are
+/// not avoided: this is the "random overlapping configuration" of the tests.
+struct RandomConfiguration {
+  std::vector<Vec3> position;
+  std::vector<double> radius;
+  double side = 0.0;
+};
+
+inline RandomConfiguration random_configuration(std::size_t n, double phi, std::uint64_t seed,
+                                                double polydispersity = 0.1) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  RandomConfiguration c;
+  double volume = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double z;
+    do z = normal(rng);
+    while (std::abs(z) > 2.5);
+    c.radius.push_back(1.0 + polydispersity * z);
+    volume += 4.0 / 3.0 * std::numbers::pi * std::pow(c.radius.back(), 3);
+  }
+  c.side = std::cbrt(volume / phi);
+  std::uniform_real_distribution<double> uniform(0.0, c.side);
+  for (std::size_t i = 0; i < n; ++i) c.position.emplace_back(uniform(rng), uniform(rng), uniform(rng));
+  return c;
+}
+
+/// The Lees–Edwards image offset δ = (γ − ⌊γ⌋) L, computed here independently.
+inline double offset_for(double side, double strain) {
+  return (strain - std::floor(strain)) * side;
+}
+
+/// Nearest-image separation x_i − x_j by explicit enumeration of images.
+inline Vec3 brute_force_separation(const Vec3& xi, const Vec3& xj, double side, double strain) {
+  const double delta = offset_for(side, strain);
+  Vec3 best = Vec3::Constant(std::numeric_limits<double>::infinity());
+  for (int ny = -1; ny <= 1; ++ny)
+    for (int nx = -2; nx <= 2; ++nx)
+      for (int nz = -1; nz <= 1; ++nz) {
+        const Vec3 image = xj + Vec3(ny * delta + nx * side, ny * side, nz * side);
+        const Vec3 d = xi - image;
+        if (d.squaredNorm() < best.squaredNorm()) best = d;
+      }
+  return best;
+}
+
+using PairSet = std::set<std::pair<std::uint32_t, std::uint32_t>>;
+
+/// Pairs (i < j) whose nearest-image distance is below R_i + R_j + extra.
+/// Pairs within `margin` of that threshold are put in `ambiguous` instead, so
+/// that comparisons are not decided by the last bit of a rounding.
+inline PairSet brute_force_pairs(std::span<const Vec3> x, std::span<const double> radius,
+                                 double side, double strain, double extra, double margin = 1e-9,
+                                 PairSet* ambiguous = nullptr) {
+  PairSet pairs;
+  for (std::uint32_t i = 0; i < x.size(); ++i)
+    for (std::uint32_t j = i + 1; j < x.size(); ++j) {
+      const double r = brute_force_separation(x[i], x[j], side, strain).norm();
+      const double cutoff = radius[i] + radius[j] + extra;
+      if (std::abs(r - cutoff) < margin) {
+        if (ambiguous) ambiguous->insert({i, j});
+        continue;
+      }
+      if (r < cutoff) pairs.insert({i, j});
+    }
+  return pairs;
+}
+
+inline std::pair<std::uint32_t, std::uint32_t> ordered(std::uint32_t a, std::uint32_t b) {
+  return a < b ? std::pair{a, b} : std::pair{b, a};
+}
+
+/// A fresh directory per test, removed afterwards.
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name =
+        test ? std::string(test->test_suite_name()) + "-" + test->name() : std::string("micro");
+    path_ = std::filesystem::temp_directory_path() /
+            ("softglass-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace softglass::micro::testing

@@ -1,0 +1,96 @@
+// Elastic pair forces are equal and opposite (Newton's third law), so the total
+// elastic force on a periodic configuration vanishes; and each contact in the
+// ContactList carries the force of the contact law at its own geometry.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+
+#include "micro/contact/contact_law.h"
+#include "micro/system/contact_system.h"
+#include "micro_test_support.h"
+
+namespace softglass::micro {
+namespace {
+
+using testing::random_configuration;
+
+class PairForces : public ::testing::TestWithParam<double> {};
+
+// 200 particles placed at random at φ = 0.6: heavily overlapping (ε up to ~1,
+// all three seth2011 branches), with contacts across the Lees–Edwards boundary.
+ContactSystem overlapping_system(double strain) {
+  const auto c = random_configuration(200, 0.6, 99);
+  LeesEdwardsBox box(c.side);
+  box.set_strain(strain);
+  return ContactSystem(Particles(c.position, c.radius), box,
+                       testing::named_law("seth2011"), 0.3);
+}
+
+TEST_P(PairForces, TotalForceVanishes) {
+  ContactSystem system = overlapping_system(GetParam());
+  const ContactField& field = system.compute_forces();
+  ASSERT_GT(field.contact_count, 300u);
+  Vec3 total = Vec3::Zero();
+  for (const Vec3& f : field.force) total += f;
+  // Every pair force is added to one particle and subtracted from another, so
+  // Σ F_i = 0 up to the rounding of the sums: ≲ (terms per sum + N) 2⁻⁵³ Σ|f_c|
+  // ≈ 220 × 1.1e-16 ≈ 2.5e-14 of Σ|f_c|; 1e-13 allows for that.
+  EXPECT_LE(total.norm(), 1e-13 * field.force_magnitude_sum) << "total " << total.transpose();
+  // and the test is not trivially satisfied: individual forces are O(Σ|f|/N)
+  double largest = 0.0;
+  for (const Vec3& f : field.force) largest = std::max(largest, f.norm());
+  EXPECT_GT(largest, 1e-3 * field.force_magnitude_sum);
+}
+
+TEST_P(PairForces, ThirdLawPerPairThroughTheContactList) {
+  ContactSystem system = overlapping_system(GetParam());
+  const double strain = GetParam();
+  const ContactField& field = system.compute_forces({.contacts = true});
+  const ContactList& c = field.contacts;
+  const Particles& p = system.particles();
+  const std::size_t n = system.size();
+  ASSERT_EQ(c.size(), field.contact_count);
+  const auto seth = testing::named_law("seth2011");
+
+  // Each contact: geometry from an independent nearest-image search, force
+  // from the law at that geometry, up to a handful of roundings.
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const std::uint32_t i = c.i[k], j = c.j[k];
+    const Vec3 d = testing::brute_force_separation(p.position[i], p.position[j],
+                                                   system.box().side(), strain);
+    EXPECT_LT((c.separation[k] - d).norm(), 1e-12 * system.box().side()) << "contact " << k;
+    const double r = d.norm();
+    const double rc = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
+    const double eps = (p.radius[i] + p.radius[j] - r) / rc;
+    EXPECT_NEAR(c.contact_radius[k] / rc, 1.0, 1e-14);
+    EXPECT_NEAR(c.deformation[k], eps, 1e-12 * std::max(1.0, eps));
+    // ε itself carries an absolute rounding of ~1e-15 (r and R_i + R_j are O(1)),
+    // which moves f by R_c² F'(ε) δε: large relative to f for tiny overlaps.
+    EXPECT_NEAR(c.force[k], rc * rc * seth->force(eps),
+                1e-13 * rc * rc * seth->force(eps) + rc * rc * seth->stiffness(eps) * 1e-14);
+  }
+
+  // Rebuild every particle's force as Σ over its contacts of +f_c n_c (as i)
+  // and −f_c n_c (as j): this holds only if each contact acts on its two
+  // particles with equal and opposite forces.
+  std::vector<Vec3> rebuilt(n, Vec3::Zero());
+  std::vector<double> scale(n, 0.0);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const Vec3 f = c.force[k] * c.separation[k].normalized();  // on i from j, repulsive
+    rebuilt[c.i[k]] += f;
+    rebuilt[c.j[k]] -= f;
+    scale[c.i[k]] += c.force[k];
+    scale[c.j[k]] += c.force[k];
+  }
+  for (std::size_t a = 0; a < n; ++a) {
+    // summation order differs from the engine's: a few ulp of Σ|f| per particle
+    EXPECT_LE((field.force[a] - rebuilt[a]).norm(), 1e-13 * scale[a] + 1e-300) << "particle " << a;
+  }
+  // Repulsion: the force on i from j points from j to i (f·d > 0).
+  for (std::size_t k = 0; k < c.size(); ++k) EXPECT_GT(c.force[k], 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Strains, PairForces, ::testing::Values(0.0, 0.37));
+
+}  // namespace
+}  // namespace softglass::micro
