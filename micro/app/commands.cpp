@@ -148,7 +148,7 @@ void run_command(const CommandOptions& options) {
                                             progress.strain, progress.worst_relative_error));
   });
   bar.finish();
-  shear.final_particles = flow.system().particles().in_label_order();
+  shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();
   record.timings.shear = seconds_since(shear_start);
   print_shear(shear, static_cast<double>(record.packing.particles));

@@ -32,10 +32,10 @@ class AdaptiveEuler final : public Integrator {
 
     for (;;) {
       flow.prepare_step(dt);
-      OverdampedShear::Snapshot before = flow.save();
+      flow.save(before_);
       flow.step(dt);
       flow.evaluate();
-      const double error = error_estimate(before.position.size(), before.velocity, flow, dt);
+      const double error = error_estimate(before_.velocity, flow, dt);
       const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
       if (error <= spec_.tolerance) {
         record_accepted(dt);
@@ -43,7 +43,7 @@ class AdaptiveEuler final : public Integrator {
         if (dt < max_step || factor < 1.0) proposal_ = dt * std::min(2.0, factor);
         return dt;
       }
-      flow.restore(std::move(before));
+      flow.restore(before_);
       ++stats_.rejected;
       dt *= std::max(0.2, factor);
     }
@@ -51,11 +51,11 @@ class AdaptiveEuler final : public Integrator {
 
  private:
   // max_α (dt/2)|u_α(x_{n+1}) − u_α(x_n)|; u = y e_x + v, and y changed by dt v_y.
-  static double error_estimate(std::size_t n, const std::vector<Vec3>& v_before,
-                               const OverdampedShear& flow, double dt) {
+  static double error_estimate(const std::vector<Vec3>& v_before, const OverdampedShear& flow,
+                               double dt) {
     const auto v_after = flow.velocities();
     double worst = 0.0;
-    for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t a = 0; a < v_before.size(); ++a) {
       Vec3 change = v_after[a] - v_before[a];
       change.x() += dt * v_before[a].y();
       worst = std::max(worst, change.squaredNorm());
@@ -65,6 +65,7 @@ class AdaptiveEuler final : public Integrator {
 
   IntegratorSpec spec_;
   double proposal_ = 1e300;
+  OverdampedShear::Snapshot before_;  // the state a rejected step returns to
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <numbers>
+#include <stdexcept>
 
 #include "common/errors.h"
 
@@ -27,25 +28,35 @@ OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model)
 
 void OverdampedShear::evaluate() {
   const bool with_drag = model_.drag.enabled;
-  const ContactField& field = system_.compute_forces({.energy = false, .contacts = with_drag});
+  stress_valid_ = strain() >= stress_from_;
+  const ContactField& field =
+      system_.compute_forces({.energy = false, .contacts = with_drag, .virial = stress_valid_});
   Particles& p = system_.particles();
   const std::size_t n = p.size();
-  const double friction_per_radius = 6.0 * std::numbers::pi * model_.gamma_tilde / model_.mobility_factor;
-  friction_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) friction_[a] = friction_per_radius * p.radius[a];
+  // ζ and 1/ζ change only when the particles are reordered (at list builds).
+  if (friction_.size() != n || ordered_at_build_ != system_.neighbours().builds()) {
+    const double friction_per_radius = 6.0 * std::numbers::pi * model_.gamma_tilde / model_.mobility_factor;
+    friction_.resize(n);
+    mobility_.resize(n);
+    for (std::size_t a = 0; a < n; ++a) {
+      friction_[a] = friction_per_radius * p.radius[a];
+      mobility_[a] = 1.0 / friction_[a];
+    }
+    ordered_at_build_ = system_.neighbours().builds();
+  }
 
   if (with_drag) {
     last_solve_ = drag_.solve(field.contacts, model_.gamma_tilde, friction_, field.force, p.velocity);
-    viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity);
+    if (stress_valid_) viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity);
   } else {
-    for (std::size_t a = 0; a < n; ++a) p.velocity[a] = field.force[a] / friction_[a];
+    for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * field.force[a];
     viscous_virial_.setZero();
   }
   elastic_virial_ = field.virial;
 
   double rate = 0.0, speed2 = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
-    rate = std::max(rate, 2.0 * field.stiffness_sum[a] / friction_[a]);
+    rate = std::max(rate, 2.0 * field.stiffness_sum[a] * mobility_[a]);
     speed2 = std::max(speed2, p.velocity[a].squaredNorm());
   }
   relaxation_rate_ = rate;
@@ -58,6 +69,7 @@ void OverdampedShear::evaluate() {
 }
 
 StressSample OverdampedShear::stress() const {
+  if (!stress_valid_) throw std::logic_error("stress requested at an evaluation that skipped it");
   const double volume = system_.box().volume();
   return {-elastic_virial_ / volume, -viscous_virial_ / volume};
 }
@@ -69,29 +81,33 @@ void OverdampedShear::prepare_step(double dt) {
 }
 
 void OverdampedShear::step(double dt) {
-  const auto& x = system_.particles().position;
-  const auto& v = system_.particles().velocity;
-  system_.move_all([&](std::size_t i) {
-    const Vec3 nonaffine = dt * v[i];
-    return std::pair{Vec3(nonaffine + Vec3(dt * x[i].y(), 0.0, 0.0)), nonaffine};
-  });
+  system_.move(dt, system_.particles().velocity, /*affine=*/true);
   system_.advance_strain(dt);
   evaluated_ = false;
 }
 
-OverdampedShear::Snapshot OverdampedShear::save() const {
-  return {system_.particles().position, system_.particles().velocity, system_.tracking(), strain(),
-          relaxation_rate_, max_speed_, elastic_virial_, viscous_virial_};
+void OverdampedShear::save(Snapshot& into) const {
+  const Particles& p = system_.particles();
+  into.position.assign(p.position.begin(), p.position.end());
+  into.velocity.assign(p.velocity.begin(), p.velocity.end());
+  system_.save_tracking(into.tracking);
+  into.strain = strain();
+  into.relaxation_rate = relaxation_rate_;
+  into.max_speed = max_speed_;
+  into.elastic_virial = elastic_virial_;
+  into.viscous_virial = viscous_virial_;
+  into.stress_valid = stress_valid_;
 }
 
-void OverdampedShear::restore(Snapshot s) {
+void OverdampedShear::restore(const Snapshot& s) {
   system_.restore_positions(s.position, s.strain);
-  system_.particles().velocity = std::move(s.velocity);
-  system_.restore_tracking(std::move(s.tracking));
+  system_.particles().velocity.assign(s.velocity.begin(), s.velocity.end());
+  system_.restore_tracking(s.tracking);
   relaxation_rate_ = s.relaxation_rate;
   max_speed_ = s.max_speed;
   elastic_virial_ = s.elastic_virial;
   viscous_virial_ = s.viscous_virial;
+  stress_valid_ = s.stress_valid;
   evaluated_ = true;
 }
 

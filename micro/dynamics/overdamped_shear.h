@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "micro/forces/ehd_drag.h"
@@ -47,14 +48,20 @@ class OverdampedShear {
   const ShearModel& model() const { return model_; }
   double strain() const { return system_.box().strain(); }
 
-  /// Forces, velocities, stress and stiffness bound at the current configuration.
+  /// Forces, velocities and stiffness bound at the current configuration, and
+  /// the stress if the strain has reached the one set by `sample_stress_from`.
   void evaluate();
+  /// Evaluations at strains ≥ `strain` compute the stress (by default all do);
+  /// a run sets its next sample strain so that steps between samples skip it.
+  void sample_stress_from(double strain) { stress_from_ = strain; }
   bool evaluated() const { return evaluated_; }
 
   /// Non-affine velocities v of the last evaluation (units γ̇ R).
   std::span<const Vec3> velocities() const { return system_.particles().velocity; }
   double relaxation_rate() const { return relaxation_rate_; }
   double max_speed() const { return max_speed_; }
+  /// The stress of the last evaluation; throws std::logic_error if that
+  /// evaluation did not compute it.
   StressSample stress() const;
   std::size_t contact_count() const { return system_.forces().contact_count; }
   const VelocitySolveStats& last_solve() const { return last_solve_; }
@@ -72,16 +79,22 @@ class OverdampedShear {
     ContactSystem::Tracking tracking;
     double strain, relaxation_rate, max_speed;
     Eigen::Matrix3d elastic_virial, viscous_virial;
+    bool stress_valid;
   };
-  Snapshot save() const;
-  void restore(Snapshot snapshot);
+  /// Copies into `into`'s buffers (no allocation once they have grown).
+  void save(Snapshot& into) const;
+  void restore(const Snapshot& from);
 
  private:
   ContactSystem system_;
   ShearModel model_;
   EhdDrag drag_;
-  std::vector<double> friction_;
+  std::vector<double> friction_;  // ζ_α
+  std::vector<double> mobility_;  // 1/ζ_α
+  std::size_t ordered_at_build_ = 0;  // the list build whose particle order they follow
   bool evaluated_ = false;
+  bool stress_valid_ = false;
+  double stress_from_ = -std::numeric_limits<double>::infinity();
   double relaxation_rate_ = 0.0;
   double max_speed_ = 0.0;
   Eigen::Matrix3d elastic_virial_ = Eigen::Matrix3d::Zero();

@@ -21,7 +21,8 @@ void ContactList::clear() {
 
 std::size_t ContactField::memory_bytes() const {
   std::size_t bytes = force.capacity() * sizeof(Vec3) + stiffness_sum.capacity() * sizeof(double);
-  for (const auto& b : scratch.accumulators) bytes += b.capacity() * sizeof(double);
+  for (const auto& f : scratch.forces) bytes += f.capacity() * sizeof(Vec3);
+  for (const auto& k : scratch.stiffness) bytes += k.capacity() * sizeof(double);
   const auto list_bytes = [](const ContactList& c) {
     return c.i.capacity() * 8 + c.separation.capacity() * sizeof(Vec3) +
            (c.deformation.capacity() + c.contact_radius.capacity() + c.force.capacity() +
@@ -36,26 +37,25 @@ int prepare_kernel(const ForceKernelInput& in, ContactField& out) {
   const std::size_t n = in.x.size();
   const int threads = n >= 2048 ? omp_get_max_threads() : 1;
   auto& scratch = out.scratch;
-  scratch.accumulators.resize(threads);
-  for (auto& a : scratch.accumulators) a.assign(4 * n, 0.0);
+  out.force.assign(n, Vec3::Zero());
+  out.stiffness_sum.assign(n, 0.0);
+  scratch.forces.resize(threads - 1);
+  scratch.stiffness.resize(threads - 1);
+  for (auto& f : scratch.forces) f.assign(n, Vec3::Zero());
+  for (auto& k : scratch.stiffness) k.assign(n, 0.0);
   scratch.contacts.resize(threads);
   for (auto& c : scratch.contacts) c.clear();
-  scratch.inverse_radius.resize(n);
-  for (std::size_t i = 0; i < n; ++i) scratch.inverse_radius[i] = 1.0 / in.radius[i];
-  out.force.resize(n);
-  out.stiffness_sum.resize(n);
   return threads;
 }
 
 void reduce_accumulators(ContactField& out, std::size_t begin, std::size_t end) {
-  for (std::size_t i = begin; i < end; ++i) {
-    double f0 = 0, f1 = 0, f2 = 0, k = 0;
-    for (const auto& acc : out.scratch.accumulators) {
-      const double* a = &acc[4 * i];
-      f0 += a[0], f1 += a[1], f2 += a[2], k += a[3];
+  for (std::size_t t = 0; t < out.scratch.forces.size(); ++t) {
+    const auto& f = out.scratch.forces[t];
+    const auto& k = out.scratch.stiffness[t];
+    for (std::size_t i = begin; i < end; ++i) {
+      out.force[i] += f[i];
+      out.stiffness_sum[i] += k[i];
     }
-    out.force[i] = Vec3(f0, f1, f2);
-    out.stiffness_sum[i] = k;
   }
 }
 
@@ -89,10 +89,9 @@ void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& 
 }
 
 void compute_contact_forces(const ContactLaw& law, const LeesEdwardsBox& box,
-                            std::span<const Vec3> x, std::span<const double> radius,
-                            const NeighbourList& neighbours, const ForceRequest& request,
-                            ContactField& out) {
-  law.compute_forces({box, x, radius, neighbours, request}, out);
+                            std::span<const Vec3> x, const NeighbourList& neighbours,
+                            const ForceRequest& request, ContactField& out) {
+  law.compute_forces({box, x, neighbours, request}, out);
 }
 
 }  // namespace softglass::micro

@@ -37,13 +37,13 @@ struct ContactList {
 struct ForceRequest {
   bool energy = false;    // Σ R_c³ W(ε): one more law call per contact
   bool contacts = false;  // fill `ContactField::contacts`
+  bool virial = true;     // Σ d ⊗ f, for the stress
 };
 
 /// What a force evaluation reads.
 struct ForceKernelInput {
   const LeesEdwardsBox& box;
   std::span<const Vec3> x;
-  std::span<const double> radius;
   const NeighbourList& neighbours;
   ForceRequest request;
 };
@@ -52,7 +52,7 @@ struct ForceKernelInput {
 struct ContactField {
   std::vector<Vec3> force;             // F^e_i
   std::vector<double> stiffness_sum;   // Σ over contacts of the Hessian block norm
-  Eigen::Matrix3d virial = Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V)
+  Eigen::Matrix3d virial = Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V), if requested
   double energy = 0.0;
   double force_magnitude_sum = 0.0;  // Σ_c |f_c|
   std::size_t contact_count = 0;
@@ -60,18 +60,20 @@ struct ContactField {
 
   std::size_t memory_bytes() const;
 
-  /// Workspace of the kernel (contact_kernel.h), kept to avoid reallocation.
+  /// Workspace of the kernel (contact_kernel.h), kept to avoid reallocation:
+  /// the force and stiffness accumulators of threads 1, 2, … (thread 0 writes
+  /// into `force` and `stiffness_sum` directly) and every thread's contacts.
   struct Scratch {
-    std::vector<std::vector<double>> accumulators;  // per thread: (f_x, f_y, f_z, Σ‖K‖) per particle
-    std::vector<double> inverse_radius;
-    std::vector<ContactList> contacts;              // per thread
+    std::vector<std::vector<Vec3>> forces;
+    std::vector<std::vector<double>> stiffness;
+    std::vector<ContactList> contacts;
   } scratch;
 };
 
-/// Elastic forces with `law` (dispatches once to the law's compiled kernel).
+/// Elastic forces with `law` (dispatches once to the law's compiled kernel); the
+/// radii enter through the list's pair constants.
 void compute_contact_forces(const ContactLaw& law, const LeesEdwardsBox& box,
-                            std::span<const Vec3> x, std::span<const double> radius,
-                            const NeighbourList& neighbours, const ForceRequest& request,
-                            ContactField& out);
+                            std::span<const Vec3> x, const NeighbourList& neighbours,
+                            const ForceRequest& request, ContactField& out);
 
 }  // namespace softglass::micro

@@ -1,9 +1,10 @@
 // The contact-force kernel, compiled once per contact law with the law's F(ε)
 // inlined (contact/contact_law_impl.h). See contact_forces.h for the physics.
 //
-// Loop over particles i and their list neighbours j > i (half list): nearest
-// image d, overlap test, then for a contact
-//     1/R_c = 1/R_i + 1/R_j,  ε = (R_i + R_j − r)/R_c,  |f| = R_c² F(ε),  f = |f| d/r,
+// Loop over particles i and their list neighbours j > i (half list): separation
+// d through the pair's image (neighbour_list.h), overlap test, then for a contact,
+// with R_i + R_j, R_c and 1/R_c from the list,
+//     ε = (R_i + R_j − r)/R_c,  |f| = R_c² F(ε),  f = |f| d/r,
 // added to i and subtracted from j. Threads write j's share into their own
 // accumulators, reduced afterwards in a fixed order, so results do not depend on
 // scheduling (for a given thread count).
@@ -27,22 +28,25 @@ struct KernelTotals {
 
 /// Sizes the buffers; returns the thread count to use.
 int prepare_kernel(const ForceKernelInput& in, ContactField& out);
-/// Reduces the per-thread accumulators of particles [begin, end) into `out`.
+/// Adds the accumulators of threads 1, 2, … for particles [begin, end) into `out`.
 void reduce_accumulators(ContactField& out, std::size_t begin, std::size_t end);
 /// Adds the per-thread totals and contact lists into `out`.
 void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& totals, ContactField& out);
 
-template <class Law>
-void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& out) {
+/// The kernel proper, with what is requested known at compile time so that the
+/// contact loop carries no tests for it.
+template <class Law, bool kEnergy, bool kContacts, bool kVirial>
+void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& out) {
   const int threads = prepare_kernel(in, out);
   const std::size_t n = in.x.size();
-  const double* inverse_radius = out.scratch.inverse_radius.data();
+  const auto shifts = in.neighbours.image_shifts(in.box);
   std::vector<KernelTotals> totals(threads);
 
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
-    double* acc = out.scratch.accumulators[t].data();
+    Vec3* force = t == 0 ? out.force.data() : out.scratch.forces[t - 1].data();
+    double* stiffness = t == 0 ? out.stiffness_sum.data() : out.scratch.stiffness[t - 1].data();
     ContactList& contacts = out.scratch.contacts[t];
     KernelTotals sums;
     double vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0, magnitude = 0;
@@ -50,36 +54,35 @@ void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField
 
     // Contacts of particle i, compacted without a branch on the overlap test
     // (whose outcome is unpredictable: a quarter of the list pairs do not touch).
-    std::vector<std::uint32_t> cj;
+    std::vector<std::uint32_t> cp;  // position in i's list
     std::vector<Vec3> cd;
-    std::vector<double> cr2, csum;
+    std::vector<double> cr2;
 
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 xi = in.x[i];
-      const double ri = in.radius[i], inv_ri = inverse_radius[i];
       const auto list = in.neighbours.neighbours(i);
-      if (cj.size() < list.size()) {
-        cj.resize(list.size()), cd.resize(list.size()), cr2.resize(list.size()), csum.resize(list.size());
-      }
+      const auto pairs = in.neighbours.pair_constants(i);
+      if (cp.size() < list.size()) cp.resize(list.size()), cd.resize(list.size()), cr2.resize(list.size());
       std::size_t m = 0;
-      for (const std::uint32_t j : list) {
-        const Vec3 d = in.box.minimum_image(xi - in.x[j]);
-        const double sum = ri + in.radius[j];
+      for (std::uint32_t p = 0; p < list.size(); ++p) {
+        const std::uint32_t entry = list[p];
+        const Vec3 d = xi - in.x[NeighbourList::index(entry)] - shifts[NeighbourList::image(entry)];
         const double r2 = d.squaredNorm();
-        cj[m] = j, cd[m] = d, cr2[m] = r2, csum[m] = sum;
+        const double sum = pairs[p].contact_distance;
+        cp[m] = p, cd[m] = d, cr2[m] = r2;
         m += r2 < sum * sum;
       }
 
       double fx = 0, fy = 0, fz = 0, ki = 0;
       for (std::size_t k = 0; k < m; ++k) {
-        const std::uint32_t j = cj[k];
+        const std::uint32_t j = NeighbourList::index(list[cp[k]]);
+        const auto& pair = pairs[cp[k]];
         const Vec3& d = cd[k];
         const double r = std::sqrt(cr2[k]);
         const double inv_r = 1.0 / r;
-        const double inv_rc = inv_ri + inverse_radius[j];
-        const double rc = 1.0 / inv_rc;
-        const double eps = (csum[k] - r) * inv_rc;
+        const double rc = pair.contact_radius;
+        const double eps = (pair.contact_distance - r) * pair.inverse_contact_radius;
         double F, dF;
         law.force_and_stiffness(eps, F, dF);
         const double fmag = rc * rc * F;
@@ -88,13 +91,15 @@ void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField
         const double norm = std::max(kn, s);  // ‖K_c‖ = max(normal stiffness, f/r)
         const double f0 = s * d.x(), f1 = s * d.y(), f2 = s * d.z();
         fx += f0, fy += f1, fz += f2, ki += norm;
-        double* aj = acc + 4 * j;
-        aj[0] -= f0, aj[1] -= f1, aj[2] -= f2, aj[3] += norm;
-        vxx += f0 * d.x(), vyy += f1 * d.y(), vzz += f2 * d.z();
-        vxy += f1 * d.x(), vxz += f2 * d.x(), vyz += f2 * d.y();
+        force[j] -= Vec3(f0, f1, f2);
+        stiffness[j] += norm;
+        if constexpr (kVirial) {
+          vxx += f0 * d.x(), vyy += f1 * d.y(), vzz += f2 * d.z();
+          vxy += f1 * d.x(), vxz += f2 * d.x(), vyz += f2 * d.y();
+        }
         magnitude += fmag;
-        if (in.request.energy) sums.energy += rc * rc * rc * law.energy(eps);
-        if (in.request.contacts) {
+        if constexpr (kEnergy) sums.energy += rc * rc * rc * law.energy(eps);
+        if constexpr (kContacts) {
           contacts.i.push_back(static_cast<std::uint32_t>(i));
           contacts.j.push_back(j);
           contacts.separation.push_back(d);
@@ -105,8 +110,8 @@ void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField
         }
       }
       count += m;
-      double* ai = acc + 4 * i;
-      ai[0] += fx, ai[1] += fy, ai[2] += fz, ai[3] += ki;
+      force[i] += Vec3(fx, fy, fz);
+      stiffness[i] += ki;
     }
     double* v = sums.virial;
     v[0] = vxx, v[1] = vyy, v[2] = vzz, v[3] = vxy, v[4] = vxz, v[5] = vyz;
@@ -115,11 +120,28 @@ void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField
     totals[t] = sums;
 
 #pragma omp barrier
-    // The same static partition as above: each thread reduces its own range.
+    // Threads 1, 2, … add into thread 0's arrays, each over its own range, in a
+    // fixed order.
     const std::size_t chunk = (n + threads - 1) / threads;
     reduce_accumulators(out, std::min(n, t * chunk), std::min(n, (t + 1) * chunk));
   }
   finish_kernel(in, totals, out);
+}
+
+template <class Law>
+void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& out) {
+  const ForceRequest& r = in.request;
+  const int flags = (r.energy ? 4 : 0) | (r.contacts ? 2 : 0) | (r.virial ? 1 : 0);
+  switch (flags) {
+    case 0: return contact_kernel<Law, false, false, false>(law, in, out);
+    case 1: return contact_kernel<Law, false, false, true>(law, in, out);
+    case 2: return contact_kernel<Law, false, true, false>(law, in, out);
+    case 3: return contact_kernel<Law, false, true, true>(law, in, out);
+    case 4: return contact_kernel<Law, true, false, false>(law, in, out);
+    case 5: return contact_kernel<Law, true, false, true>(law, in, out);
+    case 6: return contact_kernel<Law, true, true, false>(law, in, out);
+    default: return contact_kernel<Law, true, true, true>(law, in, out);
+  }
 }
 
 }  // namespace softglass::micro

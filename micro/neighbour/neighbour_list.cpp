@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "common/errors.h"
@@ -59,6 +60,10 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   const int nc = g.cells;
   const double reach = 2.0 * max_radius_ + skin_;
   const double offset = box.image_offset();
+  const double L = box.side();
+  if (n > kMaxParticles) {
+    throw InputError(fmt::format("{} particles exceed the neighbour list's limit of {}", n, kMaxParticles));
+  }
 
   // Counting sort of the particles into cells.
   const std::size_t ncell = static_cast<std::size_t>(nc) * nc * nc;
@@ -113,8 +118,15 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
               const std::uint32_t j = cell_members_[k];
               if (j <= i) continue;
               const double cutoff = ri + radius[j] + skin_;
-              if (box.minimum_image(xi - x[j]).squaredNorm() < cutoff * cutoff) {
-                pairs.push_back(j);
+              const Vec3 raw = xi - x[j];
+              const Vec3 d = box.minimum_image(raw);
+              if (d.squaredNorm() < cutoff * cutoff) {
+                // raw − d = (n_x L + n_y δ, n_y L, n_z L)
+                const int ny = static_cast<int>(std::lround((raw.y() - d.y()) / L));
+                const int nz = static_cast<int>(std::lround((raw.z() - d.z()) / L));
+                const int nx = static_cast<int>(std::lround((raw.x() - d.x() - ny * offset) / L));
+                const auto code = static_cast<std::uint32_t>((nx + 2) + 5 * (ny + 1) + 15 * (nz + 1));
+                pairs.push_back(j | (code << kIndexBits));
                 ++count;
               }
             }
@@ -135,16 +147,41 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   // Neighbours of each i in increasing j: a fixed summation order whatever the grid.
   for (std::size_t i = 0; i < n; ++i) {
     std::sort(neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i]),
-              neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i + 1]));
+              neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i + 1]),
+              [](std::uint32_t a, std::uint32_t b) { return index(a) < index(b); });
+  }
+
+  constants_.resize(neighbours_.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t p = start_[i]; p < start_[i + 1]; ++p) {
+      const double ri = radius[i], rj = radius[index(neighbours_[p])];
+      const double sum = ri + rj;
+      constants_[p] = {sum, ri * rj / sum, sum / (ri * rj)};
+    }
   }
 
   strain_at_build_ = box.strain();
+  offset_at_build_ = offset;
   built_ = true;
   ++builds_;
 }
 
+std::array<Vec3, NeighbourList::kImages> NeighbourList::image_shifts(const LeesEdwardsBox& box) const {
+  const double L = box.side();
+  const double delta = offset_at_build_ + L * (box.strain() - strain_at_build_);
+  std::array<Vec3, kImages> shifts;
+  for (int nz = -1; nz <= 1; ++nz)
+    for (int ny = -1; ny <= 1; ++ny)
+      for (int nx = -2; nx <= 2; ++nx) {
+        shifts[(nx + 2) + 5 * (ny + 1) + 15 * (nz + 1)] = Vec3(nx * L + ny * delta, ny * L, nz * L);
+      }
+  return shifts;
+}
+
 std::size_t NeighbourList::memory_bytes() const {
   return start_.capacity() * sizeof(std::size_t) + neighbours_.capacity() * sizeof(std::uint32_t) +
+         constants_.capacity() * sizeof(PairConstants) +
          (cell_start_.capacity() + cell_members_.capacity() + counts_.capacity()) *
              sizeof(std::uint32_t);
 }

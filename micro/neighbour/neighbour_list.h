@@ -1,6 +1,12 @@
 // Verlet neighbour list for a Lees–Edwards cell, built in O(N) from a cell grid.
 //
-// The list holds every pair (i < j) closer than R_i + R_j + skin at build time.
+// The list holds every pair (i < j) closer than R_i + R_j + skin at build time,
+// with the periodic image through which the pair is near. Positions are wrapped
+// into the cell only when the list is built and move continuously in between,
+// so each pair keeps its image: the separation is d = x_i − x_j − s, with s one
+// of a few image shifts (image_shifts) in which the Lees–Edwards offset is
+// continued from its value at the build, δ_build + L Δγ. The pair loop then
+// needs no nearest-image search.
 // Cells are cubes of side ≥ 2 R_max + skin in the lab frame. Across the gradient
 // (y) boundary the images are shifted by the Lees–Edwards offset, so for a
 // particle in the bottom (top) cell layer the x range of candidate cells in the
@@ -16,6 +22,7 @@
 // valid while that bound stays below the skin.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -47,10 +54,30 @@ class NeighbourList {
                          skin_;
   }
 
-  /// Neighbours j > i of particle i.
+  /// Neighbours j > i of particle i, each entry packing j and the pair's image.
   std::span<const std::uint32_t> neighbours(std::size_t i) const {
     return {neighbours_.data() + start_[i], start_[i + 1] - start_[i]};
   }
+  static std::uint32_t index(std::uint32_t entry) { return entry & kIndexMask; }
+  static std::uint32_t image(std::uint32_t entry) { return entry >> kIndexBits; }
+
+  /// What a pair's contact needs that depends only on the two radii, computed
+  /// once per build: R_i + R_j, R_c = R_i R_j/(R_i + R_j) and 1/R_c.
+  struct PairConstants {
+    double contact_distance, contact_radius, inverse_contact_radius;
+  };
+  /// Constants of the pairs of particle i, aligned with neighbours(i).
+  std::span<const PairConstants> pair_constants(std::size_t i) const {
+    return {constants_.data() + start_[i], start_[i + 1] - start_[i]};
+  }
+
+  /// Image shift s by image code: (n_x L + n_y δ, n_y L, n_z L) with
+  /// n_x ∈ {−2 … 2}, n_y, n_z ∈ {−1, 0, 1} and δ the continued offset.
+  static constexpr std::size_t kImages = 45;
+  std::array<Vec3, kImages> image_shifts(const LeesEdwardsBox& box) const;
+
+  /// Largest number of particles the packed entries can index.
+  static constexpr std::size_t kMaxParticles = std::size_t{1} << 26;
 
   std::size_t size() const { return start_.empty() ? 0 : start_.size() - 1; }
   std::size_t pair_count() const { return neighbours_.size(); }
@@ -64,13 +91,18 @@ class NeighbourList {
   };
   Grid grid_for(const LeesEdwardsBox& box, double max_radius) const;
 
+  static constexpr unsigned kIndexBits = 26;
+  static constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;
+
   double skin_;
   bool built_ = false;
   double strain_at_build_ = 0.0;
+  double offset_at_build_ = 0.0;
   double max_radius_ = 0.0;
   std::size_t builds_ = 0;
   std::vector<std::size_t> start_;
   std::vector<std::uint32_t> neighbours_;
+  std::vector<PairConstants> constants_;
   // scratch reused between builds
   std::vector<std::uint32_t> cell_start_, cell_members_;
   std::vector<std::vector<std::uint32_t>> thread_pairs_;

@@ -80,11 +80,7 @@ FireResult minimise_fire(ContactSystem& system, const FireSettings& settings) {
         alpha = kAlphaStart;
       }
       // Step back half a step and stop.
-      const double back = -0.5 * dt;
-      system.move_all([&](std::size_t a) {
-        const Vec3 d = back * v[a];
-        return std::pair{d, d};
-      });
+      system.move(-0.5 * dt, v, /*affine=*/false);
       std::fill(v.begin(), v.end(), Vec3::Zero());
     }
 
@@ -102,10 +98,7 @@ FireResult minimise_fire(ContactSystem& system, const FireSettings& settings) {
       vmax2 = std::max(vmax2, v[a].squaredNorm());
     }
     system.ensure_neighbours(dt * std::sqrt(vmax2));  // may reorder; v moves along
-    system.move_all([&](std::size_t a) {
-      const Vec3 d = dt * v[a];
-      return std::pair{d, d};
-    });
+    system.move(dt, v, /*affine=*/false);
     field = &system.compute_forces();
     dt_max = settings.step_fraction / std::sqrt(std::max(stiffness_bound(*field), 1e-300));
   }

@@ -120,7 +120,7 @@ Packing make_packing(const PackingSpec& spec, std::shared_ptr<const ContactLaw> 
   report.iterations = iterations;
   report.converged = report.residual <= spec.relaxation.force_tolerance;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {system.particles().in_label_order(), system.box(), report};
+  return {system.wrapped_in_label_order(), system.box(), report};
 }
 
 }  // namespace softglass::micro

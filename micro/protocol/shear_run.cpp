@@ -120,7 +120,8 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
   const std::size_t builds_before = flow.system().neighbours().builds();
   std::size_t newton = 0, cg = 0;
 
-  if (!flow.evaluated()) flow.evaluate();
+  flow.sample_stress_from(-std::numeric_limits<double>::infinity());
+  flow.evaluate();  // the first sample
   const auto record = [&] {
     const StressSample s = flow.stress();
     series.strain.push_back(flow.strain());
@@ -133,6 +134,11 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
   record();
 
   double next_sample = start + protocol.sample_interval;
+  // Steps between samples skip the stress (the sample lands exactly on its strain).
+  const auto sample_at = [&](double strain) {
+    flow.sample_stress_from(strain - 1e-9 * protocol.sample_interval);
+  };
+  sample_at(next_sample);
   double next_check = start + std::max(protocol.check_interval, protocol.min_strain);
   double worst = std::numeric_limits<double>::infinity();
   for (;;) {
@@ -143,6 +149,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
 
     record();
     next_sample += protocol.sample_interval;
+    sample_at(next_sample);
     const double sheared = flow.strain() - start;
     if (flow.strain() >= next_check - 1e-9 * protocol.sample_interval) {
       next_check += protocol.check_interval;

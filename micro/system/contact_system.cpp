@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "common/errors.h"
 
 namespace softglass::micro {
@@ -19,7 +22,24 @@ ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
   rebuild();
 }
 
+void ContactSystem::move(double dt, std::span<const Vec3> v, bool affine) {
+  const std::size_t n = size();
+  Vec3* x = particles_.position.data();
+  Vec3* tracked = nonaffine_.data();
+  double max2 = max_nonaffine_ * max_nonaffine_;
+#pragma omp parallel for schedule(static) reduction(max : max2) if (n >= 4096)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 step = dt * v[i];
+    if (affine) x[i].x() += dt * x[i].y();
+    x[i] += step;
+    tracked[i] += step;
+    max2 = std::max(max2, tracked[i].squaredNorm());
+  }
+  max_nonaffine_ = std::sqrt(max2);
+}
+
 void ContactSystem::rebuild() {
+  for (auto& x : particles_.position) box_.wrap(x);
   const auto order = neighbours_.spatial_order(box_, particles_.position, particles_.max_radius());
   particles_.permute(order);
   neighbours_.build(box_, particles_.position, particles_.radius);
@@ -34,9 +54,14 @@ bool ContactSystem::ensure_neighbours(double extra_nonaffine, double strain) {
 }
 
 const ContactField& ContactSystem::compute_forces(const ForceRequest& request) {
-  compute_contact_forces(*law_, box_, particles_.position, particles_.radius, neighbours_, request,
-                         field_);
+  compute_contact_forces(*law_, box_, particles_.position, neighbours_, request, field_);
   return field_;
+}
+
+Particles ContactSystem::wrapped_in_label_order() const {
+  Particles p = particles_.in_label_order();
+  for (auto& x : p.position) box_.wrap(x);
+  return p;
 }
 
 void ContactSystem::set_strain(double strain) {
@@ -53,13 +78,18 @@ void ContactSystem::rescale(double factor) {
   rebuild();
 }
 
-void ContactSystem::restore_tracking(Tracking t) {
-  nonaffine_ = std::move(t.nonaffine);
-  max_nonaffine_ = t.max_nonaffine;
+void ContactSystem::save_tracking(Tracking& into) const {
+  into.nonaffine.assign(nonaffine_.begin(), nonaffine_.end());
+  into.max_nonaffine = max_nonaffine_;
+}
+
+void ContactSystem::restore_tracking(const Tracking& from) {
+  nonaffine_.assign(from.nonaffine.begin(), from.nonaffine.end());
+  max_nonaffine_ = from.max_nonaffine;
 }
 
 void ContactSystem::restore_positions(const std::vector<Vec3>& x, double strain) {
-  particles_.position = x;
+  particles_.position.assign(x.begin(), x.end());
   box_.set_strain(strain);
 }
 

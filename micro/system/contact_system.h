@@ -3,14 +3,14 @@
 // and evaluates.
 //
 // It owns the neighbour list and keeps it valid: integrators announce how far
-// they are about to move (`ensure_neighbours`), move particles through
-// `move_all`, which records the non-affine part of each displacement, and the
+// they are about to move (`ensure_neighbours`), move particles through `move`,
+// which records the non-affine part of each displacement, and the
 // list is rebuilt — with the particles reordered cell by cell for locality —
 // only when the bound of neighbour_list.h says a contact could be missed.
 #pragma once
 
-#include <algorithm>
 #include <memory>
+#include <span>
 
 #include "micro/contact/contact_law.h"
 #include "micro/forces/contact_forces.h"
@@ -24,8 +24,11 @@ class ContactSystem {
   ContactSystem(Particles particles, LeesEdwardsBox box, std::shared_ptr<const ContactLaw> law,
                 double skin);
 
+  /// Particles in the engine's order, positions not necessarily in the cell.
   const Particles& particles() const { return particles_; }
   Particles& particles() { return particles_; }
+  /// Particles in label order with positions wrapped into the cell: for output.
+  Particles wrapped_in_label_order() const;
   const LeesEdwardsBox& box() const { return box_; }
   const ContactLaw& law() const { return *law_; }
   std::shared_ptr<const ContactLaw> shared_law() const { return law_; }
@@ -46,10 +49,11 @@ class ContactSystem {
     return ensure_neighbours(extra_nonaffine, box_.strain());
   }
 
-  /// Moves every particle: `step(i)` returns {displacement, its non-affine part}.
-  /// Positions are wrapped into the cell; the caller advances the strain.
-  template <class Step>
-  void move_all(Step&& step);
+  /// Moves every particle by dt v_i, plus the affine displacement dt y_i e_x if
+  /// `affine` (shear at unit rate); v_i dt is the non-affine part the list
+  /// tracks. Positions move continuously (they are wrapped into the cell when
+  /// the list is rebuilt); the caller advances the strain.
+  void move(double dt, std::span<const Vec3> v, bool affine);
 
   void advance_strain(double increment) { box_.advance_strain(increment); }
   void set_strain(double strain);
@@ -64,8 +68,8 @@ class ContactSystem {
     std::vector<Vec3> nonaffine;
     double max_nonaffine;
   };
-  Tracking tracking() const { return {nonaffine_, max_nonaffine_}; }
-  void restore_tracking(Tracking t);
+  void save_tracking(Tracking& into) const;
+  void restore_tracking(const Tracking& from);
   void restore_positions(const std::vector<Vec3>& x, double strain);
 
   std::size_t memory_bytes() const;
@@ -81,20 +85,5 @@ class ContactSystem {
   std::vector<Vec3> nonaffine_;  // since the last build
   double max_nonaffine_ = 0.0;
 };
-
-template <class Step>
-void ContactSystem::move_all(Step&& step) {
-  const std::size_t n = size();
-  double max2 = max_nonaffine_ * max_nonaffine_;
-#pragma omp parallel for schedule(static) reduction(max : max2) if (n >= 4096)
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto [displacement, nonaffine] = step(i);
-    particles_.position[i] += displacement;
-    box_.wrap(particles_.position[i]);
-    nonaffine_[i] += nonaffine;
-    max2 = std::max(max2, nonaffine_[i].squaredNorm());
-  }
-  max_nonaffine_ = std::sqrt(max2);
-}
 
 }  // namespace softglass::micro

@@ -48,23 +48,22 @@ class LeesEdwardsBox {
     wrap_periodic(x.z());
   }
 
-  /// Nearest-image separation for d = x_α − x_β, both in the primary cell.
-  /// Components start within (−L, L) and the offset shift adds at most L, so two
-  /// conditional corrections suffice (no rounding call on the hot path).
+  /// Nearest-image separation d = x_α − x_β for any two positions (wrapped or
+  /// not). Used when building neighbour lists and in tests; the force loop uses
+  /// the images stored in the list instead.
   Vec3 minimum_image(Vec3 d) const {
-    if (d.y() > half_) {
+    while (d.y() > half_) {
       d.y() -= side_;
       d.x() -= offset_;
-    } else if (d.y() < -half_) {
+    }
+    while (d.y() < -half_) {
       d.y() += side_;
       d.x() += offset_;
     }
-    for (int pass = 0; pass < 2; ++pass) {
-      if (d.x() > half_) d.x() -= side_;
-      else if (d.x() < -half_) d.x() += side_;
-    }
-    if (d.z() > half_) d.z() -= side_;
-    else if (d.z() < -half_) d.z() += side_;
+    while (d.x() > half_) d.x() -= side_;
+    while (d.x() < -half_) d.x() += side_;
+    while (d.z() > half_) d.z() -= side_;
+    while (d.z() < -half_) d.z() += side_;
     return d;
   }
 

@@ -54,7 +54,7 @@ RunRecord small_record() {
   ShearRecord shear;
   shear.gamma_tilde = model.gamma_tilde;
   shear.result = run_shear(flow, *integrator, protocol);
-  shear.final_particles = flow.system().particles().in_label_order();
+  shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();
   record.shear = std::move(shear);
   record.timings = {.packing = 1.5, .modulus = 0.25, .shear = 2.0, .total = 3.75, .threads = 2};
