@@ -101,11 +101,11 @@ void print_shear(const ShearRecord& s, double particles) {
   }
   const ShearCounters& c = r.counters;
   fmt::print("         sigma^e/sigma^v = {:.1f}, Z = {:.3f}\n", m.elastic_to_viscous, m.coordination);
-  fmt::print("cost     {} steps ({} rejected), {} list builds, {:.2f} Newton and {:.2f} CG per "
-             "evaluation, {:.1f} s, {:.3g} particle-steps/s\n",
-             c.steps, c.rejected_steps, c.neighbour_builds,
-             double(c.newton_iterations) / double(std::max<std::size_t>(c.evaluations, 1)),
-             double(c.cg_iterations) / double(std::max<std::size_t>(c.evaluations, 1)), r.seconds,
+  const double evaluations = double(std::max<std::size_t>(c.evaluations, 1));
+  fmt::print("cost     {} steps ({} rejected), {} list builds; per evaluation {:.2f} fixed-point "
+             "sweeps, {:.2f} Newton and {:.2f} CG iterations; {:.1f} s, {:.3g} particle-steps/s\n",
+             c.steps, c.rejected_steps, c.neighbour_builds, double(c.fixed_point_sweeps) / evaluations,
+             double(c.newton_iterations) / evaluations, double(c.cg_iterations) / evaluations, r.seconds,
              particles * double(c.evaluations) / std::max(r.seconds, 1e-9));
 }
 

@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <tuple>
+#include <utility>
 #include <limits>
 
 #include "common/errors.h"
@@ -94,7 +96,9 @@ void EhdDrag::gradient_at(const ContactList& c, std::span<const double> friction
     w[k] = g - n * n.dot(g);
     const double speed = w[k].norm();
     // ∂/∂w of ⅔ a |w|^{3/2} = a |w|^{1/2} ŵ = a w / |w|^{1/2}
-    scratch_[k] = speed > 0.0 ? Vec3(w[k] * (geometry_.coefficient[k] / std::sqrt(speed))) : Vec3::Zero();
+    const double secant = speed > 0.0 ? geometry_.coefficient[k] / std::sqrt(speed) : 0.0;
+    scratch_[k] = w[k] * secant;
+    secant_[k] = secant;
   }
   for (std::size_t a = 0; a < v.size(); ++a) gradient[a] = friction[a] * v[a] - force[a];
   gather(scratch_, gradient);
@@ -212,6 +216,7 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
   prepare(c, gamma_tilde);
   build_incidence(c, n);
   for (auto* vec : {&w_trial_, &unit_w_}) vec->resize(m);
+  secant_.resize(m);
   for (auto* vec : {&gradient_, &gradient_trial_, &trial_, &step_, &r_, &z_, &p_, &hp_}) vec->resize(n);
   block_inverse_.resize(n);
   s_.resize(m);
@@ -225,17 +230,48 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
     return stats;
   }
 
-  // Curvature of each contact's drag term along ŵ: the majoriser (θ = 0) until
-  // the contact's |w| settles, then the exact Hessian (θ = ½); see the header.
+  // Fixed-point sweeps while each at least halves the residual: one contact pass
+  // each, and when the drag is weaker than the friction (γ̃ ≳ 1e-6) a few suffice
+  // (see the header).
+  const auto relative_residual = [&](const std::vector<Vec3>& gradient, std::span<const Vec3> at) {
+    double residual = 0.0, scale = 1.0;
+    for (std::size_t a = 0; a < n; ++a) {
+      residual = std::max(residual, gradient[a].norm() / friction[a]);
+      scale = std::max(scale, at[a].norm());
+    }
+    return std::pair{residual / scale, scale};
+  };
+  auto [residual, scale] = relative_residual(gradient_, v);
+  while (residual > settings_.tolerance) {
+    // Nonlinear Jacobi: each particle's own stiffness, friction plus ¾ of the
+    // secant stiffness a/√|w| of its contacts' drag (the drag's curvature is ½
+    // of it along the slip and all of it across; ¾ measured best: 4.3 sweeps
+    // per evaluation at γ̃ = 1e-4 against 6.3 with the friction alone).
+    for (std::size_t a = 0; a < n; ++a) {
+      double local = 0.0;
+      for (std::size_t e = incidence_start_[a]; e < incidence_start_[a + 1]; ++e) {
+        local += secant_[incidence_[e] >> 1];
+      }
+      trial_[a] = v[a] - gradient_[a] / (friction[a] + 0.75 * local);
+    }
+    gradient_at(c, friction, force, trial_, w_trial_, gradient_trial_);
+    const auto [trial_residual, trial_scale] = relative_residual(gradient_trial_, trial_);
+    if (trial_residual > 0.5 * residual) break;
+    std::copy(trial_.begin(), trial_.end(), v.begin());
+    w_.swap(w_trial_);
+    gradient_.swap(gradient_trial_);
+    residual = trial_residual, scale = trial_scale;
+    ++stats.fixed_point_sweeps;
+  }
+
+  // Newton. Curvature of each contact's drag term along ŵ: exact (θ = ½) to
+  // start with (the solve is warm-started), the majoriser (θ = 0) while the
+  // contact's |w| shrinks fast; see the header.
   relief_.assign(m, 0.0);
   double first_norm = 0.0;
   for (int it = 0;; ++it) {
-    double residual = 0.0, scale = 1.0;
-    for (std::size_t a = 0; a < n; ++a) {
-      residual = std::max(residual, gradient_[a].norm() / friction[a]);
-      scale = std::max(scale, v[a].norm());
-    }
-    stats.residual = residual / scale;
+    if (it > 0) std::tie(residual, scale) = relative_residual(gradient_, v);
+    stats.residual = residual;
     if (stats.residual <= settings_.tolerance) return stats;
     if (it == settings_.max_newton_iterations) {
       throw NumericalError(fmt::format(
@@ -263,9 +299,13 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
       if (change.value <= kArmijo * t * slope) break;
       if (std::abs(change.value) <= change.rounding && dot(gradient_trial_, gradient_trial_) < gnorm * gnorm) break;
     }
+    // The majoriser for contacts whose |w| shrinks fast, and for every shrinking
+    // contact when the iteration made poor progress (a crawl).
+    const double progress = relative_residual(gradient_trial_, trial_).first / residual;
+    const double keep = progress > 0.5 ? 1.0 : 0.9;
     for (std::size_t k = 0; k < m; ++k) {
       const double before = w_[k].norm(), after = w_trial_[k].norm();
-      relief_[k] = after > 0.9 * before ? 0.5 : 0.0;
+      relief_[k] = after >= keep * before ? 0.5 : 0.0;
     }
     std::copy(trial_.begin(), trial_.end(), v.begin());
     w_.swap(w_trial_);

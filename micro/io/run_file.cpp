@@ -103,6 +103,7 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   c.set_attribute("rejected_steps", static_cast<std::int64_t>(k.rejected_steps));
   c.set_attribute("evaluations", static_cast<std::int64_t>(k.evaluations));
   c.set_attribute("neighbour_builds", static_cast<std::int64_t>(k.neighbour_builds));
+  c.set_attribute("fixed_point_sweeps", static_cast<std::int64_t>(k.fixed_point_sweeps));
   c.set_attribute("newton_iterations", static_cast<std::int64_t>(k.newton_iterations));
   c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
   c.set_attribute("smallest_step", k.smallest_step);

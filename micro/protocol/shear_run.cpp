@@ -118,7 +118,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
   TimeSeries& series = result.series;
   const double start = flow.strain();
   const std::size_t builds_before = flow.system().neighbours().builds();
-  std::size_t newton = 0, cg = 0;
+  std::size_t sweeps = 0, newton = 0, cg = 0;
 
   flow.sample_stress_from(-std::numeric_limits<double>::infinity());
   flow.evaluate();  // the first sample
@@ -143,6 +143,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
   double worst = std::numeric_limits<double>::infinity();
   for (;;) {
     integrator.step(flow, next_sample - flow.strain());
+    sweeps += static_cast<std::size_t>(flow.last_solve().fixed_point_sweeps);
     newton += static_cast<std::size_t>(flow.last_solve().newton_iterations);
     cg += static_cast<std::size_t>(flow.last_solve().cg_iterations);
     if (flow.strain() < next_sample - 1e-9 * protocol.sample_interval) continue;
@@ -176,7 +177,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
 
   const IntegratorStats& stats = integrator.stats();
   result.counters = {stats.accepted, stats.rejected, flow.evaluations(),
-                     flow.system().neighbours().builds() - builds_before, newton, cg,
+                     flow.system().neighbours().builds() - builds_before, sweeps, newton, cg,
                      stats.smallest_step, stats.largest_step};
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;

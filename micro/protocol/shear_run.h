@@ -72,7 +72,7 @@ ShearSummary summarise(const TimeSeries& series, double min_stationary_strain);
 
 struct ShearCounters {
   std::size_t steps = 0, rejected_steps = 0, evaluations = 0, neighbour_builds = 0;
-  std::size_t newton_iterations = 0, cg_iterations = 0;
+  std::size_t fixed_point_sweeps = 0, newton_iterations = 0, cg_iterations = 0;
   double smallest_step = 0.0, largest_step = 0.0;
 };
 

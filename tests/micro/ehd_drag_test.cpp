@@ -334,3 +334,36 @@ TEST(EhdDrag, ConvergesOnAStronglyUnbalancedConfiguration) {
 
 }  // namespace
 }  // namespace softglass::micro
+
+namespace softglass::micro {
+namespace {
+
+// The same kind of hard case over many configurations and two mobility factors:
+// 22 seeds × f_r ∈ {0.1, 1} with the drag up to several times the friction.
+// Every solve must converge with the default settings (60 Newton iterations),
+// and the whole set within a Newton budget: 241 iterations were measured when
+// the contact curvature rule was chosen (pure Newton needed 720 and stalled).
+TEST(EhdDrag, ConvergesOnEveryHardConfiguration) {
+  int newton = 0;
+  for (double mobility : {0.1, 1.0}) {
+    for (std::uint64_t seed = 4242; seed < 4264; ++seed) {
+      const auto c = testing::random_configuration(200, 0.65, seed);
+      LeesEdwardsBox box(c.side);
+      box.set_strain(0.3);
+      ContactSystem system(Particles(c.position, c.radius), box, testing::named_law("seth2011"), 0.3);
+      const ContactField& field = system.compute_forces({.contacts = true});
+      const double gamma_tilde = 1e-4;
+      const std::vector<double> zeta = friction_of(system.particles(), gamma_tilde, mobility);
+      EhdDrag drag({});
+      std::vector<Vec3> v(system.size(), Vec3::Zero());
+      VelocitySolveStats stats;
+      ASSERT_NO_THROW(stats = drag.solve(field.contacts, gamma_tilde, zeta, field.force, v))
+          << "seed " << seed << ", f_r " << mobility;
+      newton += stats.newton_iterations;
+    }
+  }
+  EXPECT_LE(newton, 300);
+}
+
+}  // namespace
+}  // namespace softglass::micro
