@@ -244,4 +244,13 @@ SteadyStateAnalysis analyse_steady_state(const std::vector<std::span<const doubl
   return result;
 }
 
+double drift_statistic(std::span<const double> x) {
+  const std::size_t first = x.size() / 10, last = x.size() / 2;
+  if (first < kBlockingMinSamples) return 0.0;
+  const MeanEstimate a = block_average(x.first(first));
+  const MeanEstimate b = block_average(x.last(last));
+  const double spread = std::hypot(a.standard_error, b.standard_error);
+  return spread > 0.0 ? (a.mean - b.mean) / spread : 0.0;
+}
+
 }  // namespace softglass::micro

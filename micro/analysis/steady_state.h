@@ -105,6 +105,14 @@ struct MeanEstimate {
 /// be true although the error is too small.
 MeanEstimate block_average(std::span<const double> x);
 
+/// Geweke-type stationarity check of a series judged stationary: the mean of its
+/// first 10 % against that of its last 50 %, each with its blocking error,
+///     z = (m_first − m_last) / √(SE_first² + SE_last²).
+/// |z| > 3 says the "stationary" part still drifts — a slow transient, or a
+/// slow change of state such as shear-induced layering — which MSER and
+/// blocking alone do not catch. Returns 0 when a part is too short to judge.
+double drift_statistic(std::span<const double> x);
+
 /// Joint steady-state analysis of several observables recorded together.
 struct SteadyStateAnalysis {
   std::size_t total_samples = 0;         // length of every observable

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace softglass::micro {
 
@@ -18,5 +19,10 @@ void pack_command(const CommandOptions& options);
 
 /// Pack (or reuse a packing), shear at one γ̃ to a stationary state, summarise.
 void run_command(const CommandOptions& options);
+
+/// Average run files of one state point over their packings; print the table
+/// and, if `csv` is not empty, write it as CSV with units.
+void summary_command(const std::vector<std::filesystem::path>& runs, const std::filesystem::path& csv,
+                     bool force);
 
 }  // namespace softglass::micro

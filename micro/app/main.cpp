@@ -3,6 +3,7 @@
 //   micro pack FILE.prm      make and relax a packing, measure Z, ε, Π, G0
 //   micro run FILE.prm       pack, shear at one γ̃ until stationary, summarise
 //   micro template           print a documented parameter file
+//   micro summary A.h5 B.h5  average runs of one state point over packings
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
@@ -48,6 +49,12 @@ int main(int argc, char** argv) {
   CLI::App* run = app.add_subcommand("run", "pack, shear at one shear rate until stationary, summarise");
   add_run_options(run);
   CLI::App* tmpl = app.add_subcommand("template", "print a documented parameter file with all defaults");
+  CLI::App* summary = app.add_subcommand("summary", "average run files of one state point over their packings");
+  std::vector<std::filesystem::path> run_files;
+  std::string csv;
+  summary->add_option("run_files", run_files, "result files of `micro run` (HDF5)")->required();
+  summary->add_option("--csv", csv, "also write the table as CSV");
+  summary->add_flag("-f,--force", options.force, "overwrite an existing CSV file");
 
   try {
     app.parse(argc, argv);
@@ -62,6 +69,7 @@ int main(int argc, char** argv) {
     if (*tmpl) std::fputs(micro::parameter_template().c_str(), stdout);
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
+    if (*summary) micro::summary_command(run_files, csv, options.force);
   } catch (const InputError& e) {
     return fail(kExitBadInput, e.what());
   } catch (const OutputExistsError& e) {

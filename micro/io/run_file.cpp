@@ -77,6 +77,8 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   ts.write("stress_viscous", flatten(t.viscous), {t.size(), 3, 3},
            {"E*", "viscous (EHD) stress tensor sigma^v_ij, not symmetric, [sample][i][j]"});
   ts.write("coordination", t.coordination, {}, {"1", "Z = 2 x contacts / N"});
+  ts.write("layering", t.layering, {},
+           {"1", "S_y = max_m |sum exp(2 pi i m y/L)|^2 / N; about 3 when disordered, > 20 layered"});
   ts.write("step", t.step, {}, {"1", "last accepted integrator step (strain)"});
 
   H5Group sum = g.create_group("summary");
@@ -87,6 +89,9 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   sum.set_attribute("transient_resolved", static_cast<std::int64_t>(r.summary.transient_resolved));
   sum.set_attribute("elastic_to_viscous", r.summary.elastic_to_viscous);
   sum.set_attribute("coordination", r.summary.coordination);
+  sum.set_attribute("drift", r.summary.drift);
+  sum.set_attribute("layering", r.summary.layering);
+  sum.set_attribute("layered", static_cast<std::int64_t>(r.summary.layered()));
   for (const auto& o : r.summary.observables) {
     H5Group q = sum.create_group(o.name);
     q.set_attribute("mean", o.estimate.mean);
@@ -199,6 +204,7 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
   TimeSeries t;
   t.strain = ts.read_array("strain").data;
   t.coordination = ts.read_array("coordination").data;
+  t.layering = ts.read_array("layering").data;
   t.step = ts.read_array("step").data;
   const auto tensors = [&](const char* name) {
     const H5Array a = ts.read_array(name);
@@ -213,10 +219,42 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
   };
   t.elastic = tensors("stress_elastic");
   t.viscous = tensors("stress_viscous");
-  if (t.coordination.size() != t.size() || t.step.size() != t.size()) {
+  if (t.coordination.size() != t.size() || t.step.size() != t.size() || t.layering.size() != t.size()) {
     throw InputError(fmt::format("'{}': time-series datasets differ in length", path.string()));
   }
   return t;
+}
+
+StoredRunSummary read_run_summary(const std::filesystem::path& path) {
+  const H5File file = H5File::open(path);
+  const H5Group root = file.root();
+  if (!root.has_child("shear")) {
+    throw InputError(fmt::format("'{}' holds no sheared run (made by `micro pack`?)", path.string()));
+  }
+  const H5Group packing = root.group("packing");
+  const H5Group shear = root.group("shear");
+  const H5Group summary = shear.group("summary");
+  StoredRunSummary s;
+  s.file = path;
+  s.gamma_tilde = shear.read_scalar("gamma_tilde");
+  s.volume_fraction = packing.read_scalar("volume_fraction");
+  s.shear_modulus = packing.read_scalar("shear_modulus");
+  s.particles = static_cast<std::size_t>(packing.read_scalar("particles"));
+  s.converged = summary.attribute_int("converged") != 0;
+  s.averaged_strain = summary.attribute_double("averaged_strain");
+  s.coordination = summary.attribute_double("coordination");
+  s.layering = summary.attribute_double("layering");
+  for (const auto& name : shear_observable_names()) {
+    const H5Group q = summary.group(name);
+    MeanEstimate e;
+    e.mean = q.attribute_double("mean");
+    e.standard_error = q.attribute_double("standard_error");
+    e.samples = static_cast<std::size_t>(q.attribute_int("samples"));
+    e.block_size = static_cast<std::size_t>(q.attribute_int("block_size"));
+    e.reliable = q.attribute_int("reliable") != 0;
+    s.observables.push_back({name, e});
+  }
+  return s;
 }
 
 }  // namespace softglass::micro

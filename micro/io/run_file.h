@@ -57,4 +57,15 @@ StoredPacking read_packing(const std::filesystem::path& path);
 /// The stress history stored in a run file (for re-analysis).
 TimeSeries read_time_series(const std::filesystem::path& path);
 
+/// What a run concluded: its state point and steady-state summary.
+struct StoredRunSummary {
+  std::filesystem::path file;
+  double gamma_tilde = 0.0, volume_fraction = 0.0, shear_modulus = 0.0;
+  std::size_t particles = 0;
+  bool converged = false;
+  double averaged_strain = 0.0, coordination = 0.0, layering = 0.0;
+  std::vector<ObservableEstimate> observables;  // shear_observable_names() order
+};
+StoredRunSummary read_run_summary(const std::filesystem::path& path);
+
 }  // namespace softglass::micro

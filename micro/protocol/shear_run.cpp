@@ -9,12 +9,15 @@
 #include <stdexcept>
 
 #include "common/errors.h"
+#include "micro/analysis/layering.h"
 
 namespace softglass::micro {
 
 namespace {
 // The observables whose precision decides when to stop.
 constexpr const char* kStoppingObservables[] = {"sigma", "N1", "N2"};
+// Largest |z| of drift_statistic for a stationary part (3 standard errors).
+constexpr double kMaxDrift = 3.0;
 }  // namespace
 
 void ShearProtocol::validate() const {
@@ -68,6 +71,8 @@ const MeanEstimate& ShearSummary::operator[](const std::string& name) const {
   throw std::invalid_argument("no observable " + name);
 }
 
+bool ShearSummary::layered() const { return layering > kLayeredThreshold; }
+
 double ShearSummary::worst_relative_error() const {
   double worst = 0.0;
   for (const char* name : kStoppingObservables) {
@@ -104,9 +109,16 @@ ShearSummary summarise(const TimeSeries& series, double min_stationary_strain) {
   }
   const double viscous = summary["sigma_viscous"].mean;
   summary.elastic_to_viscous = viscous != 0.0 ? summary["sigma_elastic"].mean / viscous : 0.0;
-  double z = 0.0;
-  for (std::size_t k = first; k < series.size(); ++k) z += series.coordination[k];
+  double z = 0.0, layering = 0.0;
+  for (std::size_t k = first; k < series.size(); ++k) {
+    z += series.coordination[k];
+    layering += series.layering[k];
+  }
   summary.coordination = z / static_cast<double>(series.size() - first);
+  summary.layering = layering / static_cast<double>(series.size() - first);
+  for (const auto& observable : deciding) {
+    summary.drift = std::max(summary.drift, std::abs(drift_statistic(observable.subspan(first))));
+  }
   return summary;
 }
 
@@ -129,6 +141,8 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
     series.viscous.push_back(s.viscous);
     series.coordination.push_back(2.0 * static_cast<double>(flow.contact_count()) /
                                   static_cast<double>(flow.system().size()));
+    series.layering.push_back(
+        gradient_layering(flow.system().particles().position, flow.system().box().side()).order);
     series.step.push_back(integrator.stats().last_step);
   };
   record();
@@ -156,7 +170,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
       next_check += protocol.check_interval;
       result.summary = summarise(series, protocol.min_stationary_strain);
       worst = result.summary.worst_relative_error();
-      bool reliable = result.summary.transient_resolved;
+      bool reliable = result.summary.transient_resolved && result.summary.drift <= kMaxDrift;
       for (const char* name : kStoppingObservables) reliable = reliable && result.summary[name].reliable;
       if (reliable && worst <= protocol.target_relative_error) {
         result.converged = true;
@@ -168,9 +182,10 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
     if (sheared >= protocol.max_strain - 1e-9 * protocol.sample_interval) {
       result.summary = summarise(series, protocol.min_stationary_strain);
       result.stop_reason = fmt::format(
-          "maximum strain {} reached before the target error {} (worst {:.3g}){}", protocol.max_strain,
+          "maximum strain {} reached before the target error {} (worst {:.3g}){}{}", protocol.max_strain,
           protocol.target_relative_error, result.summary.worst_relative_error(),
-          result.summary.transient_resolved ? "" : "; the transient may not be over");
+          result.summary.transient_resolved ? "" : "; the transient may not be over",
+          result.summary.drift <= kMaxDrift ? "" : fmt::format("; the stresses drift (|z| = {:.1f})", result.summary.drift));
       break;
     }
   }

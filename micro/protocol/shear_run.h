@@ -8,7 +8,10 @@
 //   • at least `min_strain` has been sheared,
 //   • the transient is resolved and the stationary part spans `min_stationary_strain`,
 //   • every error bar is reliable and |SE/mean| ≤ `target_relative_error` for σ, N1, N2,
-// or, unconverged, at `max_strain`.
+//   • and the stationary part does not drift (drift_statistic, |z| ≤ 3),
+// or, unconverged, at `max_strain`. The layering order parameter S_y
+// (analysis/layering.h) is sampled with the stress, and a run whose stationary
+// mean exceeds kLayeredThreshold is flagged.
 #pragma once
 
 #include <Eigen/Core>
@@ -38,6 +41,7 @@ struct TimeSeries {
   std::vector<double> strain;
   std::vector<Eigen::Matrix3d> elastic, viscous;  // σ^e, σ^v (units of E*)
   std::vector<double> coordination;               // Z = 2 × contacts / N
+  std::vector<double> layering;                   // S_y, analysis/layering.h
   std::vector<double> step;                       // last accepted step (strain)
 
   std::size_t size() const { return strain.size(); }
@@ -61,6 +65,9 @@ struct ShearSummary {
   std::vector<ObservableEstimate> observables;  // in shear_observable_names() order
   double elastic_to_viscous = 0.0;              // σ^e / σ^v
   double coordination = 0.0;                    // mean Z over the stationary part
+  double drift = 0.0;                           // largest |z| of σ, N1, N2 (drift_statistic)
+  double layering = 0.0;                        // mean S_y over the stationary part
+  bool layered() const;
 
   const MeanEstimate& operator[](const std::string& name) const;
   /// Largest |SE/mean| among σ, N1, N2.

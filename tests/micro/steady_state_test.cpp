@@ -398,3 +398,28 @@ TEST(SteadyStateErrors, NonFiniteValuesAreReportedByIndex) {
 
 }  // namespace
 }  // namespace softglass::micro
+
+namespace softglass::micro {
+namespace {
+
+// drift_statistic: a stationary correlated series passes (|z| ≤ 3 in ~99.7 % of
+// draws if the errors are right, so 3 draws all pass with high probability),
+// and a drift of a few standard errors of the mean is caught.
+TEST(DriftStatistic, PassesStationaryAndCatchesDrift) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> normal;
+  for (int draw = 0; draw < 3; ++draw) {
+    std::vector<double> x(1 << 14);
+    double y = 0.0;
+    for (double& v : x) v = y = 0.9 * y + normal(rng);  // AR(1), τ ≈ 10 samples
+    EXPECT_LT(std::abs(drift_statistic(x)), 3.0) << "draw " << draw;
+    // Add a linear drift of 2 series standard deviations from start to end.
+    std::vector<double> drifting = x;
+    for (std::size_t k = 0; k < x.size(); ++k) drifting[k] += 2.0 * 2.3 * double(k) / double(x.size());
+    EXPECT_GT(std::abs(drift_statistic(drifting)), 3.0) << "draw " << draw;
+  }
+  EXPECT_EQ(drift_statistic(std::vector<double>(30, 1.0)), 0.0);  // too short to judge
+}
+
+}  // namespace
+}  // namespace softglass::micro

@@ -1,0 +1,81 @@
+#include "micro/analysis/packing_average.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "common/errors.h"
+
+namespace softglass::micro {
+
+namespace {
+
+struct MeanAndError {
+  double mean, error;  // error: sd/√K, 0 for K = 1
+};
+
+MeanAndError mean_of(const std::vector<double>& values) {
+  const double k = static_cast<double>(values.size());
+  double mean = 0.0;
+  for (double v : values) mean += v / k;
+  if (values.size() < 2) return {mean, 0.0};
+  double squares = 0.0;
+  for (double v : values) squares += (v - mean) * (v - mean);
+  return {mean, std::sqrt(squares / (k - 1.0) / k)};
+}
+
+bool same(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+
+}  // namespace
+
+const AveragedObservable& PackingAverage::operator[](const std::string& name) const {
+  for (const auto& o : observables)
+    if (o.name == name) return o;
+  throw std::invalid_argument("no observable " + name);
+}
+
+PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) {
+  if (runs.empty()) throw InputError("no run files to average");
+  const StoredRunSummary& first = runs.front();
+  for (const auto& r : runs) {
+    if (!same(r.gamma_tilde, first.gamma_tilde) || !same(r.volume_fraction, first.volume_fraction) ||
+        r.particles != first.particles) {
+      throw InputError(fmt::format(
+          "'{}' (gamma~ = {:.4g}, phi = {:.4f}, N = {}) is not at the state point of '{}' (gamma~ = "
+          "{:.4g}, phi = {:.4f}, N = {}); average runs of one state point only",
+          r.file.string(), r.gamma_tilde, r.volume_fraction, r.particles, first.file.string(),
+          first.gamma_tilde, first.volume_fraction, first.particles));
+    }
+  }
+
+  PackingAverage a;
+  a.runs = runs.size();
+  a.particles = first.particles;
+  a.gamma_tilde = first.gamma_tilde;
+  a.volume_fraction = first.volume_fraction;
+  std::vector<double> moduli;
+  for (const auto& r : runs) {
+    a.converged_runs += r.converged;
+    a.averaged_strain += r.averaged_strain;
+    moduli.push_back(r.shear_modulus);
+  }
+  const MeanAndError g = mean_of(moduli);
+  a.shear_modulus = g.mean;
+  a.shear_modulus_error = g.error;
+
+  const double k = static_cast<double>(runs.size());
+  for (std::size_t q = 0; q < first.observables.size(); ++q) {
+    std::vector<double> means;
+    double within2 = 0.0;
+    for (const auto& r : runs) {
+      means.push_back(r.observables[q].estimate.mean);
+      within2 += std::pow(r.observables[q].estimate.standard_error, 2);
+    }
+    const MeanAndError m = mean_of(means);
+    a.observables.push_back({first.observables[q].name, m.mean, std::sqrt(within2) / k, m.error});
+  }
+  return a;
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,40 @@
+// Averages over independent packings at one state point (φ, γ̃), the paper's
+// protocol (spec model.md §6.3: five packings per point).
+//
+// For each observable the packing average is the mean of the runs' means. Two
+// standard errors are reported: `within` from the runs' own (blocking) errors,
+// √(Σ SE_k²)/K, which knows only the time noise; and `between`, the standard
+// deviation of the run means over √K, which also holds the packing-to-packing
+// (disorder) scatter but is itself uncertain for few packings. The quoted error
+// is the larger of the two.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "micro/io/run_file.h"
+
+namespace softglass::micro {
+
+struct AveragedObservable {
+  std::string name;
+  double mean = 0.0;
+  double within = 0.0;   // from the runs' own standard errors
+  double between = 0.0;  // from the scatter of the run means (0 for one run)
+  double standard_error() const { return std::max(within, between); }
+};
+
+struct PackingAverage {
+  std::size_t runs = 0, converged_runs = 0, particles = 0;
+  double gamma_tilde = 0.0, volume_fraction = 0.0;
+  double shear_modulus = 0.0, shear_modulus_error = 0.0;  // mean and SE over packings
+  double averaged_strain = 0.0;                           // total over runs
+  std::vector<AveragedObservable> observables;            // shear_observable_names() order
+
+  const AveragedObservable& operator[](const std::string& name) const;
+};
+
+/// Throws InputError unless the runs share γ̃, φ and N.
+PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs);
+
+}  // namespace softglass::micro
