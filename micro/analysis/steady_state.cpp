@@ -247,10 +247,18 @@ SteadyStateAnalysis analyse_steady_state(const std::vector<std::span<const doubl
 double drift_statistic(std::span<const double> x) {
   const std::size_t first = x.size() / 10, last = x.size() / 2;
   if (first < kBlockingMinSamples) return 0.0;
-  const MeanEstimate a = block_average(x.first(first));
-  const MeanEstimate b = block_average(x.last(last));
-  const double spread = std::hypot(a.standard_error, b.standard_error);
-  return spread > 0.0 ? (a.mean - b.mean) / spread : 0.0;
+  const auto mean = [](std::span<const double> part) {
+    double sum = 0.0;
+    for (double v : part) sum += v;
+    return sum / static_cast<double>(part.size());
+  };
+  // Both segments' errors from the long-run variance of the last half, scaled
+  // to each length: blocking the short first segment alone underestimates its
+  // error, and the whole window's variance would absorb the drift itself.
+  const MeanEstimate tail = block_average(x.last(last));
+  const double ratio = static_cast<double>(last) / static_cast<double>(first);
+  const double spread = tail.standard_error * std::sqrt(ratio + 1.0);
+  return spread > 0.0 ? (mean(x.first(first)) - tail.mean) / spread : 0.0;
 }
 
 }  // namespace softglass::micro

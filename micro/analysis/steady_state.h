@@ -106,8 +106,12 @@ struct MeanEstimate {
 MeanEstimate block_average(std::span<const double> x);
 
 /// Geweke-type stationarity check of a series judged stationary: the mean of its
-/// first 10 % against that of its last 50 %, each with its blocking error,
-///     z = (m_first − m_last) / √(SE_first² + SE_last²).
+/// first 10 % against that of its last 50 %,
+///     z = (m_first − m_last) / (SE_last √(n_last/n_first + 1)),
+/// with SE_last the blocking error of the last half: both segments' errors come
+/// from its long-run variance (Geweke 1992), since blocking a short first
+/// segment alone underestimates its error when it spans few correlation times,
+/// and the whole window's variance would absorb the drift being tested.
 /// |z| > 3 says the "stationary" part still drifts — a slow transient, or a
 /// slow change of state such as shear-induced layering — which MSER and
 /// blocking alone do not catch. Returns 0 when a part is too short to judge.

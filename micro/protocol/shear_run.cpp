@@ -18,6 +18,8 @@ namespace {
 constexpr const char* kStoppingObservables[] = {"sigma", "N1", "N2"};
 // Largest |z| of drift_statistic for a stationary part (3 standard errors).
 constexpr double kMaxDrift = 3.0;
+// Strain over which S_y is averaged to decide that a sample has layered.
+constexpr double kLayeringWindow = 2.0;
 }  // namespace
 
 void ShearProtocol::validate() const {
@@ -175,6 +177,17 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
       if (reliable && worst <= protocol.target_relative_error) {
         result.converged = true;
         result.stop_reason = fmt::format("stationary, relative standard errors ≤ {:.3g}", worst);
+        break;
+      }
+      // A sample that has layered is no longer a glass: stop, unconverged.
+      const std::size_t window = std::min(series.size(), static_cast<std::size_t>(std::ceil(
+                                                             kLayeringWindow / protocol.sample_interval)));
+      double recent = 0.0;
+      for (std::size_t k = series.size() - window; k < series.size(); ++k) recent += series.layering[k] / window;
+      if (recent > kLayeredThreshold) {
+        result.stop_reason = fmt::format(
+            "the sample layered under shear (S_y = {:.0f} over the last {} strain, threshold {:.0f})", recent,
+            kLayeringWindow, kLayeredThreshold);
         break;
       }
     }

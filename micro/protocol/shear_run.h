@@ -9,9 +9,10 @@
 //   • the transient is resolved and the stationary part spans `min_stationary_strain`,
 //   • every error bar is reliable and |SE/mean| ≤ `target_relative_error` for σ, N1, N2,
 //   • and the stationary part does not drift (drift_statistic, |z| ≤ 3),
-// or, unconverged, at `max_strain`. The layering order parameter S_y
-// (analysis/layering.h) is sampled with the stress, and a run whose stationary
-// mean exceeds kLayeredThreshold is flagged.
+// or, unconverged, at `max_strain`, or when the sample has layered: the layering
+// order parameter S_y (analysis/layering.h) is sampled with the stress, and a
+// run stops when its mean over the last 2 strain exceeds kLayeredThreshold
+// (at δ = 10 %, γ̃ = 1e-4 this happens after 20–30 strain, whatever N).
 #pragma once
 
 #include <Eigen/Core>
