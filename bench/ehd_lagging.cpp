@@ -6,8 +6,8 @@
 // and records their error against the solved ones, relative to the velocity
 // scale max|v|. Then a run with `coupling = lagged` from the same packing gives
 // the stresses to compare. Output: `key value` lines.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -56,7 +56,8 @@ int main(int argc, char** argv) {
       const ContactField& field = flow.system().forces();
       friction.resize(previous.size());
       const double per_radius = 6.0 * std::numbers::pi * gamma_tilde / model.mobility_factor;
-      for (std::size_t a = 0; a < friction.size(); ++a) friction[a] = per_radius * flow.system().particles().radius[a];
+      for (std::size_t a = 0; a < friction.size(); ++a)
+        friction[a] = per_radius * flow.system().particles().radius[a];
       std::vector<Vec3> v = previous;
       lagged.solve(field.contacts, gamma_tilde, friction, field.force, v);
       double scale = 1.0, error = 0.0;
@@ -70,7 +71,8 @@ int main(int argc, char** argv) {
     }
     fmt::print("gamma_tilde {:.1e}\n", gamma_tilde);
     fmt::print("lagged_velocity_error_max {:.3e}\n", worst);
-    fmt::print("lagged_velocity_error_rms {:.3e}\n", std::sqrt(sum2 / double(std::max<std::size_t>(steps, 1))));
+    fmt::print("lagged_velocity_error_rms {:.3e}\n",
+               std::sqrt(sum2 / double(std::max<std::size_t>(steps, 1))));
     fmt::print("steps {}\n", steps);
   }
 

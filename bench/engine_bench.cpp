@@ -8,9 +8,9 @@
 // minimisation. The sheared dynamics then runs for `--steps` steps of fixed
 // strain `--strain-per-step` (the step the peer takes), and only that part is
 // timed. Output: one `key value` per line.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <omp.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <fstream>
@@ -48,8 +48,8 @@ Packing tile(const Packing& base, int k) {
           tiled.position.push_back(base.particles.position[i] + side * Vec3(a, b, c));
           tiled.radius.push_back(base.particles.radius[i]);
         }
-  Packing out{Particles(std::move(tiled.position), std::move(tiled.radius)), LeesEdwardsBox(k * side),
-              base.report};
+  Packing out{Particles(std::move(tiled.position), std::move(tiled.radius)),
+              LeesEdwardsBox(k * side), base.report};
   return out;
 }
 
@@ -98,9 +98,11 @@ int main(int argc, char** argv) {
   const std::size_t builds_before = flow.system().neighbours().builds();
   const auto start = std::chrono::steady_clock::now();
   for (int s = 0; s < steps; ++s) integrator->step(flow, strain_per_step);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const double evaluations = static_cast<double>(integrator->stats().accepted + integrator->stats().rejected - 1);
+  const double evaluations =
+      static_cast<double>(integrator->stats().accepted + integrator->stats().rejected - 1);
   fmt::print("particles {}\n", n);
   fmt::print("threads {}\n", threads);
   fmt::print("steps {}\n", steps);
@@ -116,6 +118,7 @@ int main(int argc, char** argv) {
   fmt::print("ns_per_particle_step {:.2f}\n", 1e9 * seconds / (static_cast<double>(n) * steps));
   fmt::print("engine_bytes_per_particle {:.1f}\n",
              static_cast<double>(flow.system().memory_bytes()) / static_cast<double>(n));
-  fmt::print("peak_rss_bytes_per_particle {:.1f}\n", peak_resident_bytes() / static_cast<double>(n));
+  fmt::print("peak_rss_bytes_per_particle {:.1f}\n",
+             peak_resident_bytes() / static_cast<double>(n));
   return 0;
 }

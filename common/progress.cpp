@@ -25,7 +25,9 @@ Progress::Progress(std::string label, double total, bool quiet)
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::update(double done, const std::string& note) {
   if (quiet_ || finished_) return;
@@ -33,9 +35,9 @@ void Progress::update(double done, const std::string& note) {
   const double fraction = total_ > 0 ? std::clamp(done / total_, 0.0, 1.0) : 0.0;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double left = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : NAN;
-  const std::string text = fmt::format("{} {:5.1f}%  {}  left {}{}{}", label_, 100.0 * fraction,
-                                       format_duration(elapsed), format_duration(left),
-                                       note.empty() ? "" : "  ", note);
+  const std::string text =
+      fmt::format("{} {:5.1f}%  {}  left {}{}{}", label_, 100.0 * fraction,
+                  format_duration(elapsed), format_duration(left), note.empty() ? "" : "  ", note);
   if (terminal_) {
     if (now - last_draw_ < std::chrono::milliseconds(200) && fraction < 1.0) return;
     constexpr int kWidth = 24;

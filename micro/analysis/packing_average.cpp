@@ -25,7 +25,9 @@ MeanAndError mean_of(const std::vector<double>& values) {
   return {mean, std::sqrt(squares / (k - 1.0) / k)};
 }
 
-bool same(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+bool same(double a, double b) {
+  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
 
 }  // namespace
 
@@ -39,10 +41,11 @@ PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) 
   if (runs.empty()) throw InputError("no run files to average");
   const StoredRunSummary& first = runs.front();
   for (const auto& r : runs) {
-    if (!same(r.gamma_tilde, first.gamma_tilde) || !same(r.volume_fraction, first.volume_fraction) ||
-        r.particles != first.particles) {
+    if (!same(r.gamma_tilde, first.gamma_tilde) ||
+        !same(r.volume_fraction, first.volume_fraction) || r.particles != first.particles) {
       throw InputError(fmt::format(
-          "'{}' (gamma~ = {:.4g}, phi = {:.4f}, N = {}) is not at the state point of '{}' (gamma~ = "
+          "'{}' (gamma~ = {:.4g}, phi = {:.4f}, N = {}) is not at the state point of '{}' (gamma~ "
+          "= "
           "{:.4g}, phi = {:.4f}, N = {}); average runs of one state point only",
           r.file.string(), r.gamma_tilde, r.volume_fraction, r.particles, first.file.string(),
           first.gamma_tilde, first.volume_fraction, first.particles));

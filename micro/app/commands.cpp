@@ -78,9 +78,9 @@ void print_packing(const RunRecord& r, const MicroParameters& prm) {
   const PackingReport& k = r.packing;
   fmt::print("packing  N = {}, phi = {:.4f}, L = {:.3f} R, law {}, seed {}\n", k.particles,
              k.volume_fraction, k.side, prm.contact_law.name, prm.packing.seed);
-  fmt::print("         Z = {:.3f} (backbone {:.3f}, {} rattlers), <eps> = {:.4f}, max eps = {:.4f}\n",
-             k.coordination, k.coordination_nonrattler, k.rattlers, k.mean_deformation,
-             k.max_deformation);
+  fmt::print(
+      "         Z = {:.3f} (backbone {:.3f}, {} rattlers), <eps> = {:.4f}, max eps = {:.4f}\n",
+      k.coordination, k.coordination_nonrattler, k.rattlers, k.mean_deformation, k.max_deformation);
   fmt::print("         Pi = {:.4e} E*, G0 = {:.4e} E* (affine {:.4e}), residual {:.1e}{}\n",
              k.pressure, r.modulus.modulus, r.modulus.affine_modulus, k.residual,
              k.converged ? "" : "  NOT CONVERGED");
@@ -103,20 +103,23 @@ void print_shear(const ShearRecord& s, double particles) {
                m[b + "_elastic"].mean, m[b + "_viscous"].mean);
   }
   const ShearCounters& c = r.counters;
-  fmt::print("         sigma^e/sigma^v = {:.1f}, Z = {:.3f}, layering S_y = {:.1f}, drift |z| = {:.1f}\n",
-             m.elastic_to_viscous, m.coordination, m.layering, m.drift);
+  fmt::print(
+      "         sigma^e/sigma^v = {:.1f}, Z = {:.3f}, layering S_y = {:.1f}, drift |z| = {:.1f}\n",
+      m.elastic_to_viscous, m.coordination, m.layering, m.drift);
   if (m.layered()) {
-    fmt::print("WARNING  the sample has layered under shear (S_y = {:.0f} > {:.0f}): these are the "
-               "stresses of sliding layers, not of a glass; use more particles or a wider radius "
-               "distribution\n",
-               m.layering, kLayeredThreshold);
+    fmt::print(
+        "WARNING  the sample has layered under shear (S_y = {:.0f} > {:.0f}): these are the "
+        "stresses of sliding layers, not of a glass; use more particles or a wider radius "
+        "distribution\n",
+        m.layering, kLayeredThreshold);
   }
   const double evaluations = double(std::max<std::size_t>(c.evaluations, 1));
-  fmt::print("cost     {} steps ({} rejected), {} list builds; per evaluation {:.2f} fixed-point "
-             "sweeps, {:.2f} Newton and {:.2f} CG iterations; {:.1f} s, {:.3g} particle-steps/s\n",
-             c.steps, c.rejected_steps, c.neighbour_builds, double(c.fixed_point_sweeps) / evaluations,
-             double(c.newton_iterations) / evaluations, double(c.cg_iterations) / evaluations, r.seconds,
-             particles * double(c.evaluations) / std::max(r.seconds, 1e-9));
+  fmt::print(
+      "cost     {} steps ({} rejected), {} list builds; per evaluation {:.2f} fixed-point "
+      "sweeps, {:.2f} Newton and {:.2f} CG iterations; {:.1f} s, {:.3g} particle-steps/s\n",
+      c.steps, c.rejected_steps, c.neighbour_builds, double(c.fixed_point_sweeps) / evaluations,
+      double(c.newton_iterations) / evaluations, double(c.cg_iterations) / evaluations, r.seconds,
+      particles * double(c.evaluations) / std::max(r.seconds, 1e-9));
 }
 
 void finish(RunRecord& record, AtomicOutput& out, Clock::time_point start) {
@@ -166,20 +169,21 @@ void run_command(const CommandOptions& options) {
   finish(record, *out, start);
 }
 
-void summary_command(const std::vector<std::filesystem::path>& runs, const std::filesystem::path& csv,
-                     bool force) {
+void summary_command(const std::vector<std::filesystem::path>& runs,
+                     const std::filesystem::path& csv, bool force) {
   std::optional<AtomicOutput> out;
   if (!csv.empty()) out.emplace(csv, force);  // refuse early, before reading
   std::vector<StoredRunSummary> summaries;
   for (const auto& file : runs) summaries.push_back(read_run_summary(file));
   const PackingAverage a = average_over_packings(summaries);
 
-  fmt::print("phi = {:.4f}, gamma~ = {:.4e}, N = {}: {} packings ({} converged), {:.1f} strain "
-             "averaged in all\n",
-             a.volume_fraction, a.gamma_tilde, a.particles, a.runs, a.converged_runs, a.averaged_strain);
+  fmt::print(
+      "phi = {:.4f}, gamma~ = {:.4e}, N = {}: {} packings ({} converged), {:.1f} strain "
+      "averaged in all\n",
+      a.volume_fraction, a.gamma_tilde, a.particles, a.runs, a.converged_runs, a.averaged_strain);
   fmt::print("G0 = {:.5e} ± {:.2e} E*\n", a.shear_modulus, a.shear_modulus_error);
-  fmt::print("{:<18} {:>13} {:>10} {:>7} {:>10} {:>10}\n", "observable (E*)", "mean", "std.err", "rel.",
-             "within", "between");
+  fmt::print("{:<18} {:>13} {:>10} {:>7} {:>10} {:>10}\n", "observable (E*)", "mean", "std.err",
+             "rel.", "within", "between");
   for (const auto& o : a.observables) {
     fmt::print("{:<18} {:>13.5e} {:>10.2e} {:>6.1f}% {:>10.2e} {:>10.2e}\n", o.name, o.mean,
                o.standard_error(), o.mean != 0 ? 100 * std::abs(o.standard_error() / o.mean) : 0.0,
@@ -189,7 +193,8 @@ void summary_command(const std::vector<std::filesystem::path>& runs, const std::
   if (viscous != 0.0) fmt::print("sigma^e/sigma^v = {:.1f}\n", a["sigma_elastic"].mean / viscous);
   for (const auto& run : summaries) {
     if (run.layering > kLayeredThreshold) {
-      fmt::print("WARNING  {} has layered under shear (S_y = {:.0f})\n", run.file.string(), run.layering);
+      fmt::print("WARNING  {} has layered under shear (S_y = {:.0f})\n", run.file.string(),
+                 run.layering);
     }
   }
 
@@ -198,8 +203,8 @@ void summary_command(const std::vector<std::filesystem::path>& runs, const std::
       std::ofstream f(out->temporary_path());
       f << "observable,mean [E*],standard_error [E*],within_runs [E*],between_packings [E*]\n";
       for (const auto& o : a.observables) {
-        f << fmt::format("{},{:.10e},{:.4e},{:.4e},{:.4e}\n", o.name, o.mean, o.standard_error(), o.within,
-                         o.between);
+        f << fmt::format("{},{:.10e},{:.4e},{:.4e},{:.4e}\n", o.name, o.mean, o.standard_error(),
+                         o.within, o.between);
       }
       if (!f) throw std::runtime_error("writing " + out->temporary_path().string() + " failed");
     }

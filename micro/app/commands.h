@@ -22,7 +22,7 @@ void run_command(const CommandOptions& options);
 
 /// Average run files of one state point over their packings; print the table
 /// and, if `csv` is not empty, write it as CSV with units.
-void summary_command(const std::vector<std::filesystem::path>& runs, const std::filesystem::path& csv,
-                     bool force);
+void summary_command(const std::vector<std::filesystem::path>& runs,
+                     const std::filesystem::path& csv, bool force);
 
 }  // namespace softglass::micro

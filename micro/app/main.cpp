@@ -7,9 +7,9 @@
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <omp.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 
@@ -29,12 +29,15 @@ int fail(int code, const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace softglass;
-  CLI::App app{"softglass micro: overdamped simulations of sheared soft particle glasses "
-               "(Seth et al., Nature Materials 2011)", "micro"};
+  CLI::App app{
+      "softglass micro: overdamped simulations of sheared soft particle glasses "
+      "(Seth et al., Nature Materials 2011)",
+      "micro"};
   app.set_version_flag("--version", fmt::format("softglass micro {} ({})", kVersion, kGitRevision));
   app.require_subcommand(1);
   int threads = 0;
-  app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
 
   micro::CommandOptions options;
   std::string output;
@@ -46,10 +49,13 @@ int main(int argc, char** argv) {
   };
   CLI::App* pack = app.add_subcommand("pack", "make and relax a packing; measure Z, eps, Pi, G0");
   add_run_options(pack);
-  CLI::App* run = app.add_subcommand("run", "pack, shear at one shear rate until stationary, summarise");
+  CLI::App* run =
+      app.add_subcommand("run", "pack, shear at one shear rate until stationary, summarise");
   add_run_options(run);
-  CLI::App* tmpl = app.add_subcommand("template", "print a documented parameter file with all defaults");
-  CLI::App* summary = app.add_subcommand("summary", "average run files of one state point over their packings");
+  CLI::App* tmpl =
+      app.add_subcommand("template", "print a documented parameter file with all defaults");
+  CLI::App* summary =
+      app.add_subcommand("summary", "average run files of one state point over their packings");
   std::vector<std::filesystem::path> run_files;
   std::string csv;
   summary->add_option("run_files", run_files, "result files of `micro run` (HDF5)")->required();

@@ -31,7 +31,8 @@ struct Entries {
 template <class T>
 void entry(ParameterHandler& prm, const std::string& name, T& value, const std::string& doc,
            const Patterns::PatternBase& pattern) {
-  prm.add_parameter(name, value, doc + " Allowed: " + pattern.description(Patterns::PatternBase::Text) + ".",
+  prm.add_parameter(name, value,
+                    doc + " Allowed: " + pattern.description(Patterns::PatternBase::Text) + ".",
                     pattern);
 }
 
@@ -40,117 +41,112 @@ void declare(ParameterHandler& prm, Entries& e) {
   prm.enter_subsection("particles");
   entry(prm, "number", e.particles, "Number of particles N.", Patterns::Integer(2, 50000000));
   entry(prm, "volume fraction", p.packing.volume_fraction,
-                    "phi = sum (4/3) pi R^3 / V; soft glasses live above random close packing "
-                    "(0.64). The paper studies 0.70 ... 0.90.",
-                    Patterns::Double(0.64, 0.95));
+        "phi = sum (4/3) pi R^3 / V; soft glasses live above random close packing "
+        "(0.64). The paper studies 0.70 ... 0.90.",
+        Patterns::Double(0.64, 0.95));
   entry(prm, "polydispersity", p.packing.radii.polydispersity,
-                    "Standard deviation / mean of the radius (the paper: 0.10).",
-                    Patterns::Double(0.0, 0.3));
+        "Standard deviation / mean of the radius (the paper: 0.10).", Patterns::Double(0.0, 0.3));
   entry(prm, "distribution", e.distribution, "Shape of the radius distribution.",
-                    Patterns::Selection("gaussian|uniform|lognormal|bidisperse"));
+        Patterns::Selection("gaussian|uniform|lognormal|bidisperse"));
   entry(prm, "truncation", p.packing.radii.truncation_sigmas,
-                    "Gaussian and lognormal radii are cut at this many standard deviations.",
-                    Patterns::Double(1.0, 5.0));
-  entry(prm, "seed", e.seed, "Seed of every random number of the packing.",
-                    Patterns::Integer(0));
+        "Gaussian and lognormal radii are cut at this many standard deviations.",
+        Patterns::Double(1.0, 5.0));
+  entry(prm, "seed", e.seed, "Seed of every random number of the packing.", Patterns::Integer(0));
   prm.leave_subsection();
 
   prm.enter_subsection("packing");
   entry(prm, "input file", e.packing_input,
-                    "Reuse the relaxed packing of an earlier run file (HDF5) instead of making "
-                    "one; empty: make a packing. Relative to this parameter file.",
-                    Patterns::Anything());
+        "Reuse the relaxed packing of an earlier run file (HDF5) instead of making "
+        "one; empty: make a packing. Relative to this parameter file.",
+        Patterns::Anything());
   entry(prm, "initial volume fraction", p.packing.initial_volume_fraction,
-                    "Random placement happens at this volume fraction, before compression.",
-                    Patterns::Double(0.05, 0.95));
+        "Random placement happens at this volume fraction, before compression.",
+        Patterns::Double(0.05, 0.95));
   entry(prm, "compression step", p.packing.compression_step,
-                    "Increase of phi between relaxations during compression.",
-                    Patterns::Double(1e-4, 0.1));
+        "Increase of phi between relaxations during compression.", Patterns::Double(1e-4, 0.1));
   entry(prm, "stage tolerance", p.packing.stage_tolerance,
-                    "Residual max|F|/<|f|> at which a compression stage stops.",
-                    Patterns::Double(1e-12, 1.0));
+        "Residual max|F|/<|f|> at which a compression stage stops.", Patterns::Double(1e-12, 1.0));
   entry(prm, "stage iterations", e.stage_iterations,
-                    "FIRE iterations allowed per compression stage (the compression rate).",
-                    Patterns::Integer(1));
+        "FIRE iterations allowed per compression stage (the compression rate).",
+        Patterns::Integer(1));
   entry(prm, "force tolerance", p.packing.relaxation.force_tolerance,
-                    "Residual max|F|/<|f|> of the final relaxation to force balance.",
-                    Patterns::Double(1e-15, 1e-2));
+        "Residual max|F|/<|f|> of the final relaxation to force balance.",
+        Patterns::Double(1e-15, 1e-2));
   entry(prm, "max iterations", e.max_relaxation_iterations,
-                    "FIRE iterations allowed for the final relaxation.", Patterns::Integer(1));
+        "FIRE iterations allowed for the final relaxation.", Patterns::Integer(1));
   prm.leave_subsection();
 
   prm.enter_subsection("contact law");
   entry(prm, "law", p.contact_law.name,
-                    "Elastic contact law: seth2011 (the paper's, Hertz up to eps = 0.1 then "
-                    "stiffer), hertz, or table (from 'table file').",
-                    Patterns::Selection("seth2011|hertz|table"));
+        "Elastic contact law: seth2011 (the paper's, Hertz up to eps = 0.1 then "
+        "stiffer), hertz, or table (from 'table file').",
+        Patterns::Selection("seth2011|hertz|table"));
   entry(prm, "table file", e.table_file,
-                    "For law = table: text file of rows (eps, f/(E* R_c^2)), both increasing. "
-                    "Relative to this parameter file.",
-                    Patterns::Anything());
+        "For law = table: text file of rows (eps, f/(E* R_c^2)), both increasing. "
+        "Relative to this parameter file.",
+        Patterns::Anything());
   prm.leave_subsection();
 
   prm.enter_subsection("shear");
   entry(prm, "gamma dot tilde", p.shear_model.gamma_tilde,
-                    "Dimensionless shear rate gamma_dot eta_s / E* (the paper: 1e-9 ... 1e-4).",
-                    Patterns::Double(1e-14, 1e-1));
+        "Dimensionless shear rate gamma_dot eta_s / E* (the paper: 1e-9 ... 1e-4).",
+        Patterns::Double(1e-14, 1e-1));
   entry(prm, "mobility factor", p.shear_model.mobility_factor,
-                    "f_r in the mobility M = f_r / (6 pi eta_s R) (the paper: 0.01; results "
-                    "unchanged below 0.1).",
-                    Patterns::Double(1e-6, 1.0));
-  entry(prm, "sample interval", p.protocol.sample_interval,
-                    "Strain between stress samples.", Patterns::Double(1e-6, 0.5));
-  entry(prm, "check interval", p.protocol.check_interval,
-                    "Strain between steady-state checks.", Patterns::Double(1e-6, 1e6));
+        "f_r in the mobility M = f_r / (6 pi eta_s R) (the paper: 0.01; results "
+        "unchanged below 0.1).",
+        Patterns::Double(1e-6, 1.0));
+  entry(prm, "sample interval", p.protocol.sample_interval, "Strain between stress samples.",
+        Patterns::Double(1e-6, 0.5));
+  entry(prm, "check interval", p.protocol.check_interval, "Strain between steady-state checks.",
+        Patterns::Double(1e-6, 1e6));
   entry(prm, "min strain", p.protocol.min_strain, "Never stop before this strain.",
-                    Patterns::Double(0.0, 1e6));
-  entry(prm, "max strain", p.protocol.max_strain,
-                    "Stop (unconverged) at this strain.", Patterns::Double(0.0, 1e6));
+        Patterns::Double(0.0, 1e6));
+  entry(prm, "max strain", p.protocol.max_strain, "Stop (unconverged) at this strain.",
+        Patterns::Double(0.0, 1e6));
   entry(prm, "min stationary strain", p.protocol.min_stationary_strain,
-                    "The averaged (stationary) window must span at least this strain.",
-                    Patterns::Double(0.0, 1e6));
+        "The averaged (stationary) window must span at least this strain.",
+        Patterns::Double(0.0, 1e6));
   entry(prm, "target relative error", p.protocol.target_relative_error,
-                    "Stop when the standard errors of sigma, N1 and N2 are below this fraction "
-                    "of their means.",
-                    Patterns::Double(1e-6, 1.0));
+        "Stop when the standard errors of sigma, N1 and N2 are below this fraction "
+        "of their means.",
+        Patterns::Double(1e-6, 1.0));
   prm.leave_subsection();
 
   prm.enter_subsection("drag");
   entry(prm, "ehd", p.shear_model.drag.enabled,
-                    "Include the elastohydrodynamic drag between sliding facets.", Patterns::Bool());
+        "Include the elastohydrodynamic drag between sliding facets.", Patterns::Bool());
   entry(prm, "coupling", e.coupling,
-                    "implicit: velocities solved with the drag at every step (Newton); lagged: "
-                    "drag from the previous velocities (for measuring that error only).",
-                    Patterns::Selection("implicit|lagged"));
+        "implicit: velocities solved with the drag at every step (Newton); lagged: "
+        "drag from the previous velocities (for measuring that error only).",
+        Patterns::Selection("implicit|lagged"));
   entry(prm, "tolerance", p.shear_model.drag.tolerance,
-                    "Velocity residual of the implicit solve, relative to max(1, max|v|).",
-                    Patterns::Double(1e-14, 1e-2));
+        "Velocity residual of the implicit solve, relative to max(1, max|v|).",
+        Patterns::Double(1e-14, 1e-2));
   entry(prm, "max newton iterations", p.shear_model.drag.max_newton_iterations,
-                    "Newton iterations allowed per velocity solve.", Patterns::Integer(1, 10000));
+        "Newton iterations allowed per velocity solve.", Patterns::Integer(1, 10000));
   prm.leave_subsection();
 
   prm.enter_subsection("integrator");
   entry(prm, "scheme", p.integrator.name, "Time integrator.", Patterns::Selection("euler"));
   entry(prm, "tolerance", p.integrator.tolerance,
-                    "Local position error allowed per step, in units of R.",
-                    Patterns::Double(1e-12, 0.1));
+        "Local position error allowed per step, in units of R.", Patterns::Double(1e-12, 0.1));
   entry(prm, "stability fraction", p.integrator.stability_fraction,
-                    "Fraction of the explicit stability limit 2/lambda used at most.",
-                    Patterns::Double(0.01, 0.99));
+        "Fraction of the explicit stability limit 2/lambda used at most.",
+        Patterns::Double(0.01, 0.99));
   entry(prm, "max step", p.integrator.max_step, "Largest step (strain).",
-                    Patterns::Double(1e-12, 1.0));
+        Patterns::Double(1e-12, 1.0));
   prm.leave_subsection();
 
   prm.enter_subsection("neighbours");
   entry(prm, "skin", p.packing.skin, "Verlet-list skin, in units of R.",
-                    Patterns::Double(0.01, 2.0));
+        Patterns::Double(0.01, 2.0));
   prm.leave_subsection();
 
   prm.enter_subsection("output");
   entry(prm, "file", e.output_file,
-                    "HDF5 result file (relative to the current directory); the command line "
-                    "option --output overrides it.",
-                    Patterns::Anything());
+        "HDF5 result file (relative to the current directory); the command line "
+        "option --output overrides it.",
+        Patterns::Anything());
   entry(prm, "overwrite", p.overwrite, "Replace an existing output file.", Patterns::Bool());
   prm.leave_subsection();
 }
@@ -193,7 +189,8 @@ MicroParameters read_parameter_file(const std::filesystem::path& file) {
   try {
     prm.parse_input(file.string(), "", false, false);
   } catch (const std::exception& error) {
-    throw InputError(fmt::format("parameter file '{}': {}", file.string(), clean_message(error.what())));
+    throw InputError(
+        fmt::format("parameter file '{}': {}", file.string(), clean_message(error.what())));
   }
 
   MicroParameters p = e.p;

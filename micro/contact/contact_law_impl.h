@@ -17,7 +17,8 @@ class ContactLawImpl : public ContactLaw {
  public:
   void evaluate(std::span<const double> eps, std::span<double> force,
                 std::span<double> stiffness) const final {
-    for (std::size_t k = 0; k < eps.size(); ++k) law().force_and_stiffness(eps[k], force[k], stiffness[k]);
+    for (std::size_t k = 0; k < eps.size(); ++k)
+      law().force_and_stiffness(eps[k], force[k], stiffness[k]);
   }
 
   void compute_forces(const ForceKernelInput& input, ContactField& out) const final {

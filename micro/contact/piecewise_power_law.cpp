@@ -35,7 +35,7 @@ PiecewisePowerLaw::PiecewisePowerLaw(std::vector<Branch> branches)
                                     std::to_string(b.start));
       }
     }
-    kinds_.push_back(b.exponent == 1.5 ? Kind::three_halves
+    kinds_.push_back(b.exponent == 1.5   ? Kind::three_halves
                      : b.exponent == 2.0 ? Kind::two
                      : b.exponent == 3.0 ? Kind::three
                                          : Kind::general);

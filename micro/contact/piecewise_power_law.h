@@ -13,9 +13,9 @@ namespace softglass::micro {
 class PiecewisePowerLaw {
  public:
   struct Branch {
-    double start;        // ε_k; the first branch starts at 0
-    double prefactor;    // a_k
-    double exponent;     // n_k > 0
+    double start;      // ε_k; the first branch starts at 0
+    double prefactor;  // a_k
+    double exponent;   // n_k > 0
   };
 
   /// Branches must start at 0, increase, and join continuously (checked to 1e-9).
@@ -26,10 +26,17 @@ class PiecewisePowerLaw {
     const Branch& b = branches_[k];
     double power_less_one;  // ε^{n−1}
     switch (kinds_[k]) {
-      case Kind::three_halves: power_less_one = std::sqrt(eps); break;
-      case Kind::two: power_less_one = eps; break;
-      case Kind::three: power_less_one = eps * eps; break;
-      default: power_less_one = std::pow(eps, b.exponent - 1.0);
+      case Kind::three_halves:
+        power_less_one = std::sqrt(eps);
+        break;
+      case Kind::two:
+        power_less_one = eps;
+        break;
+      case Kind::three:
+        power_less_one = eps * eps;
+        break;
+      default:
+        power_less_one = std::pow(eps, b.exponent - 1.0);
     }
     force = b.prefactor * power_less_one * eps;
     stiffness = b.prefactor * b.exponent * power_less_one;
@@ -54,7 +61,7 @@ class PiecewisePowerLaw {
   std::size_t bisect(double eps) const;
 
   std::vector<Branch> branches_;
-  std::vector<Kind> kinds_;            // fast paths for the common exponents
+  std::vector<Kind> kinds_;  // fast paths for the common exponents
   std::vector<double> energy_at_start_;
 };
 

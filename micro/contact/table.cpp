@@ -39,19 +39,22 @@ std::vector<Point> read_points(const std::filesystem::path& file) {
     fields.clear();
     fields.str(line);
     if (!(fields >> p.eps >> p.force) || (fields >> rest)) {
-      throw InputError(fmt::format("contact-law table '{}' line {}: expected two numbers "
-                                   "(deformation, reduced force), got '{}'",
-                                   file.string(), number, line));
+      throw InputError(
+          fmt::format("contact-law table '{}' line {}: expected two numbers "
+                      "(deformation, reduced force), got '{}'",
+                      file.string(), number, line));
     }
     if (!std::isfinite(p.eps) || !std::isfinite(p.force) || p.eps <= 0.0 || p.force <= 0.0) {
-      throw InputError(fmt::format("contact-law table '{}' line {}: deformation and force must "
-                                   "be positive and finite, got {} {}",
-                                   file.string(), number, p.eps, p.force));
+      throw InputError(
+          fmt::format("contact-law table '{}' line {}: deformation and force must "
+                      "be positive and finite, got {} {}",
+                      file.string(), number, p.eps, p.force));
     }
     if (!points.empty() && (p.eps <= points.back().eps || p.force <= points.back().force)) {
-      throw InputError(fmt::format("contact-law table '{}' line {}: deformation and force must "
-                                   "both increase strictly from one row to the next",
-                                   file.string(), number));
+      throw InputError(
+          fmt::format("contact-law table '{}' line {}: deformation and force must "
+                      "both increase strictly from one row to the next",
+                      file.string(), number));
     }
     points.push_back(p);
   }
@@ -65,7 +68,8 @@ std::vector<Point> read_points(const std::filesystem::path& file) {
 PiecewisePowerLaw interpolate(const std::vector<Point>& p) {
   std::vector<PiecewisePowerLaw::Branch> branches;
   for (std::size_t k = 0; k + 1 < p.size(); ++k) {
-    const double exponent = std::log(p[k + 1].force / p[k].force) / std::log(p[k + 1].eps / p[k].eps);
+    const double exponent =
+        std::log(p[k + 1].force / p[k].force) / std::log(p[k + 1].eps / p[k].eps);
     const double prefactor = p[k].force / std::pow(p[k].eps, exponent);
     branches.push_back({k == 0 ? 0.0 : p[k].eps, prefactor, exponent});
   }

@@ -35,7 +35,8 @@ void OverdampedShear::evaluate() {
   const std::size_t n = p.size();
   // ζ and 1/ζ change only when the particles are reordered (at list builds).
   if (friction_.size() != n || ordered_at_build_ != system_.neighbours().builds()) {
-    const double friction_per_radius = 6.0 * std::numbers::pi * model_.gamma_tilde / model_.mobility_factor;
+    const double friction_per_radius =
+        6.0 * std::numbers::pi * model_.gamma_tilde / model_.mobility_factor;
     friction_.resize(n);
     mobility_.resize(n);
     for (std::size_t a = 0; a < n; ++a) {
@@ -46,8 +47,10 @@ void OverdampedShear::evaluate() {
   }
 
   if (with_drag) {
-    last_solve_ = drag_.solve(field.contacts, model_.gamma_tilde, friction_, field.force, p.velocity);
-    if (stress_valid_) viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity);
+    last_solve_ =
+        drag_.solve(field.contacts, model_.gamma_tilde, friction_, field.force, p.velocity);
+    if (stress_valid_)
+      viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity);
   } else {
     for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * field.force[a];
     viscous_virial_.setZero();

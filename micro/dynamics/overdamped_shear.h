@@ -89,8 +89,8 @@ class OverdampedShear {
   ContactSystem system_;
   ShearModel model_;
   EhdDrag drag_;
-  std::vector<double> friction_;  // ζ_α
-  std::vector<double> mobility_;  // 1/ζ_α
+  std::vector<double> friction_;      // ζ_α
+  std::vector<double> mobility_;      // 1/ζ_α
   std::size_t ordered_at_build_ = 0;  // the list build whose particle order they follow
   bool evaluated_ = false;
   bool stress_valid_ = false;

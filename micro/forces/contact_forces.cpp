@@ -26,7 +26,8 @@ std::size_t ContactField::memory_bytes() const {
   const auto list_bytes = [](const ContactList& c) {
     return c.i.capacity() * 8 + c.separation.capacity() * sizeof(Vec3) +
            (c.deformation.capacity() + c.contact_radius.capacity() + c.force.capacity() +
-            c.stiffness.capacity()) * sizeof(double);
+            c.stiffness.capacity()) *
+               sizeof(double);
   };
   bytes += list_bytes(contacts);
   for (const auto& c : scratch.contacts) bytes += list_bytes(c);
@@ -75,7 +76,9 @@ void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& 
 
   out.contacts.clear();
   if (in.request.contacts) {
-    const auto cat = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
+    const auto cat = [](auto& to, const auto& from) {
+      to.insert(to.end(), from.begin(), from.end());
+    };
     for (const ContactList& part : out.scratch.contacts) {
       cat(out.contacts.i, part.i);
       cat(out.contacts.j, part.j);

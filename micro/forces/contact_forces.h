@@ -24,11 +24,11 @@ namespace softglass::micro {
 /// drag or an analysis needs them.
 struct ContactList {
   std::vector<std::uint32_t> i, j;
-  std::vector<Vec3> separation;      // d = x_i − x_j (nearest image)
-  std::vector<double> deformation;   // ε
+  std::vector<Vec3> separation;        // d = x_i − x_j (nearest image)
+  std::vector<double> deformation;     // ε
   std::vector<double> contact_radius;  // R_c
-  std::vector<double> force;         // |f| = R_c² F(ε)
-  std::vector<double> stiffness;     // df/dh = R_c F'(ε)
+  std::vector<double> force;           // |f| = R_c² F(ε)
+  std::vector<double> stiffness;       // df/dh = R_c F'(ε)
 
   std::size_t size() const { return i.size(); }
   void clear();
@@ -50,9 +50,10 @@ struct ForceKernelInput {
 
 /// Result of one force evaluation; buffers are reused between evaluations.
 struct ContactField {
-  std::vector<Vec3> force;             // F^e_i
-  std::vector<double> stiffness_sum;   // Σ over contacts of the Hessian block norm
-  Eigen::Matrix3d virial = Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V), if requested
+  std::vector<Vec3> force;            // F^e_i
+  std::vector<double> stiffness_sum;  // Σ over contacts of the Hessian block norm
+  Eigen::Matrix3d virial =
+      Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V), if requested
   double energy = 0.0;
   double force_magnitude_sum = 0.0;  // Σ_c |f_c|
   std::size_t contact_count = 0;

@@ -31,7 +31,8 @@ int prepare_kernel(const ForceKernelInput& in, ContactField& out);
 /// Adds the accumulators of threads 1, 2, … for particles [begin, end) into `out`.
 void reduce_accumulators(ContactField& out, std::size_t begin, std::size_t end);
 /// Adds the per-thread totals and contact lists into `out`.
-void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& totals, ContactField& out);
+void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& totals,
+                   ContactField& out);
 
 /// The kernel proper, with what is requested known at compile time so that the
 /// contact loop carries no tests for it.
@@ -63,7 +64,8 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
       const Vec3 xi = in.x[i];
       const auto list = in.neighbours.neighbours(i);
       const auto pairs = in.neighbours.pair_constants(i);
-      if (cp.size() < list.size()) cp.resize(list.size()), cd.resize(list.size()), cr2.resize(list.size());
+      if (cp.size() < list.size())
+        cp.resize(list.size()), cd.resize(list.size()), cr2.resize(list.size());
       std::size_t m = 0;
       for (std::uint32_t p = 0; p < list.size(); ++p) {
         const std::uint32_t entry = list[p];
@@ -133,14 +135,22 @@ void run_contact_kernel(const Law& law, const ForceKernelInput& in, ContactField
   const ForceRequest& r = in.request;
   const int flags = (r.energy ? 4 : 0) | (r.contacts ? 2 : 0) | (r.virial ? 1 : 0);
   switch (flags) {
-    case 0: return contact_kernel<Law, false, false, false>(law, in, out);
-    case 1: return contact_kernel<Law, false, false, true>(law, in, out);
-    case 2: return contact_kernel<Law, false, true, false>(law, in, out);
-    case 3: return contact_kernel<Law, false, true, true>(law, in, out);
-    case 4: return contact_kernel<Law, true, false, false>(law, in, out);
-    case 5: return contact_kernel<Law, true, false, true>(law, in, out);
-    case 6: return contact_kernel<Law, true, true, false>(law, in, out);
-    default: return contact_kernel<Law, true, true, true>(law, in, out);
+    case 0:
+      return contact_kernel<Law, false, false, false>(law, in, out);
+    case 1:
+      return contact_kernel<Law, false, false, true>(law, in, out);
+    case 2:
+      return contact_kernel<Law, false, true, false>(law, in, out);
+    case 3:
+      return contact_kernel<Law, false, true, true>(law, in, out);
+    case 4:
+      return contact_kernel<Law, true, false, false>(law, in, out);
+    case 5:
+      return contact_kernel<Law, true, false, true>(law, in, out);
+    case 6:
+      return contact_kernel<Law, true, true, false>(law, in, out);
+    default:
+      return contact_kernel<Law, true, true, true>(law, in, out);
   }
 }
 

@@ -4,9 +4,9 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
-#include <limits>
 
 #include "common/errors.h"
 
@@ -19,7 +19,8 @@ constexpr int kMaxHalvings = 50;
 
 // a_c = (¾ γ̃ R_c |f| √ε)^{1/2}; see the header.
 inline double drag_coefficient(const ContactList& c, std::size_t k, double gamma_tilde) {
-  return std::sqrt(0.75 * gamma_tilde * c.contact_radius[k] * c.force[k] * std::sqrt(c.deformation[k]));
+  return std::sqrt(0.75 * gamma_tilde * c.contact_radius[k] * c.force[k] *
+                   std::sqrt(c.deformation[k]));
 }
 }  // namespace
 
@@ -40,7 +41,9 @@ void EhdSettings::validate() const {
   require(max_cg_iterations >= 1, "velocity solve needs at least one CG iteration");
 }
 
-EhdDrag::EhdDrag(EhdSettings settings) : settings_(settings) { settings_.validate(); }
+EhdDrag::EhdDrag(EhdSettings settings) : settings_(settings) {
+  settings_.validate();
+}
 
 void EhdDrag::prepare(const ContactList& c, double gamma_tilde) {
   const std::size_t m = c.size();
@@ -77,8 +80,10 @@ void EhdDrag::gather(std::span<const Vec3> per_contact, std::span<Vec3> out) con
     Vec3 sum = Vec3::Zero();
     for (std::size_t e = incidence_start_[a]; e < incidence_start_[a + 1]; ++e) {
       const std::uint32_t code = incidence_[e];
-      if (code & 1u) sum -= per_contact[code >> 1];
-      else sum += per_contact[code >> 1];
+      if (code & 1u)
+        sum -= per_contact[code >> 1];
+      else
+        sum += per_contact[code >> 1];
     }
     out[a] += sum;
   }
@@ -122,8 +127,9 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
   for (std::size_t a = 0; a < n; ++a) block_inverse_[a] = friction[a] * Eigen::Matrix3d::Identity();
   for (std::size_t k = 0; k < m; ++k) {
     const double speed = w_[k].norm();
-    const double resolution =
-        settings_.tolerance * velocity_scale * std::min(friction[c.i[k]], friction[c.j[k]]) / geometry_.coefficient[k];
+    const double resolution = settings_.tolerance * velocity_scale *
+                              std::min(friction[c.i[k]], friction[c.j[k]]) /
+                              geometry_.coefficient[k];
     s_[k] = geometry_.coefficient[k] / std::sqrt(std::max(speed, resolution * resolution));
     unit_w_[k] = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
     const Vec3& nk = geometry_.normal[k];
@@ -180,7 +186,8 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
   double change = 0.0, magnitude = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     trial_[a] = v[a] + t * step_[a];
-    const double quadratic = t * friction[a] * (v[a].dot(step_[a]) + 0.5 * t * step_[a].squaredNorm());
+    const double quadratic =
+        t * friction[a] * (v[a].dot(step_[a]) + 0.5 * t * step_[a].squaredNorm());
     const double linear = t * force[a].dot(step_[a]);
     change += quadratic - linear;
     magnitude += std::abs(quadratic) + std::abs(linear);
@@ -209,15 +216,16 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
 }
 
 VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
-                                  std::span<const double> friction,
-                                  std::span<const Vec3> force, std::span<Vec3> v) {
+                                  std::span<const double> friction, std::span<const Vec3> force,
+                                  std::span<Vec3> v) {
   const std::size_t n = v.size();
   const std::size_t m = c.size();
   prepare(c, gamma_tilde);
   build_incidence(c, n);
   for (auto* vec : {&w_trial_, &unit_w_}) vec->resize(m);
   secant_.resize(m);
-  for (auto* vec : {&gradient_, &gradient_trial_, &trial_, &step_, &r_, &z_, &p_, &hp_}) vec->resize(n);
+  for (auto* vec : {&gradient_, &gradient_trial_, &trial_, &step_, &r_, &z_, &p_, &hp_})
+    vec->resize(n);
   block_inverse_.resize(n);
   s_.resize(m);
   VelocitySolveStats stats;
@@ -276,14 +284,16 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
     if (it == settings_.max_newton_iterations) {
       throw NumericalError(fmt::format(
           "EHD velocity solve did not converge in {} Newton iterations (residual {:.3g}, "
-          "tolerance {:.3g})", it, stats.residual, settings_.tolerance));
+          "tolerance {:.3g})",
+          it, stats.residual, settings_.tolerance));
     }
     ++stats.newton_iterations;
 
     // Inexact Newton: forcing term η → 0 as the gradient falls (superlinear).
     const double gnorm = std::sqrt(dot(gradient_, gradient_));
     if (it == 0) first_norm = gnorm;
-    stats.cg_iterations += newton_direction(c, friction, scale, std::min(1e-3, std::sqrt(gnorm / first_norm)));
+    stats.cg_iterations +=
+        newton_direction(c, friction, scale, std::min(1e-3, std::sqrt(gnorm / first_norm)));
 
     // Backtracking line search (Armijo) on the change of Φ along the step,
     // computed term by term: the friction and force terms exactly, the drag
@@ -297,7 +307,9 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
     for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
       const Change change = change_along_step(c, friction, force, v, t);
       if (change.value <= kArmijo * t * slope) break;
-      if (std::abs(change.value) <= change.rounding && dot(gradient_trial_, gradient_trial_) < gnorm * gnorm) break;
+      if (std::abs(change.value) <= change.rounding &&
+          dot(gradient_trial_, gradient_trial_) < gnorm * gnorm)
+        break;
     }
     // The majoriser for contacts whose |w| shrinks fast, and for every shrinking
     // contact when the iteration made poor progress (a crawl).

@@ -66,7 +66,7 @@ std::string to_string(DragCoupling coupling);
 struct EhdSettings {
   bool enabled = true;
   DragCoupling coupling = DragCoupling::implicit;
-  double tolerance = 1e-6;   // velocity residual relative to max(1, max|v|)
+  double tolerance = 1e-6;  // velocity residual relative to max(1, max|v|)
   int max_newton_iterations = 60;
   int max_cg_iterations = 1000;
 
@@ -93,8 +93,8 @@ class EhdDrag {
 
   /// Σ_c d ⊗ f^EHD at velocities v (σ^v = −virial/V); also the drag on each
   /// particle if `drag` is not empty.
-  Eigen::Matrix3d virial(const ContactList& contacts, double gamma_tilde,
-                         std::span<const Vec3> v, std::span<Vec3> drag = {}) const;
+  Eigen::Matrix3d virial(const ContactList& contacts, double gamma_tilde, std::span<const Vec3> v,
+                         std::span<Vec3> drag = {}) const;
 
  private:
   struct Geometry {  // per contact
@@ -123,17 +123,17 @@ class EhdDrag {
 
   EhdSettings settings_;
   Geometry geometry_;
-  std::vector<Vec3> scratch_;    // per-contact vectors
+  std::vector<Vec3> scratch_;  // per-contact vectors
   std::vector<std::size_t> incidence_start_;
-  std::vector<std::uint32_t> incidence_;   // contact index × 2 + (0: i side, 1: j side)
+  std::vector<std::uint32_t> incidence_;  // contact index × 2 + (0: i side, 1: j side)
   // Newton state, reused between solves: current and trial points.
   std::vector<Vec3> w_, w_trial_, gradient_, gradient_trial_, trial_;
   std::vector<Vec3> step_, r_, z_, p_, hp_;
   std::vector<Eigen::Matrix3d> block_inverse_;
-  std::vector<double> s_;          // a_c / √max(|w|, floor)
-  std::vector<double> relief_;     // θ_c: ½ (Newton) or 0 (majoriser)
-  std::vector<double> secant_;     // a_c / √|w_c| at the last gradient
-  std::vector<Vec3> unit_w_;       // ŵ
+  std::vector<double> s_;       // a_c / √max(|w|, floor)
+  std::vector<double> relief_;  // θ_c: ½ (Newton) or 0 (majoriser)
+  std::vector<double> secant_;  // a_c / √|w_c| at the last gradient
+  std::vector<Vec3> unit_w_;    // ŵ
 };
 
 }  // namespace softglass::micro

@@ -67,7 +67,8 @@ void write_packing(H5Group& g, const PackingReport& r, const ShearModulus& m) {
 
 void write_shear(H5Group&& g, const ShearRecord& s) {
   const ShearResult& r = s.result;
-  g.write_scalar("gamma_tilde", s.gamma_tilde, {"1", "dimensionless shear rate gamma_dot eta_s / E*"});
+  g.write_scalar("gamma_tilde", s.gamma_tilde,
+                 {"1", "dimensionless shear rate gamma_dot eta_s / E*"});
 
   H5Group ts = g.create_group("timeseries");
   const TimeSeries& t = r.series;
@@ -77,8 +78,9 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   ts.write("stress_viscous", flatten(t.viscous), {t.size(), 3, 3},
            {"E*", "viscous (EHD) stress tensor sigma^v_ij, not symmetric, [sample][i][j]"});
   ts.write("coordination", t.coordination, {}, {"1", "Z = 2 x contacts / N"});
-  ts.write("layering", t.layering, {},
-           {"1", "S_y = max_m |sum exp(2 pi i m y/L)|^2 / N; about 3 when disordered, > 20 layered"});
+  ts.write(
+      "layering", t.layering, {},
+      {"1", "S_y = max_m |sum exp(2 pi i m y/L)|^2 / N; about 3 when disordered, > 20 layered"});
   ts.write("step", t.step, {}, {"1", "last accepted integrator step (strain)"});
 
   H5Group sum = g.create_group("summary");
@@ -127,7 +129,8 @@ std::vector<Vec3> unflatten(const H5Array& a, const std::string& what) {
     throw InputError(fmt::format("dataset '{}' must have shape N x 3", what));
   }
   std::vector<Vec3> v(a.dims[0]);
-  for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data[3 * i], a.data[3 * i + 1], a.data[3 * i + 2]);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    v[i] = Vec3(a.data[3 * i], a.data[3 * i + 1], a.data[3 * i + 2]);
   return v;
 }
 
@@ -146,7 +149,8 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
                     {"", "the complete parameter file of the run, defaults included"});
 
   H5Group t = root.create_group("timings");
-  t.write_scalar("packing", record.timings.packing, {"s", "wall time to make and relax the packing"});
+  t.write_scalar("packing", record.timings.packing,
+                 {"s", "wall time to make and relax the packing"});
   t.write_scalar("shear_modulus", record.timings.modulus, {"s", "wall time for G0"});
   t.write_scalar("shear", record.timings.shear, {"s", "wall time of the sheared run"});
   t.write_scalar("total", record.timings.total, {"s", "wall time of the command"});
@@ -154,7 +158,8 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
 
   H5Group p = root.create_group("packing");
   write_packing(p, record.packing, record.modulus);
-  write_configuration(p.create_group("configuration"), record.packing_particles, record.packing_box);
+  write_configuration(p.create_group("configuration"), record.packing_particles,
+                      record.packing_box);
 
   if (record.shear) write_shear(root.create_group("shear"), *record.shear);
   file.close();
@@ -164,16 +169,19 @@ StoredPacking read_packing(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
   if (root.attribute_int("format_version") != kFormatVersion) {
-    throw InputError(fmt::format("'{}' has run-file format {}, this version reads {}", path.string(),
-                                 root.attribute_int("format_version"), kFormatVersion));
+    throw InputError(fmt::format("'{}' has run-file format {}, this version reads {}",
+                                 path.string(), root.attribute_int("format_version"),
+                                 kFormatVersion));
   }
   const H5Group p = root.group("packing");
   const H5Group c = p.group("configuration");
   StoredPacking s;
   std::vector<double> radius = c.read_array("radius").data;
-  std::vector<Vec3> position = unflatten(c.read_array("position"), "/packing/configuration/position");
+  std::vector<Vec3> position =
+      unflatten(c.read_array("position"), "/packing/configuration/position");
   if (radius.size() != position.size()) {
-    throw InputError(fmt::format("'{}': {} positions but {} radii", path.string(), position.size(), radius.size()));
+    throw InputError(fmt::format("'{}': {} positions but {} radii", path.string(), position.size(),
+                                 radius.size()));
   }
   s.particles = Particles(std::move(position), std::move(radius));
   s.box = LeesEdwardsBox(c.read_scalar("side"));
@@ -209,7 +217,8 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
   const auto tensors = [&](const char* name) {
     const H5Array a = ts.read_array(name);
     if (a.dims.size() != 3 || a.dims[0] != t.strain.size() || a.dims[1] != 3 || a.dims[2] != 3) {
-      throw InputError(fmt::format("'{}': dataset '{}' must have shape n x 3 x 3", path.string(), name));
+      throw InputError(
+          fmt::format("'{}': dataset '{}' must have shape n x 3 x 3", path.string(), name));
     }
     std::vector<Eigen::Matrix3d> m(a.dims[0]);
     for (std::size_t k = 0; k < m.size(); ++k)
@@ -219,7 +228,8 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
   };
   t.elastic = tensors("stress_elastic");
   t.viscous = tensors("stress_viscous");
-  if (t.coordination.size() != t.size() || t.step.size() != t.size() || t.layering.size() != t.size()) {
+  if (t.coordination.size() != t.size() || t.step.size() != t.size() ||
+      t.layering.size() != t.size()) {
     throw InputError(fmt::format("'{}': time-series datasets differ in length", path.string()));
   }
   return t;
@@ -229,7 +239,8 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
   if (!root.has_child("shear")) {
-    throw InputError(fmt::format("'{}' holds no sheared run (made by `micro pack`?)", path.string()));
+    throw InputError(
+        fmt::format("'{}' holds no sheared run (made by `micro pack`?)", path.string()));
   }
   const H5Group packing = root.group("packing");
   const H5Group shear = root.group("shear");

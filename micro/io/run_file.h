@@ -31,8 +31,8 @@ struct ShearRecord {
 };
 
 struct RunRecord {
-  std::string command;          // "pack" or "run"
-  std::string parameters;       // the complete parameter file, defaults included
+  std::string command;     // "pack" or "run"
+  std::string parameters;  // the complete parameter file, defaults included
   PackingReport packing;
   ShearModulus modulus;
   Particles packing_particles;  // the relaxed packing, label order

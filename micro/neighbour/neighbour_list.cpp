@@ -15,11 +15,14 @@ namespace {
 inline int cell_coordinate(double position, double width, int cells) {
   return std::min(static_cast<int>(position / width), cells - 1);
 }
-inline int periodic(int c, int cells) { return c < 0 ? c + cells : (c >= cells ? c - cells : c); }
+inline int periodic(int c, int cells) {
+  return c < 0 ? c + cells : (c >= cells ? c - cells : c);
+}
 }  // namespace
 
 NeighbourList::NeighbourList(double skin) : skin_(skin) {
-  require(skin > 0.0 && std::isfinite(skin), fmt::format("neighbour skin = {} must be positive", skin));
+  require(skin > 0.0 && std::isfinite(skin),
+          fmt::format("neighbour skin = {} must be positive", skin));
 }
 
 NeighbourList::Grid NeighbourList::grid_for(const LeesEdwardsBox& box, double max_radius) const {
@@ -62,7 +65,8 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   const double offset = box.image_offset();
   const double L = box.side();
   if (n > kMaxParticles) {
-    throw InputError(fmt::format("{} particles exceed the neighbour list's limit of {}", n, kMaxParticles));
+    throw InputError(
+        fmt::format("{} particles exceed the neighbour list's limit of {}", n, kMaxParticles));
   }
 
   // Counting sort of the particles into cells.
@@ -80,7 +84,8 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   cell_members_.resize(n);
   {
     std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) cell_members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+    for (std::size_t i = 0; i < n; ++i)
+      cell_members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
   }
 
   counts_.assign(n, 0);
@@ -125,7 +130,8 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
                 const int ny = static_cast<int>(std::lround((raw.y() - d.y()) / L));
                 const int nz = static_cast<int>(std::lround((raw.z() - d.z()) / L));
                 const int nx = static_cast<int>(std::lround((raw.x() - d.x() - ny * offset) / L));
-                const auto code = static_cast<std::uint32_t>((nx + 2) + 5 * (ny + 1) + 15 * (nz + 1));
+                const auto code =
+                    static_cast<std::uint32_t>((nx + 2) + 5 * (ny + 1) + 15 * (nz + 1));
                 pairs.push_back(j | (code << kIndexBits));
                 ++count;
               }
@@ -143,7 +149,8 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   for (std::size_t i = 0; i < n; ++i) start_[i + 1] = start_[i] + counts_[i];
   neighbours_.clear();
   neighbours_.reserve(start_[n]);
-  for (const auto& pairs : thread_pairs_) neighbours_.insert(neighbours_.end(), pairs.begin(), pairs.end());
+  for (const auto& pairs : thread_pairs_)
+    neighbours_.insert(neighbours_.end(), pairs.begin(), pairs.end());
   // Neighbours of each i in increasing j: a fixed summation order whatever the grid.
   for (std::size_t i = 0; i < n; ++i) {
     std::sort(neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i]),
@@ -167,7 +174,8 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   ++builds_;
 }
 
-std::array<Vec3, NeighbourList::kImages> NeighbourList::image_shifts(const LeesEdwardsBox& box) const {
+std::array<Vec3, NeighbourList::kImages> NeighbourList::image_shifts(
+    const LeesEdwardsBox& box) const {
   const double L = box.side();
   const double delta = offset_at_build_ + L * (box.strain() - strain_at_build_);
   std::array<Vec3, kImages> shifts;

@@ -50,8 +50,8 @@ class NeighbourList {
   /// non-affinely by at most `max_nonaffine` and the strain has reached `strain`.
   bool valid_for(double max_nonaffine, double strain) const {
     const double a = max_nonaffine;
-    return built_ && 2.0 * a + std::abs(strain - strain_at_build_) * (2.0 * max_radius_ + 2.0 * a) <
-                         skin_;
+    return built_ &&
+           2.0 * a + std::abs(strain - strain_at_build_) * (2.0 * max_radius_ + 2.0 * a) < skin_;
   }
 
   /// Neighbours j > i of particle i, each entry packing j and the pair's image.
@@ -86,7 +86,7 @@ class NeighbourList {
 
  private:
   struct Grid {
-    int cells;   // per direction
+    int cells;  // per direction
     double width;
   };
   Grid grid_for(const LeesEdwardsBox& box, double max_radius) const;

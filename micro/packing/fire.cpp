@@ -36,7 +36,8 @@ double force_residual(const ContactField& field) {
   if (field.contact_count == 0 || field.force_magnitude_sum == 0.0) return 0.0;
   double worst = 0.0;
   for (const Vec3& f : field.force) worst = std::max(worst, f.squaredNorm());
-  const double mean_contact_force = field.force_magnitude_sum / static_cast<double>(field.contact_count);
+  const double mean_contact_force =
+      field.force_magnitude_sum / static_cast<double>(field.contact_count);
   return std::sqrt(worst) / mean_contact_force;
 }
 

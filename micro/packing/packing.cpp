@@ -15,7 +15,8 @@ void PackingSpec::validate() const {
           fmt::format("number of particles = {} is outside [2, 5e7]", particles));
   require(std::isfinite(volume_fraction) && volume_fraction >= 0.64 && volume_fraction <= 0.95,
           fmt::format("volume fraction φ = {} is outside [0.64, 0.95] (soft glasses are compressed "
-                      "beyond random close packing)", volume_fraction));
+                      "beyond random close packing)",
+                      volume_fraction));
   require(initial_volume_fraction >= 0.05 && initial_volume_fraction <= volume_fraction,
           fmt::format("initial volume fraction = {} is outside [0.05, φ = {}]",
                       initial_volume_fraction, volume_fraction));
@@ -75,10 +76,12 @@ PackingReport describe_packing(ContactSystem& system) {
     }
   }
   std::size_t backbone_contacts = 0;
-  for (std::size_t k = 0; k < c.size(); ++k) backbone_contacts += !rattler[c.i[k]] && !rattler[c.j[k]];
+  for (std::size_t k = 0; k < c.size(); ++k)
+    backbone_contacts += !rattler[c.i[k]] && !rattler[c.j[k]];
   r.rattlers = static_cast<std::size_t>(std::count(rattler.begin(), rattler.end(), true));
-  r.coordination_nonrattler =
-      r.rattlers < n ? 2.0 * static_cast<double>(backbone_contacts) / static_cast<double>(n - r.rattlers) : 0.0;
+  r.coordination_nonrattler = r.rattlers < n ? 2.0 * static_cast<double>(backbone_contacts) /
+                                                   static_cast<double>(n - r.rattlers)
+                                             : 0.0;
   return r;
 }
 
@@ -109,7 +112,8 @@ Packing make_packing(const PackingSpec& spec, std::shared_ptr<const ContactLaw> 
     const double next = std::min(phi + spec.compression_step, spec.volume_fraction);
     system.rescale(std::cbrt(phi / next));
     phi = next;
-    iterations += minimise_fire(system, phi < spec.volume_fraction ? stage : spec.relaxation).iterations;
+    iterations +=
+        minimise_fire(system, phi < spec.volume_fraction ? stage : spec.relaxation).iterations;
     if (progress) progress(phi);
   }
   if (spec.initial_volume_fraction == spec.volume_fraction) {

@@ -26,11 +26,11 @@ struct PackingSpec {
   RadiusDistribution radii;
   std::uint64_t seed = 1;
   double initial_volume_fraction = 0.50;
-  double compression_step = 0.01;   // Δφ between relaxations
-  double stage_tolerance = 1e-3;    // FIRE residual between compression steps
+  double compression_step = 0.01;       // Δφ between relaxations
+  double stage_tolerance = 1e-3;        // FIRE residual between compression steps
   std::size_t stage_iterations = 2000;  // FIRE budget per intermediate step
-  FireSettings relaxation;          // final relaxation
-  double skin = 0.6;                // neighbour-list skin, units of R
+  FireSettings relaxation;              // final relaxation
+  double skin = 0.6;                    // neighbour-list skin, units of R
 
   void validate() const;
 };
@@ -39,16 +39,16 @@ struct PackingSpec {
 struct PackingReport {
   std::size_t particles = 0;
   double volume_fraction = 0.0;
-  double side = 0.0;                   // cell side, units of R
-  double coordination = 0.0;           // Z = 2 × contacts / N
+  double side = 0.0;          // cell side, units of R
+  double coordination = 0.0;  // Z = 2 × contacts / N
   double coordination_nonrattler = 0.0;
-  std::size_t rattlers = 0;            // particles with < 4 contacts, removed iteratively
-  double mean_deformation = 0.0;       // ⟨ε⟩ over contacts
+  std::size_t rattlers = 0;       // particles with < 4 contacts, removed iteratively
+  double mean_deformation = 0.0;  // ⟨ε⟩ over contacts
   double max_deformation = 0.0;
-  double pressure = 0.0;               // Π = −tr σ^e / 3, units of E*
-  double energy_per_particle = 0.0;    // units of E* R³
-  double residual = 0.0;               // max|F| / ⟨|f_c|⟩
-  std::size_t iterations = 0;          // FIRE iterations over all stages
+  double pressure = 0.0;             // Π = −tr σ^e / 3, units of E*
+  double energy_per_particle = 0.0;  // units of E* R³
+  double residual = 0.0;             // max|F| / ⟨|f_c|⟩
+  std::size_t iterations = 0;        // FIRE iterations over all stages
   bool converged = false;
   double seconds = 0.0;
 };

@@ -26,13 +26,16 @@ void ShearProtocol::validate() const {
   require(sample_interval > 0.0 && sample_interval <= 0.5,
           fmt::format("sample interval = {} is outside (0, 0.5] (strain)", sample_interval));
   require(check_interval >= sample_interval,
-          fmt::format("check interval = {} is below the sample interval {}", check_interval, sample_interval));
+          fmt::format("check interval = {} is below the sample interval {}", check_interval,
+                      sample_interval));
   require(min_strain >= 0.0 && std::isfinite(min_strain),
           fmt::format("minimum strain = {} must be non-negative", min_strain));
   require(max_strain >= min_strain && max_strain <= 1e6,
-          fmt::format("maximum strain = {} is outside [minimum strain = {}, 1e6]", max_strain, min_strain));
+          fmt::format("maximum strain = {} is outside [minimum strain = {}, 1e6]", max_strain,
+                      min_strain));
   require(min_stationary_strain >= 20 * sample_interval,
-          fmt::format("minimum stationary strain = {} holds fewer than 20 samples", min_stationary_strain));
+          fmt::format("minimum stationary strain = {} holds fewer than 20 samples",
+                      min_stationary_strain));
   require(target_relative_error > 0.0 && target_relative_error < 1.0,
           fmt::format("target relative error = {} is outside (0, 1)", target_relative_error));
 }
@@ -52,7 +55,7 @@ std::vector<double> TimeSeries::component(const std::string& observable) const {
   const std::string base = observable.substr(0, underscore);
   const std::string part = underscore == std::string::npos ? "" : observable.substr(underscore + 1);
   const auto value = [&](std::size_t k) -> double {
-    const Eigen::Matrix3d s = part == "elastic" ? elastic[k]
+    const Eigen::Matrix3d s = part == "elastic"   ? elastic[k]
                               : part == "viscous" ? viscous[k]
                                                   : Eigen::Matrix3d(elastic[k] + viscous[k]);
     const ShearObservables o = observables(s);
@@ -73,7 +76,9 @@ const MeanEstimate& ShearSummary::operator[](const std::string& name) const {
   throw std::invalid_argument("no observable " + name);
 }
 
-bool ShearSummary::layered() const { return layering > kLayeredThreshold; }
+bool ShearSummary::layered() const {
+  return layering > kLayeredThreshold;
+}
 
 double ShearSummary::worst_relative_error() const {
   double worst = 0.0;
@@ -173,21 +178,25 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
       result.summary = summarise(series, protocol.min_stationary_strain);
       worst = result.summary.worst_relative_error();
       bool reliable = result.summary.transient_resolved && result.summary.drift <= kMaxDrift;
-      for (const char* name : kStoppingObservables) reliable = reliable && result.summary[name].reliable;
+      for (const char* name : kStoppingObservables)
+        reliable = reliable && result.summary[name].reliable;
       if (reliable && worst <= protocol.target_relative_error) {
         result.converged = true;
         result.stop_reason = fmt::format("stationary, relative standard errors ≤ {:.3g}", worst);
         break;
       }
       // A sample that has layered is no longer a glass: stop, unconverged.
-      const std::size_t window = std::min(series.size(), static_cast<std::size_t>(std::ceil(
-                                                             kLayeringWindow / protocol.sample_interval)));
+      const std::size_t window =
+          std::min(series.size(),
+                   static_cast<std::size_t>(std::ceil(kLayeringWindow / protocol.sample_interval)));
       double recent = 0.0;
-      for (std::size_t k = series.size() - window; k < series.size(); ++k) recent += series.layering[k] / window;
+      for (std::size_t k = series.size() - window; k < series.size(); ++k)
+        recent += series.layering[k] / window;
       if (recent > kLayeredThreshold) {
         result.stop_reason = fmt::format(
-            "the sample layered under shear (S_y = {:.0f} over the last {} strain, threshold {:.0f})", recent,
-            kLayeringWindow, kLayeredThreshold);
+            "the sample layered under shear (S_y = {:.0f} over the last {} strain, threshold "
+            "{:.0f})",
+            recent, kLayeringWindow, kLayeredThreshold);
         break;
       }
     }
@@ -195,19 +204,29 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
     if (sheared >= protocol.max_strain - 1e-9 * protocol.sample_interval) {
       result.summary = summarise(series, protocol.min_stationary_strain);
       result.stop_reason = fmt::format(
-          "maximum strain {} reached before the target error {} (worst {:.3g}){}{}", protocol.max_strain,
-          protocol.target_relative_error, result.summary.worst_relative_error(),
+          "maximum strain {} reached before the target error {} (worst {:.3g}){}{}",
+          protocol.max_strain, protocol.target_relative_error,
+          result.summary.worst_relative_error(),
           result.summary.transient_resolved ? "" : "; the transient may not be over",
-          result.summary.drift <= kMaxDrift ? "" : fmt::format("; the stresses drift (|z| = {:.1f})", result.summary.drift));
+          result.summary.drift <= kMaxDrift
+              ? ""
+              : fmt::format("; the stresses drift (|z| = {:.1f})", result.summary.drift));
       break;
     }
   }
 
   const IntegratorStats& stats = integrator.stats();
-  result.counters = {stats.accepted, stats.rejected, flow.evaluations(),
-                     flow.system().neighbours().builds() - builds_before, sweeps, newton, cg,
-                     stats.smallest_step, stats.largest_step};
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  result.counters = {stats.accepted,
+                     stats.rejected,
+                     flow.evaluations(),
+                     flow.system().neighbours().builds() - builds_before,
+                     sweeps,
+                     newton,
+                     cg,
+                     stats.smallest_step,
+                     stats.largest_step};
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
 }
 

@@ -60,8 +60,8 @@ struct ObservableEstimate {
 };
 
 struct ShearSummary {
-  double transient_strain = 0.0;   // removed as start-up
-  double averaged_strain = 0.0;    // stationary window
+  double transient_strain = 0.0;  // removed as start-up
+  double averaged_strain = 0.0;   // stationary window
   bool transient_resolved = false;
   std::vector<ObservableEstimate> observables;  // in shear_observable_names() order
   double elastic_to_viscous = 0.0;              // σ^e / σ^v
@@ -94,7 +94,7 @@ struct ShearResult {
 };
 
 struct ShearProgress {
-  double strain;         // sheared so far
+  double strain;  // sheared so far
   double max_strain;
   double worst_relative_error;  // at the last check (∞ before the first)
 };

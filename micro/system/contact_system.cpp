@@ -17,7 +17,8 @@ ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
     box_.wrap(x);
   }
   for (double r : particles_.radius) {
-    if (!(r > 0.0) || !std::isfinite(r)) throw InputError(fmt::format("particle radius {} is not positive", r));
+    if (!(r > 0.0) || !std::isfinite(r))
+      throw InputError(fmt::format("particle radius {} is not positive", r));
   }
   rebuild();
 }

@@ -5,7 +5,8 @@
 namespace softglass::micro {
 
 LeesEdwardsBox::LeesEdwardsBox(double side) : side_(side), half_(0.5 * side) {
-  if (!(side > 0.0) || !std::isfinite(side)) throw std::invalid_argument("box side must be positive");
+  if (!(side > 0.0) || !std::isfinite(side))
+    throw std::invalid_argument("box side must be positive");
 }
 
 void LeesEdwardsBox::set_strain(double strain) {

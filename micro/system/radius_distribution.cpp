@@ -15,7 +15,9 @@ namespace softglass::micro {
 namespace {
 
 // Standard normal distribution function.
-double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); }
+double normal_cdf(double x) {
+  return 0.5 * std::erfc(-x / std::numbers::sqrt2);
+}
 
 // Variance of a standard normal truncated to [−c, c]: 1 − 2cφ(c)/(2Φ(c) − 1).
 double truncated_normal_variance(double c) {
@@ -25,14 +27,16 @@ double truncated_normal_variance(double c) {
 
 // E[e^{tZ}] for Z standard normal truncated to [−c, c].
 double truncated_normal_mgf(double t, double c) {
-  return std::exp(0.5 * t * t) * (normal_cdf(c - t) - normal_cdf(-c - t)) / (2.0 * normal_cdf(c) - 1.0);
+  return std::exp(0.5 * t * t) * (normal_cdf(c - t) - normal_cdf(-c - t)) /
+         (2.0 * normal_cdf(c) - 1.0);
 }
 
 // Width s of ln R ~ N(·, s²) truncated at ±c s such that sd/mean of R is `target`:
 // CV² = M(2s)/M(s)² − 1 increases with s; bisection.
 double lognormal_width(double target, double c) {
   const auto cv = [c](double s) {
-    return std::sqrt(truncated_normal_mgf(2 * s, c) / std::pow(truncated_normal_mgf(s, c), 2) - 1.0);
+    return std::sqrt(truncated_normal_mgf(2 * s, c) / std::pow(truncated_normal_mgf(s, c), 2) -
+                     1.0);
   };
   double lo = 0.0, hi = 1.0;
   for (int it = 0; it < 200; ++it) {
@@ -44,22 +48,26 @@ double lognormal_width(double target, double c) {
 
 }  // namespace
 
-
 RadiusShape parse_radius_shape(const std::string& name) {
   if (name == "gaussian") return RadiusShape::gaussian;
   if (name == "uniform") return RadiusShape::uniform;
   if (name == "lognormal") return RadiusShape::lognormal;
   if (name == "bidisperse") return RadiusShape::bidisperse;
   throw InputError(fmt::format(
-      "radius distribution '{}' is unknown; allowed: gaussian, uniform, lognormal, bidisperse", name));
+      "radius distribution '{}' is unknown; allowed: gaussian, uniform, lognormal, bidisperse",
+      name));
 }
 
 std::string to_string(RadiusShape shape) {
   switch (shape) {
-    case RadiusShape::gaussian: return "gaussian";
-    case RadiusShape::uniform: return "uniform";
-    case RadiusShape::lognormal: return "lognormal";
-    case RadiusShape::bidisperse: return "bidisperse";
+    case RadiusShape::gaussian:
+      return "gaussian";
+    case RadiusShape::uniform:
+      return "uniform";
+    case RadiusShape::lognormal:
+      return "lognormal";
+    case RadiusShape::bidisperse:
+      return "bidisperse";
   }
   return "?";
 }
@@ -72,7 +80,7 @@ void RadiusDistribution::validate() const {
   const double smallest = shape == RadiusShape::gaussian
                               ? 1.0 - truncation_sigmas * polydispersity /
                                           std::sqrt(truncated_normal_variance(truncation_sigmas))
-                          : shape == RadiusShape::uniform  ? 1.0 - std::sqrt(3.0) * polydispersity
+                          : shape == RadiusShape::uniform    ? 1.0 - std::sqrt(3.0) * polydispersity
                           : shape == RadiusShape::bidisperse ? 1.0 - polydispersity
                                                              : 1.0;
   require(smallest > 0.05,

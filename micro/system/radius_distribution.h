@@ -16,8 +16,8 @@ enum class RadiusShape { gaussian, uniform, lognormal, bidisperse };
 
 struct RadiusDistribution {
   RadiusShape shape = RadiusShape::gaussian;
-  double polydispersity = 0.10;      // standard deviation / mean of the radius
-  double truncation_sigmas = 2.5;    // gaussian and lognormal are cut at ± this many σ
+  double polydispersity = 0.10;    // standard deviation / mean of the radius
+  double truncation_sigmas = 2.5;  // gaussian and lognormal are cut at ± this many σ
 
   /// Throws InputError when the parameters would allow non-positive radii.
   void validate() const;

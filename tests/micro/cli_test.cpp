@@ -53,8 +53,9 @@ class MicroCli : public ::testing::Test {
   // Runs `micro <arguments>` in work/ and returns its exit code and output.
   Outcome micro(const std::string& arguments) const {
     const fs::path out = dir_ / "capture" / "stdout.txt", err = dir_ / "capture" / "stderr.txt";
-    const std::string command = "cd '" + work().string() + "' && '" SOFTGLASS_MICRO_EXECUTABLE "' " +
-                                arguments + " > '" + out.string() + "' 2> '" + err.string() + "'";
+    const std::string command = "cd '" + work().string() +
+                                "' && '" SOFTGLASS_MICRO_EXECUTABLE "' " + arguments + " > '" +
+                                out.string() + "' 2> '" + err.string() + "'";
     const int status = std::system(command.c_str());
     EXPECT_TRUE(WIFEXITED(status)) << command;
     return {WEXITSTATUS(status), testing::read_text(out), testing::read_text(err)};
@@ -68,7 +69,8 @@ class MicroCli : public ::testing::Test {
 
   std::vector<std::string> files_in_work() const {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(work())) names.push_back(entry.path().filename());
+    for (const auto& entry : fs::directory_iterator(work()))
+      names.push_back(entry.path().filename());
     std::sort(names.begin(), names.end());
     return names;
   }
@@ -78,14 +80,16 @@ class MicroCli : public ::testing::Test {
 
 // The tiny parameter file with the entry `name` of `subsection` set to `value`
 // (added if the subsection does not set it yet).
-std::string tiny_with(const std::string& subsection, const std::string& name, const std::string& value) {
+std::string tiny_with(const std::string& subsection, const std::string& name,
+                      const std::string& value) {
   return kTiny + "subsection " + subsection + "\n  set " + name + " = " + value + "\nend\n";
 }
 
 TEST_F(MicroCli, HelpExitsZero) {
   const Outcome o = micro("--help");
   EXPECT_EQ(o.code, 0) << o.err;
-  for (const char* word : {"pack", "run", "template"}) EXPECT_NE(o.out.find(word), std::string::npos) << o.out;
+  for (const char* word : {"pack", "run", "template"})
+    EXPECT_NE(o.out.find(word), std::string::npos) << o.out;
 }
 
 TEST_F(MicroCli, BadCommandLinesExitTwo) {
@@ -114,26 +118,39 @@ TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
   const std::vector<BadParameter> cases = {
       {"unknown entry", tiny_with("particles", "colour", "red"), {"colour", "Line <12>"}},
       {"unknown subsection", kTiny + "subsection nonsense\n  set number = 1\nend\n", {"nonsense"}},
-      {"volume fraction below 0.64", tiny_with("particles", "volume fraction", "0.5"),
+      {"volume fraction below 0.64",
+       tiny_with("particles", "volume fraction", "0.5"),
        {"volume fraction", "0.64", "0.95"}},
-      {"volume fraction above 0.95", tiny_with("particles", "volume fraction", "0.99"),
+      {"volume fraction above 0.95",
+       tiny_with("particles", "volume fraction", "0.99"),
        {"volume fraction", "0.64", "0.95"}},
-      {"negative polydispersity", tiny_with("particles", "polydispersity", "-0.1"),
+      {"negative polydispersity",
+       tiny_with("particles", "polydispersity", "-0.1"),
        {"polydispersity", "0.3"}},
-      {"non-numeric value", tiny_with("particles", "volume fraction", "abc"),
+      {"non-numeric value",
+       tiny_with("particles", "volume fraction", "abc"),
        {"abc", "volume fraction", "0.64", "0.95"}},
-      {"nan volume fraction", tiny_with("particles", "volume fraction", "nan"),
+      {"nan volume fraction",
+       tiny_with("particles", "volume fraction", "nan"),
        {"volume fraction", "0.64", "0.95"}},
-      {"nan polydispersity", tiny_with("particles", "polydispersity", "nan"), {"polydispersity", "0.3"}},
-      {"nan shear rate", tiny_with("shear", "gamma dot tilde", "nan"), {"gamma dot tilde", "1e-14", "0.1"}},
+      {"nan polydispersity",
+       tiny_with("particles", "polydispersity", "nan"),
+       {"polydispersity", "0.3"}},
+      {"nan shear rate",
+       tiny_with("shear", "gamma dot tilde", "nan"),
+       {"gamma dot tilde", "1e-14", "0.1"}},
       {"nan skin", tiny_with("neighbours", "skin", "nan"), {"skin", "0.01", "2"}},
       {"nan max strain", tiny_with("shear", "max strain", "nan"), {"max strain"}},
-      {"unknown law", tiny_with("contact law", "law", "kelvin"), {"kelvin", "seth2011", "hertz", "table"}},
+      {"unknown law",
+       tiny_with("contact law", "law", "kelvin"),
+       {"kelvin", "seth2011", "hertz", "table"}},
       {"table law without file", tiny_with("contact law", "law", "table"), {"table file"}},
-      {"unknown distribution", tiny_with("particles", "distribution", "weibull"),
+      {"unknown distribution",
+       tiny_with("particles", "distribution", "weibull"),
        {"weibull", "gaussian", "uniform", "lognormal", "bidisperse"}},
       {"negative number of particles", tiny_with("particles", "number", "-5"), {"number"}},
-      {"shear rate out of range", tiny_with("shear", "gamma dot tilde", "1"),
+      {"shear rate out of range",
+       tiny_with("shear", "gamma dot tilde", "1"),
        {"gamma dot tilde", "1e-14", "0.1"}},
       {"unknown integrator", tiny_with("integrator", "scheme", "rk4"), {"rk4", "euler"}},
   };
@@ -144,7 +161,8 @@ TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
     EXPECT_EQ(o.code, 2) << c.what << "\n" << o.err;
     EXPECT_NE(o.err.find("micro: error:"), std::string::npos) << c.what << "\n" << o.err;
     for (const std::string& word : c.message_contains) {
-      EXPECT_NE(o.err.find(word), std::string::npos) << c.what << ": no '" << word << "' in\n" << o.err;
+      EXPECT_NE(o.err.find(word), std::string::npos) << c.what << ": no '" << word << "' in\n"
+                                                     << o.err;
     }
     EXPECT_FALSE(fs::exists(work() / "tiny.h5")) << c.what << ": no output for bad input";
   }
@@ -170,7 +188,8 @@ TEST_F(MicroCli, TemplateDocumentsEverySubsectionAndParsesBack) {
     if (set != std::string::npos && line.find_first_not_of(' ') == set) {
       for (const auto& [name, value] : overrides) {
         const std::string rest = line.substr(set + 4);
-        if (rest.rfind(name, 0) == 0 && rest.find_first_not_of(' ', name.size()) == rest.find('=')) {
+        if (rest.rfind(name, 0) == 0 &&
+            rest.find_first_not_of(' ', name.size()) == rest.find('=')) {
           line = line.substr(0, set) + "set " + name + " = " + value;
           ++replaced;
         }

@@ -26,7 +26,9 @@ std::unique_ptr<ContactLaw> law(const std::string& name, const fs::path& table =
   return make_contact_law({.name = name, .table_file = table});
 }
 
-fs::path hertz_table() { return fs::path(SOFTGLASS_SOURCE_DIR) / "cases" / "hertz_table.dat"; }
+fs::path hertz_table() {
+  return fs::path(SOFTGLASS_SOURCE_DIR) / "cases" / "hertz_table.dat";
+}
 
 // One power-law branch F = a ε^n on [start, end).
 struct Branch {
@@ -36,9 +38,12 @@ struct Branch {
 // The seth2011 branches written from the spec table (not from the engine).
 std::vector<Branch> seth2011_spec() {
   const double c1 = std::sqrt(10.0), c2 = 5.0 * std::sqrt(10.0);
-  return {{0.0, 0.1, 4.0 / 3.0, 1.5}, {0.1, 0.2, 4.0 / 3.0 * c1, 2.0}, {0.2, 3.0, 4.0 / 3.0 * c2, 3.0}};
+  return {
+      {0.0, 0.1, 4.0 / 3.0, 1.5}, {0.1, 0.2, 4.0 / 3.0 * c1, 2.0}, {0.2, 3.0, 4.0 / 3.0 * c2, 3.0}};
 }
-std::vector<Branch> hertz_spec() { return {{0.0, 3.0, 4.0 / 3.0, 1.5}}; }
+std::vector<Branch> hertz_spec() {
+  return {{0.0, 3.0, 4.0 / 3.0, 1.5}};
+}
 
 const Branch& branch_at(const std::vector<Branch>& branches, double eps) {
   for (const Branch& b : branches)
@@ -49,7 +54,7 @@ const Branch& branch_at(const std::vector<Branch>& branches, double eps) {
 // Test deformations: every branch, several decades, none within 1e-3 ε of a
 // breakpoint (so that the finite-difference stencils below stay in one branch).
 const std::vector<double> kSamples = {1e-6, 3e-4, 0.002, 0.03, 0.07, 0.098, 0.102,
-                                      0.13, 0.17, 0.199, 0.21, 0.35, 0.8, 1.7};
+                                      0.13, 0.17, 0.199, 0.21, 0.35, 0.8,   1.7};
 
 // ----------------------------------------------------------------- seth2011
 
@@ -193,7 +198,8 @@ TEST(ContactLaw, Seth2011IsHertzUpToTenPercentDeformation) {
     }
   }
   // and stiffer beyond: the reconstructed branches only ever add force
-  for (double eps : {0.11, 0.15, 0.2, 0.3, 1.0}) EXPECT_GT(seth->force(eps), hertz->force(eps)) << eps;
+  for (double eps : {0.11, 0.15, 0.2, 0.3, 1.0})
+    EXPECT_GT(seth->force(eps), hertz->force(eps)) << eps;
 }
 
 // model.md §3 assigns ε = 0.1 to the Hertz branch (ε ≤ 0.1) and ε = 0.2 to the
@@ -202,8 +208,9 @@ TEST(ContactLaw, Seth2011IsHertzUpToTenPercentDeformation) {
 // and 3/2 times larger).
 TEST(ContactLaw, Seth2011StiffnessAtTheJointsFollowsTheSpecBranches) {
   const auto seth = law("seth2011");
-  EXPECT_NEAR(seth->stiffness(0.1), 2.0 * std::sqrt(0.1), 1e-15);                   // (4/3)·(3/2) ε^{1/2}
-  EXPECT_NEAR(seth->stiffness(0.2), 4.0 / 3.0 * std::sqrt(10.0) * 2.0 * 0.2, 1e-14);  // (4/3) C n ε^{n−1}
+  EXPECT_NEAR(seth->stiffness(0.1), 2.0 * std::sqrt(0.1), 1e-15);  // (4/3)·(3/2) ε^{1/2}
+  EXPECT_NEAR(seth->stiffness(0.2), 4.0 / 3.0 * std::sqrt(10.0) * 2.0 * 0.2,
+              1e-14);  // (4/3) C n ε^{n−1}
 }
 
 // -------------------------------------------------------------------- table
@@ -217,10 +224,10 @@ TEST(ContactLawTable, HertzTableReproducesHertzAtAndBetweenPoints) {
   const auto table = law("table", hertz_table());
   const auto hertz = law("hertz");
   EXPECT_EQ(table->name(), "table");
-  std::vector<double> points = {0.001, 0.01, 0.1, 1.0};                 // at the rows
+  std::vector<double> points = {0.001, 0.01, 0.1, 1.0};                        // at the rows
   for (double eps : {0.002, 0.0031, 0.05, 0.099, 0.5}) points.push_back(eps);  // between
-  for (double eps : {1e-6, 1e-4, 5e-4}) points.push_back(eps);          // below the first row
-  for (double eps : {1.5, 3.0, 10.0}) points.push_back(eps);            // above the last row
+  for (double eps : {1e-6, 1e-4, 5e-4}) points.push_back(eps);  // below the first row
+  for (double eps : {1.5, 3.0, 10.0}) points.push_back(eps);    // above the last row
   for (double eps : points) {
     EXPECT_NEAR(table->force(eps) / hertz->force(eps), 1.0, 1e-13) << "eps " << eps;
     EXPECT_NEAR(table->stiffness(eps) / hertz->stiffness(eps), 1.0, 1e-13) << "eps " << eps;

@@ -5,33 +5,10 @@
 
 #include <cstring>
 
-#include "micro/contact/contact_law.h"
-#include "micro/dynamics/integrator.h"
-#include "micro/packing/packing.h"
-#include "micro/protocol/shear_run.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {
 namespace {
-
-struct Outcome {
-  ShearResult result;
-  Particles final_particles;
-};
-
-Outcome shear_once(const Packing& packing, std::shared_ptr<const ContactLaw> law) {
-  ShearModel model;
-  model.gamma_tilde = 1e-4;
-  OverdampedShear flow(ContactSystem(packing.particles, packing.box, std::move(law), 0.3), model);
-  const auto integrator = make_integrator({});
-  ShearProtocol protocol;
-  protocol.sample_interval = 0.01;
-  protocol.check_interval = 0.5;
-  protocol.min_strain = 1.0;
-  protocol.max_strain = 1.0;
-  protocol.min_stationary_strain = 0.5;
-  return {run_shear(flow, *integrator, protocol), flow.system().particles().in_label_order()};
-}
 
 // Bitwise equality (EXPECT_EQ on doubles would also accept −0 == +0).
 template <class T>
@@ -49,8 +26,8 @@ TEST(Determinism, IdenticalRunsGiveBitIdenticalTimeSeries) {
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
 
-  const Outcome a = shear_once(packing, law);
-  const Outcome b = shear_once(packing, law);
+  const auto a = testing::shear_briefly(packing, law, spec.skin, 1.0, 0.5);
+  const auto b = testing::shear_briefly(packing, law, spec.skin, 1.0, 0.5);
   const TimeSeries& s = a.result.series;
   const TimeSeries& t = b.result.series;
   ASSERT_EQ(s.size(), t.size());

@@ -118,10 +118,10 @@ TEST(EhdDrag, ImplicitVelocitiesSatisfyTheForceBalance) {
     worst = std::max(worst, residual.norm() / zeta[a] / scale);
     drag_share = std::max(drag_share, drag[a].norm() / (zeta[a] * s.v[a].norm()));
   }
-  std::printf("[ measured ] %zu contacts, %d Newton / %d CG iterations, residual %.2e, "
-              "largest |F^EHD|/|ζv| %.3f\n",
-              field.contacts.size(), s.stats.newton_iterations, s.stats.cg_iterations, worst,
-              drag_share);
+  std::printf(
+      "[ measured ] %zu contacts, %d Newton / %d CG iterations, residual %.2e, "
+      "largest |F^EHD|/|ζv| %.3f\n",
+      field.contacts.size(), s.stats.newton_iterations, s.stats.cg_iterations, worst, drag_share);
   EXPECT_LE(worst, kTolerance);
   EXPECT_LE(s.stats.residual, kTolerance);
   EXPECT_GT(s.stats.newton_iterations, 0);
@@ -139,8 +139,8 @@ TEST(EhdDrag, ImplicitVelocitiesSatisfyTheForceBalance) {
   }
   Eigen::Matrix3d expected_virial = Eigen::Matrix3d::Zero();
   for (std::size_t k = 0; k < field.contacts.size(); ++k) {
-    expected_virial += field.contacts.separation[k] *
-                       spec_drag(field.contacts, k, kGammaTilde, s.v).transpose();
+    expected_virial +=
+        field.contacts.separation[k] * spec_drag(field.contacts, k, kGammaTilde, s.v).transpose();
   }
   EXPECT_LE((virial - expected_virial).cwiseAbs().maxCoeff(),
             1e-12 * expected_virial.cwiseAbs().maxCoeff());
@@ -162,12 +162,11 @@ TEST(EhdDrag, SolutionDoesNotDependOnTheInitialGuess) {
   // |g_α|/ζ_α by res·max(1, max|v|), hence |g|₂ ≤ √N ζ_max res scale and
   //     |v₁ − v₂|₂ ≤ √N (ζ_max/ζ_min) (res₁ scale₁ + res₂ scale₂).
   const std::vector<double> zeta = friction_of(system.particles());
-  const double ratio = *std::max_element(zeta.begin(), zeta.end()) /
-                       *std::min_element(zeta.begin(), zeta.end());
-  const double bound =
-      std::sqrt(double(n)) * ratio *
-      (from_zero.stats.residual * std::max(1.0, max_norm(from_zero.v)) +
-       from_wild.stats.residual * std::max(1.0, max_norm(from_wild.v)));
+  const double ratio =
+      *std::max_element(zeta.begin(), zeta.end()) / *std::min_element(zeta.begin(), zeta.end());
+  const double bound = std::sqrt(double(n)) * ratio *
+                       (from_zero.stats.residual * std::max(1.0, max_norm(from_zero.v)) +
+                        from_wild.stats.residual * std::max(1.0, max_norm(from_wild.v)));
   double difference2 = 0.0, moved2 = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     difference2 += (from_zero.v[a] - from_wild.v[a]).squaredNorm();
@@ -199,7 +198,8 @@ TEST(EhdDrag, FrictionForcesSumToTheElasticForces) {
     residual_bound += zeta[a] * kTolerance * std::max(1.0, max_norm(s.v));
   }
   EXPECT_LE(drag_sum.norm(), 1e-13 * drag_magnitudes);  // round-off only
-  EXPECT_LE((friction_sum - elastic_sum).norm(), residual_bound + 1e-13 * field.force_magnitude_sum);
+  EXPECT_LE((friction_sum - elastic_sum).norm(),
+            residual_bound + 1e-13 * field.force_magnitude_sum);
 }
 
 class DragCoefficient : public ::testing::TestWithParam<double> {};
@@ -222,7 +222,8 @@ TEST_P(DragCoefficient, FollowsTheSpecFormulaOnEachBranch) {
   // velocities by label: a (label 0) and b (label 1)
   const Particles& p = system.particles();
   std::vector<Vec3> v(2);
-  for (std::size_t i = 0; i < 2; ++i) v[i] = p.label[i] == 0 ? Vec3(0.3, 0.1, -0.2) : Vec3(-0.1, 0.4, 0.2);
+  for (std::size_t i = 0; i < 2; ++i)
+    v[i] = p.label[i] == 0 ? Vec3(0.3, 0.1, -0.2) : Vec3(-0.1, 0.4, 0.2);
 
   EhdDrag engine({});
   std::vector<Vec3> drag(2, Vec3::Zero());
@@ -234,8 +235,8 @@ TEST_P(DragCoefficient, FollowsTheSpecFormulaOnEachBranch) {
   const Vec3 n = d.normalized();
   const Vec3 u = v[c.i[0]] - v[c.j[0]] + Vec3(d.y(), 0, 0);
   const Vec3 w = u - n * n.dot(u);
-  const Vec3 expected =
-      -std::sqrt(kGammaTilde * cc * w.norm() * rc * rc * rc) * std::pow(eps, (2 * nn + 1) / 4) * w.normalized();
+  const Vec3 expected = -std::sqrt(kGammaTilde * cc * w.norm() * rc * rc * rc) *
+                        std::pow(eps, (2 * nn + 1) / 4) * w.normalized();
   // ε from positions carries ~1e-15 absolute rounding: ≲ 1e-13 relative here.
   EXPECT_LE((drag[c.i[0]] - expected).norm(), 1e-12 * expected.norm()) << "eps " << eps;
   EXPECT_LE((drag[c.j[0]] + expected).norm(), 1e-12 * expected.norm());
@@ -282,7 +283,8 @@ TEST(EhdDrag, ShearDynamicsUsesTheImplicitVelocities) {
   }
   Eigen::Matrix3d virial = Eigen::Matrix3d::Zero();
   for (std::size_t k = 0; k < field.contacts.size(); ++k)
-    virial += field.contacts.separation[k] * spec_drag(field.contacts, k, kGammaTilde, v).transpose();
+    virial +=
+        field.contacts.separation[k] * spec_drag(field.contacts, k, kGammaTilde, v).transpose();
   const Eigen::Matrix3d expected = -virial / flow.system().box().volume();
   const Eigen::Matrix3d viscous = flow.stress().viscous;
   EXPECT_LE((viscous - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
@@ -350,7 +352,8 @@ TEST(EhdDrag, ConvergesOnEveryHardConfiguration) {
       const auto c = testing::random_configuration(200, 0.65, seed);
       LeesEdwardsBox box(c.side);
       box.set_strain(0.3);
-      ContactSystem system(Particles(c.position, c.radius), box, testing::named_law("seth2011"), 0.3);
+      ContactSystem system(Particles(c.position, c.radius), box, testing::named_law("seth2011"),
+                           0.3);
       const ContactField& field = system.compute_forces({.contacts = true});
       const double gamma_tilde = 1e-4;
       const std::vector<double> zeta = friction_of(system.particles(), gamma_tilde, mobility);

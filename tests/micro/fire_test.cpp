@@ -11,7 +11,8 @@
 namespace softglass::micro {
 namespace {
 
-ContactSystem random_system(std::size_t n, double phi, std::uint64_t seed, const char* law = "seth2011") {
+ContactSystem random_system(std::size_t n, double phi, std::uint64_t seed,
+                            const char* law = "seth2011") {
   const auto c = testing::random_configuration(n, phi, seed);
   return ContactSystem(Particles(c.position, c.radius), LeesEdwardsBox(c.side),
                        testing::named_law(law), 0.3);
@@ -65,7 +66,8 @@ TEST(Fire, EnergyDecreasesMonotonicallyOverSuccessiveBudgets) {
   ContactSystem system = random_system(200, 0.75, 7);
   double energy = system.compute_forces({.energy = true}).energy;
   for (std::size_t budget : {50u, 100u, 200u, 400u}) {
-    const FireResult r = minimise_fire(system, {.force_tolerance = 1e-12, .max_iterations = budget});
+    const FireResult r =
+        minimise_fire(system, {.force_tolerance = 1e-12, .max_iterations = budget});
     EXPECT_FALSE(r.converged) << "budget " << budget << " was enough; the test needs smaller ones";
     EXPECT_LT(r.energy, energy) << "after " << budget << " more iterations";
     energy = r.energy;

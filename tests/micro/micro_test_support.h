@@ -1,5 +1,6 @@
 // Helpers shared by the micro tests: random configurations, an independent
-// brute-force nearest-image search, a per-test temporary directory.
+// brute-force nearest-image search, a short sheared run, a per-test temporary
+// directory.
 //
 // The brute-force search deliberately does NOT call LeesEdwardsBox::minimum_image:
 // it enumerates the explicit Lees–Edwards images of particle j,
@@ -26,10 +27,36 @@
 #include <vector>
 
 #include "micro/contact/contact_law.h"
+#include "micro/dynamics/integrator.h"
+#include "micro/packing/packing.h"
+#include "micro/protocol/shear_run.h"
 #include "micro/system/lees_edwards_box.h"
 #include "micro/system/particles.h"
 
 namespace softglass::micro::testing {
+
+/// A short sheared run of `packing` at γ̃ = 1e-4 with the engine's defaults
+/// (EHD on, `euler`), exactly `strain` long.
+struct ShortShear {
+  ShearResult result;
+  Particles final_particles;  // label order, wrapped
+  LeesEdwardsBox final_box;
+};
+inline ShortShear shear_briefly(const Packing& packing, std::shared_ptr<const ContactLaw> law,
+                                double skin, double strain, double check_interval = 1.0) {
+  ShearModel model;
+  model.gamma_tilde = 1e-4;
+  OverdampedShear flow(ContactSystem(packing.particles, packing.box, std::move(law), skin), model);
+  const auto integrator = make_integrator({});
+  ShearProtocol protocol;
+  protocol.check_interval = check_interval;
+  protocol.min_strain = protocol.max_strain = strain;
+  protocol.min_stationary_strain =
+      std::max(20 * protocol.sample_interval, std::min(1.0, strain / 2));
+  // Braced initialisation runs left to right: the run first.
+  return {run_shear(flow, *integrator, protocol), flow.system().wrapped_in_label_order(),
+          flow.system().box()};
+}
 
 /// The contact law called `name` (no table file).
 inline std::shared_ptr<const ContactLaw> named_law(const std::string& name) {
@@ -62,7 +89,8 @@ inline RandomConfiguration random_configuration(std::size_t n, double phi, std::
   }
   c.side = std::cbrt(volume / phi);
   std::uniform_real_distribution<double> uniform(0.0, c.side);
-  for (std::size_t i = 0; i < n; ++i) c.position.emplace_back(uniform(rng), uniform(rng), uniform(rng));
+  for (std::size_t i = 0; i < n; ++i)
+    c.position.emplace_back(uniform(rng), uniform(rng), uniform(rng));
   return c;
 }
 

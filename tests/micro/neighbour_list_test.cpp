@@ -83,7 +83,8 @@ TEST_P(NeighbourListAtStrain, MatchesBruteForce) {
 
 // 0: plain periodic; 0.5: offset L/2; 7.3 and 1e4 + 0.37: many box lengths of
 // shear, where the offset must be taken from the fractional strain.
-INSTANTIATE_TEST_SUITE_P(Strains, NeighbourListAtStrain, ::testing::Values(0.0, 0.5, 7.3, 1e4 + 0.37));
+INSTANTIATE_TEST_SUITE_P(Strains, NeighbourListAtStrain,
+                         ::testing::Values(0.0, 0.5, 7.3, 1e4 + 0.37));
 
 TEST(NeighbourList, StaysCompleteWithinTheValidityBound) {
   // Build at strain 7.3, then move every particle by a random non-affine

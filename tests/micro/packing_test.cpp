@@ -32,7 +32,9 @@ struct Case {
   double phi;
   RadiusShape shape;
 };
-void PrintTo(const Case& c, std::ostream* os) { *os << "phi " << c.phi << ", " << to_string(c.shape); }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << "phi " << c.phi << ", " << to_string(c.shape);
+}
 
 class PackingReportTest : public ::testing::TestWithParam<Case> {};
 
@@ -78,9 +80,11 @@ TEST_P(PackingReportTest, HitsTheVolumeFractionAndReportsConsistently) {
   double sum_eps = 0.0, max_eps = 0.0, energy = 0.0;
   for (const auto& [i, j] : contacts) {
     const double rc = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
-    const double eps = (p.radius[i] + p.radius[j] -
-                        testing::brute_force_separation(p.position[i], p.position[j], side,
-                                                        packing.box.strain()).norm()) / rc;
+    const double eps =
+        (p.radius[i] + p.radius[j] -
+         testing::brute_force_separation(p.position[i], p.position[j], side, packing.box.strain())
+             .norm()) /
+        rc;
     sum_eps += eps;
     max_eps = std::max(max_eps, eps);
     energy += rc * rc * rc * law->energy(eps);
@@ -121,20 +125,23 @@ TEST_P(PackingReportTest, HitsTheVolumeFractionAndReportsConsistently) {
     EXPECT_EQ(r.rattlers, rattlers);
     EXPECT_NEAR(r.coordination_nonrattler, 2.0 * double(backbone) / double(n - rattlers), 1e-12);
   }
-  std::printf("[ measured ] phi %.2f %s: Z %.3f, rattlers %zu, Pi %.3e, max eps %.3f, %zu FIRE "
-              "iterations\n",
-              c.phi, to_string(c.shape).c_str(), r.coordination, r.rattlers, r.pressure,
-              r.max_deformation, r.iterations);
+  std::printf(
+      "[ measured ] phi %.2f %s: Z %.3f, rattlers %zu, Pi %.3e, max eps %.3f, %zu FIRE "
+      "iterations\n",
+      c.phi, to_string(c.shape).c_str(), r.coordination, r.rattlers, r.pressure, r.max_deformation,
+      r.iterations);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    VolumeFractionsAndDistributions, PackingReportTest,
-    ::testing::Values(Case{0.70, RadiusShape::gaussian}, Case{0.85, RadiusShape::bidisperse},
-                      Case{0.85, RadiusShape::uniform}, Case{0.70, RadiusShape::lognormal}),
-    [](const auto& param_info) {
-      return "phi" + std::to_string(int(std::round(100 * param_info.param.phi))) + "_" +
-             to_string(param_info.param.shape);
-    });
+INSTANTIATE_TEST_SUITE_P(VolumeFractionsAndDistributions, PackingReportTest,
+                         ::testing::Values(Case{0.70, RadiusShape::gaussian},
+                                           Case{0.85, RadiusShape::bidisperse},
+                                           Case{0.85, RadiusShape::uniform},
+                                           Case{0.70, RadiusShape::lognormal}),
+                         [](const auto& param_info) {
+                           return "phi" +
+                                  std::to_string(int(std::round(100 * param_info.param.phi))) +
+                                  "_" + to_string(param_info.param.shape);
+                         });
 
 TEST(Packing, SameSeedIsBitIdenticalAndAnotherSeedIsNot) {
   const auto law = testing::named_law("seth2011");
@@ -152,7 +159,8 @@ TEST(Packing, SameSeedIsBitIdenticalAndAnotherSeedIsNot) {
 
   EXPECT_NE(a.particles.radius, c.particles.radius);
   std::size_t same = 0;
-  for (std::size_t i = 0; i < a.particles.size(); ++i) same += a.particles.position[i] == c.particles.position[i];
+  for (std::size_t i = 0; i < a.particles.size(); ++i)
+    same += a.particles.position[i] == c.particles.position[i];
   EXPECT_EQ(same, 0u);
 }
 
@@ -180,8 +188,8 @@ void expect_requested_polydispersity(const RadiusCase& c) {
   // 10⁵ terms, ≲ 1e-13.
   EXPECT_NEAR(mean, 1.0, 1e-13) << to_string(c.shape);
   const double se = 0.1 * std::sqrt((c.kurtosis - 1.0) / (4.0 * double(n)));
-  std::printf("[ measured ] %s: SD/mean = %.5f (requested 0.1, ±%.1e)\n", to_string(c.shape).c_str(),
-              sd / mean, se);
+  std::printf("[ measured ] %s: SD/mean = %.5f (requested 0.1, ±%.1e)\n",
+              to_string(c.shape).c_str(), sd / mean, se);
   // 5 standard errors (+ the n/(n−1) bias of the bidisperse case, 5e-7).
   EXPECT_NEAR(sd / mean, 0.1, 5.0 * se + 1e-6) << to_string(c.shape);
   for (double x : r) ASSERT_GT(x, 0.0);

@@ -22,8 +22,7 @@ ContactSystem overlapping_system(double strain) {
   const auto c = random_configuration(200, 0.6, 99);
   LeesEdwardsBox box(c.side);
   box.set_strain(strain);
-  return ContactSystem(Particles(c.position, c.radius), box,
-                       testing::named_law("seth2011"), 0.3);
+  return ContactSystem(Particles(c.position, c.radius), box, testing::named_law("seth2011"), 0.3);
 }
 
 TEST_P(PairForces, TotalForceVanishes) {
@@ -56,8 +55,8 @@ TEST_P(PairForces, ThirdLawPerPairThroughTheContactList) {
   // from the law at that geometry, up to a handful of roundings.
   for (std::size_t k = 0; k < c.size(); ++k) {
     const std::uint32_t i = c.i[k], j = c.j[k];
-    const Vec3 d = testing::brute_force_separation(p.position[i], p.position[j],
-                                                   system.box().side(), strain);
+    const Vec3 d =
+        testing::brute_force_separation(p.position[i], p.position[j], system.box().side(), strain);
     EXPECT_LT((c.separation[k] - d).norm(), 1e-12 * system.box().side()) << "contact " << k;
     const double r = d.norm();
     const double rc = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);

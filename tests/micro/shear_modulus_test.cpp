@@ -58,9 +58,10 @@ TEST(ShearModulus, MatchesFiniteStrainResponse) {
   const double plus = relaxed_shear_stress(packing, law, +strain, 1e-12);
   const double minus = relaxed_shear_stress(packing, law, -strain, 1e-12);
   const double g_fd = (plus - minus) / (2.0 * strain);
-  std::printf("[ measured ] G0 = %.6e (affine %.6e, CG iterations %zu), finite strain %.6e, "
-              "relative difference %.1e\n",
-              g.modulus, g.affine_modulus, g.iterations, g_fd, g_fd / g.modulus - 1.0);
+  std::printf(
+      "[ measured ] G0 = %.6e (affine %.6e, CG iterations %zu), finite strain %.6e, "
+      "relative difference %.1e\n",
+      g.modulus, g.affine_modulus, g.iterations, g_fd, g_fd / g.modulus - 1.0);
   EXPECT_GT(g.modulus, 0.0);
   EXPECT_NEAR(g_fd / g.modulus, 1.0, 0.01);
 

@@ -3,10 +3,6 @@
 // viscous part much smaller than the elastic one, and N2 < 0 (model.md §8).
 #include <gtest/gtest.h>
 
-#include "micro/contact/contact_law.h"
-#include "micro/dynamics/integrator.h"
-#include "micro/packing/packing.h"
-#include "micro/protocol/shear_run.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {
@@ -21,27 +17,18 @@ TEST(SteadyShear, StressSignsOfTheStationaryState) {
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
 
-  ShearModel model;
-  model.gamma_tilde = 1e-4;
-  OverdampedShear flow(ContactSystem(packing.particles, packing.box, law, spec.skin), model);
-  const auto integrator = make_integrator({});
-  ShearProtocol protocol;
-  protocol.sample_interval = 0.01;
-  protocol.check_interval = 1.0;
-  protocol.min_strain = 4.0;
-  protocol.max_strain = 4.0;
-  protocol.min_stationary_strain = 1.0;
-  const ShearResult r = run_shear(flow, *integrator, protocol);
+  const ShearResult r = testing::shear_briefly(packing, law, spec.skin, 4.0).result;
   const ShearSummary& m = r.summary;
 
   const MeanEstimate& sigma = m["sigma"];
   const MeanEstimate& viscous = m["sigma_viscous"];
   const MeanEstimate& n2 = m["N2"];
-  std::printf("[ measured ] transient %.2f, averaged %.2f: sigma %.4e ± %.1e (viscous %.3e ± %.1e), "
-              "N1 %.3e ± %.1e, N2 %.3e ± %.1e, sigma^e/sigma^v %.1f\n",
-              m.transient_strain, m.averaged_strain, sigma.mean, sigma.standard_error, viscous.mean,
-              viscous.standard_error, m["N1"].mean, m["N1"].standard_error, n2.mean,
-              n2.standard_error, m.elastic_to_viscous);
+  std::printf(
+      "[ measured ] transient %.2f, averaged %.2f: sigma %.4e ± %.1e (viscous %.3e ± %.1e), "
+      "N1 %.3e ± %.1e, N2 %.3e ± %.1e, sigma^e/sigma^v %.1f\n",
+      m.transient_strain, m.averaged_strain, sigma.mean, sigma.standard_error, viscous.mean,
+      viscous.standard_error, m["N1"].mean, m["N1"].standard_error, n2.mean, n2.standard_error,
+      m.elastic_to_viscous);
   ASSERT_GE(m.averaged_strain, 1.0);
 
   // σ > 0 at every sample of the stationary part, not just on average.

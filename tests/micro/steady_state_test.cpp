@@ -415,7 +415,8 @@ TEST(DriftStatistic, PassesStationaryAndCatchesDrift) {
     EXPECT_LT(std::abs(drift_statistic(x)), 3.0) << "draw " << draw;
     // Add a linear drift of 2 series standard deviations from start to end.
     std::vector<double> drifting = x;
-    for (std::size_t k = 0; k < x.size(); ++k) drifting[k] += 2.0 * 2.3 * double(k) / double(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k)
+      drifting[k] += 2.0 * 2.3 * double(k) / double(x.size());
     EXPECT_GT(std::abs(drift_statistic(drifting)), 3.0) << "draw " << draw;
   }
   EXPECT_EQ(drift_statistic(std::vector<double>(30, 1.0)), 0.0);  // too short to judge

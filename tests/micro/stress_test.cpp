@@ -31,8 +31,8 @@ Vec3 hertz_force(double ra, double rb, const Vec3& d) {
 ContactSystem make_system(std::vector<Vec3> x, std::vector<double> r, double strain) {
   LeesEdwardsBox box(kSide);
   box.set_strain(strain);
-  return ContactSystem(Particles(std::move(x), std::move(r)), box,
-                       testing::named_law("hertz"), 0.1);
+  return ContactSystem(Particles(std::move(x), std::move(r)), box, testing::named_law("hertz"),
+                       0.1);
 }
 
 Eigen::Matrix3d elastic_stress(ContactSystem& system) {
@@ -44,8 +44,9 @@ Eigen::Matrix3d elastic_stress(ContactSystem& system) {
 void expect_tensor_near(const Eigen::Matrix3d& actual, const Eigen::Matrix3d& expected) {
   const double scale = expected.cwiseAbs().maxCoeff();
   ASSERT_GT(scale, 0.0);
-  EXPECT_LE((actual - expected).cwiseAbs().maxCoeff(), 1e-13 * scale)
-      << "actual\n" << actual << "\nexpected\n" << expected;
+  EXPECT_LE((actual - expected).cwiseAbs().maxCoeff(), 1e-13 * scale) << "actual\n"
+                                                                      << actual << "\nexpected\n"
+                                                                      << expected;
 }
 
 TEST(VirialStress, CompressionalPairHasPositiveShearStress) {
