@@ -8,14 +8,14 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "${1:-$here/../build}" && pwd)
 threads_all=$(nproc)
-printf "%-9s %-8s %-14s %-12s %-14s %-14s\n" N threads ns/particle-step steps/s engine_B/particle peakRSS_B/particle
+printf "%-9s %-8s %-17s %-18s %-18s %-18s\n" N threads ns/particle-step particle-steps/s engine_B/particle peakRSS_B/particle
 for spec in "1000 1 2000" "1250 2 1000" "800 5 200" "1000 10 40"; do
   read -r base tile steps <<< "$spec"
   for t in 1 "$threads_all"; do
     out=$("$build/bench/engine_bench" --base "$base" --tile "$tile" --phi 0.80 --law hertz --skin 0.6 \
           --steps "$steps" --strain-per-step 2e-6 --threads "$t")
     get() { awk -v k="$1" '$1==k{print $2}' <<< "$out"; }
-    printf "%-9s %-8s %-14s %-12s %-14s %-14s\n" "$(get particles)" "$t" "$(get ns_per_particle_step)" \
+    printf "%-9s %-8s %-17s %-18s %-18s %-18s\n" "$(get particles)" "$t" "$(get ns_per_particle_step)" \
       "$(get particle_steps_per_second)" "$(get engine_bytes_per_particle)" "$(get peak_rss_bytes_per_particle)"
   done
 done

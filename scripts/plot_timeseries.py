@@ -31,7 +31,7 @@ def main(out, files):
             gamma = f["shear/gamma_tilde"][()]
     for ax, ylabel in zip(axes, [r"$\sigma/E^*$", r"$N_1/E^*$", r"$N_2/E^*$", r"layering $S_y$"]):
         ax.set_ylabel(ylabel)
-    axes[3].axhline(20, color="k", ls=":", lw=0.8)
+    axes[3].axhline(50, color="k", ls=":", lw=0.8)  # kLayeredThreshold (micro/analysis/layering.h)
     axes[3].set_yscale("log")
     axes[3].set_xlabel("strain")
     axes[0].set_title(rf"$\tilde\gamma$ = {gamma:.0e}")

@@ -63,7 +63,7 @@ TEST(ContactLaw, Seth2011MatchesTheSpecBranches) {
   // continuity (pow(0.1, −1/2) rather than √10): a few ulp, hence 1e-14.
   const auto seth = law("seth2011");
   for (double eps : kSamples) {
-    const Branch& b = branch_at(seth2011_spec(), eps);
+    const Branch b = branch_at(seth2011_spec(), eps);
     const double expected = b.a * std::pow(eps, b.n);
     EXPECT_NEAR(seth->force(eps) / expected, 1.0, 1e-14) << "eps " << eps;
     EXPECT_NEAR(seth->stiffness(eps) / (b.a * b.n * std::pow(eps, b.n - 1)), 1.0, 1e-14)
