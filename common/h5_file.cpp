@@ -390,6 +390,10 @@ bool H5Group::has_attribute(const std::string& name) const {
   return H5Aexists(id_.get(), name.c_str()) > 0;
 }
 
+void H5Group::remove_child(const std::string& name) {
+  check(H5Ldelete(id_.get(), name.c_str(), H5P_DEFAULT), "cannot remove '" + name + "' from '" + path() + "'");
+}
+
 // Names are fetched by index rather than through H5Literate's callback, which
 // a C++ exception must not cross.
 std::vector<std::string> H5Group::children() const {
@@ -499,7 +503,11 @@ H5File H5File::create(const std::filesystem::path& path) {
                     "cannot create HDF5 file '" + path.native() + "'"));
 }
 
-H5File H5File::open(const std::filesystem::path& path) {
+H5File H5File::open(const std::filesystem::path& path) { return open_with(path, H5F_ACC_RDONLY); }
+
+H5File H5File::open_for_update(const std::filesystem::path& path) { return open_with(path, H5F_ACC_RDWR); }
+
+H5File H5File::open_with(const std::filesystem::path& path, unsigned mode) {
   silence_hdf5_errors();
   const auto quoted = "'" + path.native() + "'";
   std::error_code ignored;
@@ -511,7 +519,7 @@ H5File H5File::open(const std::filesystem::path& path) {
       check<InputError>(H5Fis_hdf5(path.c_str()), "cannot read " + quoted) == 0) {
     throw InputError(quoted + " is not an HDF5 file");
   }
-  return H5File(own<InputError>(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT),
+  return H5File(own<InputError>(H5Fopen(path.c_str(), mode, H5P_DEFAULT),
                                 "cannot open HDF5 file " + quoted));
 }
 

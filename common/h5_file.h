@@ -89,6 +89,8 @@ class H5Group {
   bool has_child(const std::string& name) const;
   /// Whether this group has the attribute `name`.
   bool has_attribute(const std::string& name) const;
+  /// Removes the link `name` (a group with all it holds, or a dataset).
+  void remove_child(const std::string& name);
   /// Names of the groups and datasets directly below, in alphabetical order.
   std::vector<std::string> children() const;
 
@@ -171,6 +173,9 @@ class H5File {
   /// Opens `path` read-only; InputError naming the path if it is missing or
   /// not an HDF5 file.
   static H5File open(const std::filesystem::path& path);
+  /// Opens `path` for reading and writing (same checks as open). Pair it with
+  /// AtomicOutput on a copy so that a failed update leaves the original whole.
+  static H5File open_for_update(const std::filesystem::path& path);
 
   /// The root group "/".
   H5Group root() const;
@@ -182,6 +187,7 @@ class H5File {
 
  private:
   explicit H5File(detail::H5Id id) : id_(std::move(id)) {}
+  static H5File open_with(const std::filesystem::path& path, unsigned mode);
 
   detail::H5Id id_;
 };

@@ -11,9 +11,11 @@
 #include "common/progress.h"
 #include "micro/analysis/layering.h"
 #include "micro/analysis/packing_average.h"
+#include "micro/analysis/run_structure.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/app/parameter_file.h"
 #include "micro/io/run_file.h"
+#include "micro/io/structure_csv.h"
 
 namespace softglass::micro {
 
@@ -44,6 +46,7 @@ Prepared prepare(const CommandOptions& options, const std::string& command, Atom
 
   RunRecord& record = p.record;
   record.command = command;
+  record.contact_law = prm.contact_law;
   record.parameters = prm.text;
   record.timings.threads = omp_get_max_threads();
 
@@ -122,6 +125,18 @@ void print_shear(const ShearRecord& s, double particles) {
       particles * double(c.evaluations) / std::max(r.seconds, 1e-9));
 }
 
+void print_structure(const StructureRecord& record) {
+  const StructureResult& s = record.result;
+  fmt::print("structure {} snapshots (strain {:.1f} to {:.1f}): r_m = {:.4f} ± {:.4f} R, "
+             "f_m = {:.4e} E*R², Sigma_m = {:.4e} / R²\n",
+             s.snapshots, record.strain_from, record.strain_to, s.r_m.value, s.r_m.error, s.f_m.value,
+             s.sigma_m.value);
+  fmt::print("          sigma^e: virial {:.5e} ± {:.1e}, rebuilt from the structure {:.5e}, "
+             "from g_2-2 and the mean-radius force {:.5e}, f_m Sigma_m {:.5e} ± {:.1e}\n",
+             s.sigma_virial.value, s.sigma_virial.error, s.sigma_rebuilt.value, s.sigma_law.value,
+             s.fm_sigma_m.value, s.fm_sigma_m.error);
+}
+
 void finish(RunRecord& record, AtomicOutput& out, Clock::time_point start) {
   record.timings.total = seconds_since(start);
   write_run_file(out.temporary_path(), record);
@@ -165,8 +180,29 @@ void run_command(const CommandOptions& options) {
   shear.final_box = flow.system().box();
   record.timings.shear = seconds_since(shear_start);
   print_shear(shear, static_cast<double>(record.packing.particles));
+  const std::vector<Snapshot> stationary = stationary_snapshots(shear.result);
+  if (stationary.size() >= 2) {
+    record.structure = analyse_snapshots(stationary, shear.final_particles.radius, shear.final_box.side(),
+                                         *p.law, prm.structure);
+    print_structure(*record.structure);
+  }
   record.shear = std::move(shear);
   finish(record, *out, start);
+}
+
+void analyze_command(const AnalyzeOptions& options) {
+  const StoredSnapshots stored = read_stationary_snapshots(options.run_file);
+  StructureSettings settings;  // defaults, overridden by the options
+  if (options.bin_width) settings.bin_width = *options.bin_width;
+  if (options.slab) settings.slab = *options.slab;
+  const auto law = make_contact_law(stored.contact_law);
+  const StructureRecord record =
+      analyse_snapshots(stored.snapshots, stored.radius, stored.side, *law, settings);
+  if (!options.csv_prefix.empty()) write_structure_csv(options.csv_prefix, record, options.force);
+  update_structure(options.run_file, record, options.force);
+  print_structure(record);
+  fmt::print("written  {} (/structure){}\n", options.run_file.string(),
+             options.csv_prefix.empty() ? "" : ", " + options.csv_prefix + "_*.csv");
 }
 
 void summary_command(const std::vector<std::filesystem::path>& runs,

@@ -3,6 +3,8 @@
 //   micro pack FILE.prm      make and relax a packing, measure Z, ε, Π, G0
 //   micro run FILE.prm       pack, shear at one γ̃ until stationary, summarise
 //   micro template           print a documented parameter file
+//   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
+//   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
 //   micro summary A.h5 B.h5  average runs of one state point over packings
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
@@ -54,6 +56,18 @@ int main(int argc, char** argv) {
   add_run_options(run);
   CLI::App* tmpl =
       app.add_subcommand("template", "print a documented parameter file with all defaults");
+  CLI::App* analyze = app.add_subcommand(
+      "analyze", "structure of a run's stationary part: g(r, theta), g_lm(r), r_m, f_m Sigma_m");
+  micro::AnalyzeOptions analyze_options;
+  double bin_width = 0.0, slab = 0.0;
+  analyze->add_option("run_file", analyze_options.run_file, "result file of `micro run` (HDF5)")->required();
+  analyze->add_option("--csv", analyze_options.csv_prefix,
+                      "also write PREFIX_harmonics.csv, PREFIX_map.csv, PREFIX_summary.csv");
+  analyze->add_option("--bin-width", bin_width, "radial bin width of g_lm(r), units of R (default 0.02)")
+      ->check(CLI::Range(1e-4, 0.5));
+  analyze->add_option("--slab", slab, "half-width of the flow-gradient slab of g(r, theta), units of R (default 0.25)")
+      ->check(CLI::Range(1e-3, 1.0));
+  analyze->add_flag("-f,--force", analyze_options.force, "replace an existing analysis and CSV files");
   CLI::App* summary =
       app.add_subcommand("summary", "average run files of one state point over their packings");
   std::vector<std::filesystem::path> run_files;
@@ -76,6 +90,11 @@ int main(int argc, char** argv) {
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
     if (*summary) micro::summary_command(run_files, csv, options.force);
+    if (*analyze) {
+      if (bin_width > 0.0) analyze_options.bin_width = bin_width;
+      if (slab > 0.0) analyze_options.slab = slab;
+      micro::analyze_command(analyze_options);
+    }
   } catch (const InputError& e) {
     return fail(kExitBadInput, e.what());
   } catch (const OutputExistsError& e) {

@@ -106,6 +106,9 @@ void declare(ParameterHandler& prm, Entries& e) {
   entry(prm, "min stationary strain", p.protocol.min_stationary_strain,
         "The averaged (stationary) window must span at least this strain.",
         Patterns::Double(0.0, 1e6));
+  entry(prm, "snapshot interval", p.protocol.snapshot_interval,
+        "Strain between configurations stored for structure analysis (0: none).",
+        Patterns::Double(0.0, 1e6));
   entry(prm, "target relative error", p.protocol.target_relative_error,
         "Stop when the standard errors of sigma, N1 and N2 are below this fraction "
         "of their means.",
@@ -135,6 +138,21 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Double(0.01, 0.99));
   entry(prm, "max step", p.integrator.max_step, "Largest step (strain).",
         Patterns::Double(1e-12, 1.0));
+  prm.leave_subsection();
+
+  prm.enter_subsection("structure");
+  entry(prm, "bin width", p.structure.bin_width, "Radial bin width of g_lm(r), units of R.",
+        Patterns::Double(1e-4, 0.5));
+  entry(prm, "range", p.structure.range, "Largest pair distance analysed, units of R.",
+        Patterns::Double(2.0, 10.0));
+  entry(prm, "slab half-width", p.structure.slab,
+        "g(r, theta) in the flow-gradient plane counts pairs with |dz| below this, units of R.",
+        Patterns::Double(1e-3, 1.0));
+  entry(prm, "map bin width", p.structure.map_bin_width, "Radial bin width of g(r, theta).",
+        Patterns::Double(1e-3, 0.5));
+  entry(prm, "angle bins", p.structure.angle_bins, "Angular bins of g(r, theta).", Patterns::Integer(8, 720));
+  entry(prm, "batches", p.structure.batches, "Batches of snapshots for the error estimates.",
+        Patterns::Integer(2, 1000));
   prm.leave_subsection();
 
   prm.enter_subsection("neighbours");
@@ -216,6 +234,7 @@ MicroParameters read_parameter_file(const std::filesystem::path& file) {
   p.shear_model.validate();
   p.protocol.validate();
   p.integrator.validate();
+  p.structure.validate();
 
   std::ostringstream text;
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "micro/analysis/structure.h"
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/integrator.h"
 #include "micro/dynamics/overdamped_shear.h"
@@ -21,6 +22,7 @@ struct MicroParameters {
   ShearModel shear_model;
   ShearProtocol protocol;
   IntegratorSpec integrator;
+  StructureSettings structure;
   std::filesystem::path output_file = "micro.h5";
   bool overwrite = false;
 

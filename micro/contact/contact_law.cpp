@@ -4,7 +4,9 @@
 #include <fmt/ranges.h>
 
 #include <array>
+#include <fstream>
 #include <functional>
+#include <iterator>
 
 #include "common/errors.h"
 
@@ -37,6 +39,13 @@ double ContactLaw::stiffness(double deformation) const {
   double f = 0.0, k = 0.0;
   evaluate({&deformation, 1}, {&f, 1}, {&k, 1});
   return k;
+}
+
+std::string ContactLawSpec::table() const {
+  if (name != "table" || !table_text.empty()) return table_text;
+  std::ifstream in(table_file);
+  if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", table_file.string()));
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::vector<std::string> contact_law_names() {

@@ -48,7 +48,12 @@ class ContactLaw {
 
 struct ContactLawSpec {
   std::string name = "seth2011";
-  std::filesystem::path table_file;  // for name = "table"
+  std::filesystem::path table_file{};  // for name = "table": the file, or
+  std::string table_text{};            // its contents (as stored in a result file)
+
+  /// The table's contents, read from table_file unless table_text holds them;
+  /// empty for other laws. InputError if the file cannot be read.
+  std::string table() const;
 };
 
 /// The law named in `spec`; InputError for an unknown name or a bad table.

@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "common/errors.h"
@@ -23,9 +22,8 @@ struct Point {
   double eps, force;
 };
 
-std::vector<Point> read_points(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", file.string()));
+std::vector<Point> read_points(const std::string& text, const std::filesystem::path& file) {
+  std::istringstream in(text);
   std::vector<Point> points;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -78,7 +76,8 @@ PiecewisePowerLaw interpolate(const std::vector<Point>& p) {
 
 class TableLaw final : public ContactLawImpl<TableLaw> {
  public:
-  explicit TableLaw(const std::filesystem::path& file) : law_(interpolate(read_points(file))) {}
+  TableLaw(const std::string& text, const std::filesystem::path& file)
+      : law_(interpolate(read_points(text, file))) {}
 
   std::string name() const override { return "table"; }
 
@@ -95,10 +94,10 @@ class TableLaw final : public ContactLawImpl<TableLaw> {
 }  // namespace
 
 std::unique_ptr<ContactLaw> make_table_law(const ContactLawSpec& spec) {
-  if (spec.table_file.empty()) {
+  if (spec.table_file.empty() && spec.table_text.empty()) {
     throw InputError("contact law 'table' needs a table file (parameter 'table file')");
   }
-  return std::make_unique<TableLaw>(spec.table_file);
+  return std::make_unique<TableLaw>(spec.table(), spec.table_file);
 }
 
 }  // namespace softglass::micro

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <ctime>
 
+#include "common/atomic_output.h"
 #include "common/errors.h"
 #include "common/h5_file.h"
 #include "common/version.h"
@@ -117,6 +118,65 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   c.set_attribute("largest_step", k.largest_step);
 
   write_configuration(g.create_group("configuration"), s.final_particles, s.final_box);
+
+  if (!r.snapshots.empty()) {
+    H5Group snapshots = g.create_group("snapshots");
+    std::vector<double> strain, position;
+    for (const Snapshot& snap : r.snapshots) {
+      strain.push_back(snap.strain);
+      for (const Vec3& x : snap.position) position.insert(position.end(), {x.x(), x.y(), x.z()});
+    }
+    const std::size_t n = r.snapshots.front().position.size();
+    snapshots.write("strain", strain, {}, {"1", "strain of each stored configuration"});
+    snapshots.write("position", position, {strain.size(), 3 * n},
+                    {"R", "configurations [snapshot][3 i + axis], label order, in the cell"});
+  }
+}
+
+void write_structure(H5Group&& g, const StructureRecord& record) {
+  const StructureResult& s = record.result;
+  g.set_attribute("snapshots", static_cast<std::int64_t>(s.snapshots));
+  g.set_attribute("strain_from", record.strain_from);
+  g.set_attribute("strain_to", record.strain_to);
+  g.set_attribute("bin_width", s.settings.bin_width);
+  g.set_attribute("slab_half_width", s.settings.slab);
+  g.set_attribute("map_bin_width", s.settings.map_bin_width);
+  g.set_attribute("angle_bins", static_cast<std::int64_t>(s.settings.angle_bins));
+  g.set_attribute("batches", static_cast<std::int64_t>(s.settings.batches));
+  g.set_attribute("number_density", s.number_density);
+  g.write("r", s.r, {}, {"R", "centres of the radial bins"});
+  const auto table = [&](const std::array<std::vector<double>, 6>& h) {
+    std::vector<double> flat;
+    for (const auto& row : h) flat.insert(flat.end(), row.begin(), row.end());
+    return flat;
+  };
+  const std::string order = "rows: g00, g2-2, g2-1, g20, g21, g22";
+  g.write("g", table(s.g), {6, s.r.size()}, {"1", "g_lm(r), real orthonormal harmonics, polar axis z; " + order});
+  g.write("g_error", table(s.g_error), {6, s.r.size()}, {"1", "standard error of g_lm(r) (batch means)"});
+  g.write("fg", table(s.fg), {6, s.r.size()},
+          {"E* R^2", "force-weighted moments (fg)_lm(r), which rebuild the virial stress; " + order});
+  g.write("fg_error", table(s.fg_error), {6, s.r.size()}, {"E* R^2", "standard error of (fg)_lm(r)"});
+  g.write("map_r", s.map_r, {}, {"R", "radial bin centres of g(r, theta)"});
+  g.write("map_theta", s.map_theta, {}, {"rad", "angle from the flow axis x towards the gradient axis y"});
+  g.write("map", s.map, {s.map_r.size(), s.map_theta.size()},
+          {"1", "g(r, theta) in the flow-gradient plane, pairs with |dz| < slab_half_width"});
+  const auto estimate = [&](const char* name, const Estimate& e, const char* units, const char* what) {
+    const double pair[2] = {e.value, e.error};
+    g.write(name, std::span<const double>(pair, 2), {}, {units, std::string(what) + " [value, standard error]"});
+  };
+  estimate("r_m", s.r_m, "R", "radius of the minimum of g_{2,-2}");
+  estimate("f_m", s.f_m, "E* R^2", "elastic force at r_m between two particles of the mean radius");
+  estimate("sigma_m", s.sigma_m, "1/R^2", "Sigma_m = -n^2 sqrt(pi/15) int r^3 g_{2,-2} dr where g_{2,-2} < 0");
+  estimate("fm_sigma_m", s.fm_sigma_m, "E*", "f_m Sigma_m, the paper's estimate of sigma^e");
+  estimate("sigma_virial", s.sigma_virial, "E*", "elastic shear stress, virial");
+  estimate("sigma_rebuilt", s.sigma_rebuilt, "E*", "elastic shear stress from the force-weighted moments");
+  estimate("N1_virial", s.n1_virial, "E*", "elastic N1, virial");
+  estimate("N1_rebuilt", s.n1_rebuilt, "E*", "elastic N1 from the force-weighted moments");
+  estimate("N2_virial", s.n2_virial, "E*", "elastic N2, virial");
+  estimate("N2_rebuilt", s.n2_rebuilt, "E*", "elastic N2 from the force-weighted moments");
+  estimate("sigma_law", s.sigma_law, "E*", "elastic shear stress from g_lm with the mean-radius force f(r)");
+  estimate("N1_law", s.n1_law, "E*", "elastic N1 from g_lm with the mean-radius force f(r)");
+  estimate("N2_law", s.n2_law, "E*", "elastic N2 from g_lm with the mean-radius force f(r)");
 }
 
 std::string now_iso8601() {
@@ -161,7 +221,14 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
   write_configuration(p.create_group("configuration"), record.packing_particles,
                       record.packing_box);
 
-  if (record.shear) write_shear(root.create_group("shear"), *record.shear);
+  if (record.shear) {
+    H5Group shear = root.create_group("shear");
+    shear.set_attribute("contact_law", record.contact_law.name);
+    const std::string table = record.contact_law.table();
+    if (!table.empty()) shear.write_string("contact_law_table", table, {"", "the table law's data"});
+    write_shear(std::move(shear), *record.shear);
+  }
+  if (record.structure) write_structure(root.create_group("structure"), *record.structure);
   file.close();
 }
 
@@ -266,6 +333,67 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
     s.observables.push_back({name, e});
   }
   return s;
+}
+
+}  // namespace softglass::micro
+
+namespace softglass::micro {
+
+StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
+  const H5File file = H5File::open(path);
+  const H5Group root = file.root();
+  if (!root.has_child("shear") || !root.group("shear").has_child("snapshots")) {
+    throw InputError(fmt::format("'{}' holds no stored configurations (a sheared run with 'snapshot "
+                                 "interval' > 0 is needed)",
+                                 path.string()));
+  }
+  const H5Group shear = root.group("shear");
+  StoredSnapshots s;
+  s.contact_law.name = shear.attribute_string("contact_law");
+  if (shear.has_child("contact_law_table")) s.contact_law.table_text = shear.read_string("contact_law_table");
+  const H5Group configuration = shear.group("configuration");
+  s.radius = configuration.read_array("radius").data;
+  s.side = configuration.read_scalar("side");
+  const double first = shear.group("timeseries").read_array("strain").data.front();
+  const double stationary_from = first + shear.group("summary").attribute_double("transient_strain");
+
+  const H5Group g = shear.group("snapshots");
+  const std::vector<double> strain = g.read_array("strain").data;
+  const H5Array position = g.read_array("position");
+  const std::size_t n = s.radius.size();
+  if (position.dims.size() != 2 || position.dims[0] != strain.size() || position.dims[1] != 3 * n) {
+    throw InputError(fmt::format("'{}': /shear/snapshots/position must have shape {} x {}", path.string(),
+                                 strain.size(), 3 * n));
+  }
+  for (std::size_t k = 0; k < strain.size(); ++k) {
+    if (strain[k] < stationary_from - 1e-9) continue;
+    Snapshot snap{strain[k], std::vector<Vec3>(n)};
+    const double* p = &position.data[k * 3 * n];
+    for (std::size_t i = 0; i < n; ++i) snap.position[i] = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    s.snapshots.push_back(std::move(snap));
+  }
+  return s;
+}
+
+void update_structure(const std::filesystem::path& path, const StructureRecord& structure, bool replace) {
+  {
+    const H5File check = H5File::open(path);
+    if (check.root().has_child("structure") && !replace) {
+      throw OutputExistsError(fmt::format("'{}' holds a structure analysis already; pass --force to "
+                                          "replace it",
+                                          path.string()));
+    }
+  }
+  AtomicOutput out(path, /*overwrite=*/true);
+  std::filesystem::copy_file(path, out.temporary_path(), std::filesystem::copy_options::overwrite_existing);
+  {
+    H5File file = H5File::open_for_update(out.temporary_path());
+    H5Group root = file.root();
+    if (root.has_child("structure")) root.remove_child("structure");
+    write_structure(root.create_group("structure"), structure);
+    file.close();
+  }
+  out.commit();
 }
 
 }  // namespace softglass::micro

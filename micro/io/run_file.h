@@ -13,6 +13,7 @@
 #include <string>
 
 #include "micro/analysis/shear_modulus.h"
+#include "micro/analysis/structure.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
 
@@ -30,6 +31,12 @@ struct ShearRecord {
   LeesEdwardsBox final_box;
 };
 
+/// The structure of the stationary part of a run and where it came from.
+struct StructureRecord {
+  StructureResult result;
+  double strain_from = 0.0, strain_to = 0.0;  // the snapshots' strain window
+};
+
 struct RunRecord {
   std::string command;     // "pack" or "run"
   std::string parameters;  // the complete parameter file, defaults included
@@ -38,6 +45,8 @@ struct RunRecord {
   Particles packing_particles;  // the relaxed packing, label order
   LeesEdwardsBox packing_box;
   std::optional<ShearRecord> shear;
+  std::optional<StructureRecord> structure;
+  ContactLawSpec contact_law;  // stored so that structure can be analysed again
   Timings timings;
 };
 
@@ -67,5 +76,21 @@ struct StoredRunSummary {
   std::vector<ObservableEstimate> observables;  // shear_observable_names() order
 };
 StoredRunSummary read_run_summary(const std::filesystem::path& path);
+
+/// What structure analysis needs from a run file: the snapshots of its
+/// stationary part, the radii, the cell and the contact law.
+struct StoredSnapshots {
+  std::vector<Snapshot> snapshots;  // stationary part only
+  std::vector<double> radius;       // label order
+  double side = 0.0;
+  ContactLawSpec contact_law;
+};
+StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path);
+
+/// Writes (or, with `replace`, rewrites) the /structure group of an existing
+/// run file; the file is updated through a copy renamed over it, so that a
+/// failure leaves it as it was. OutputExistsError if /structure exists and
+/// `replace` is false.
+void update_structure(const std::filesystem::path& path, const StructureRecord& structure, bool replace);
 
 }  // namespace softglass::micro

@@ -36,6 +36,10 @@ void ShearProtocol::validate() const {
   require(min_stationary_strain >= 20 * sample_interval,
           fmt::format("minimum stationary strain = {} holds fewer than 20 samples",
                       min_stationary_strain));
+  require(snapshot_interval == 0.0 ||
+              (snapshot_interval >= sample_interval && std::isfinite(snapshot_interval)),
+          fmt::format("snapshot interval = {} must be 0 (none) or at least the sample interval {}",
+                      snapshot_interval, sample_interval));
   require(target_relative_error > 0.0 && target_relative_error < 1.0,
           fmt::format("target relative error = {} is outside (0, 1)", target_relative_error));
 }
@@ -139,6 +143,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
   const std::size_t builds_before = flow.system().neighbours().builds();
   std::size_t sweeps = 0, newton = 0, cg = 0;
 
+  double next_snapshot = 0.0;  // strain since the start
   flow.sample_stress_from(-std::numeric_limits<double>::infinity());
   flow.evaluate();  // the first sample
   const auto record = [&] {
@@ -151,6 +156,12 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
     series.layering.push_back(
         gradient_layering(flow.system().particles().position, flow.system().box().side()).order);
     series.step.push_back(integrator.stats().last_step);
+    // Snapshots on the samples nearest to each multiple of the snapshot interval.
+    if (protocol.snapshot_interval > 0.0 &&
+        flow.strain() - start >= next_snapshot - 1e-9 * protocol.sample_interval) {
+      result.snapshots.push_back({flow.strain(), flow.system().wrapped_in_label_order().position});
+      next_snapshot += protocol.snapshot_interval;
+    }
   };
   record();
 

@@ -28,6 +28,7 @@ namespace softglass::micro {
 
 struct ShearProtocol {
   double sample_interval = 0.01;
+  double snapshot_interval = 0.1;  // strain between stored configurations (0: none)
   double check_interval = 1.0;
   double min_strain = 5.0;
   double max_strain = 200.0;
@@ -84,8 +85,15 @@ struct ShearCounters {
   double smallest_step = 0.0, largest_step = 0.0;
 };
 
+/// A configuration of the run, for structure analysis afterwards.
+struct Snapshot {
+  double strain;
+  std::vector<Vec3> position;  // label order, in the cell
+};
+
 struct ShearResult {
   TimeSeries series;
+  std::vector<Snapshot> snapshots;
   ShearSummary summary;
   ShearCounters counters;
   bool converged = false;

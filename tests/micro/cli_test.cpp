@@ -254,3 +254,38 @@ TEST_F(MicroCli, RunWritesATimeSeries) {
 
 }  // namespace
 }  // namespace softglass::micro
+
+namespace softglass::micro {
+namespace {
+
+TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
+  // A short run stores snapshots every 0.02 strain; `analyze` adds /structure
+  // and the CSV tables, refuses to replace them without --force (exit 3) and a
+  // file with no snapshots (exit 2).
+  const std::string prm = parameters(
+      "run.prm", kTiny +
+                     "subsection shear\n  set gamma dot tilde = 1e-4\n  set min strain = 0.4\n"
+                     "  set max strain = 0.4\n  set min stationary strain = 0.2\n"
+                     "  set snapshot interval = 0.02\nend\n");
+  ASSERT_EQ(micro("run --quiet -o run.h5 " + prm).code, 0);
+  const StoredSnapshots stored = read_stationary_snapshots(work() / "run.h5");
+  EXPECT_GE(stored.snapshots.size(), 2u);
+  EXPECT_EQ(stored.contact_law.name, "seth2011");
+
+  const Outcome again = micro("analyze run.h5 --csv run");  // the run wrote /structure already
+  EXPECT_EQ(again.code, 3) << again.err;
+  const Outcome forced = micro("analyze run.h5 --csv run --force --bin-width 0.01");
+  ASSERT_EQ(forced.code, 0) << forced.err;
+  for (const char* table : {"run_harmonics.csv", "run_map.csv", "run_summary.csv"}) {
+    EXPECT_TRUE(fs::exists(work() / table)) << table;
+  }
+  EXPECT_EQ(micro("analyze run.h5 --csv run").code, 3);  // CSV files exist now too
+
+  ASSERT_EQ(micro("pack --quiet " + parameters("tiny.prm", kTiny)).code, 0);
+  const Outcome none = micro("analyze tiny.h5");
+  EXPECT_EQ(none.code, 2) << none.err;
+  EXPECT_NE(none.err.find("no stored configurations"), std::string::npos) << none.err;
+}
+
+}  // namespace
+}  // namespace softglass::micro

@@ -1,0 +1,68 @@
+#include "micro/io/structure_csv.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <functional>
+#include <optional>
+
+#include "common/atomic_output.h"
+
+namespace softglass::micro {
+
+void write_structure_csv(const std::string& prefix, const StructureRecord& record, bool force) {
+  const StructureResult& s = record.result;
+  AtomicOutput harmonics(prefix + "_harmonics.csv", force), map(prefix + "_map.csv", force),
+      summary(prefix + "_summary.csv", force);
+  const auto write = [](AtomicOutput& out, const std::function<void(std::ofstream&)>& body) {
+    {
+      std::ofstream f(out.temporary_path());
+      body(f);
+      if (!f) throw std::runtime_error("writing " + out.temporary_path().string() + " failed");
+    }
+    out.commit();
+  };
+
+  write(harmonics, [&](std::ofstream& f) {
+    f << "r [R]";
+    for (const char* name : kHarmonicNames) f << "," << name << " [1]," << name << "_error [1]";
+    for (const char* name : kHarmonicNames) f << ",f" << name << " [E* R^2],f" << name << "_error [E* R^2]";
+    f << "\n";
+    for (std::size_t b = 0; b < s.r.size(); ++b) {
+      f << fmt::format("{:.6g}", s.r[b]);
+      for (int h = 0; h < 6; ++h) f << fmt::format(",{:.8e},{:.3e}", s.g[h][b], s.g_error[h][b]);
+      for (int h = 0; h < 6; ++h) f << fmt::format(",{:.8e},{:.3e}", s.fg[h][b], s.fg_error[h][b]);
+      f << "\n";
+    }
+  });
+  write(map, [&](std::ofstream& f) {
+    f << fmt::format("# g(r, theta), pairs with |dz| < {} R\n", s.settings.slab);
+    f << "r [R],theta [rad],g [1]\n";
+    for (std::size_t b = 0; b < s.map_r.size(); ++b)
+      for (std::size_t t = 0; t < s.map_theta.size(); ++t)
+        f << fmt::format("{:.6g},{:.6g},{:.6e}\n", s.map_r[b], s.map_theta[t], s.map[b * s.map_theta.size() + t]);
+  });
+  write(summary, [&](std::ofstream& f) {
+    f << fmt::format("# {} snapshots, strain {:.3f} to {:.3f}\n", s.snapshots, record.strain_from,
+                     record.strain_to);
+    f << "quantity,value,standard_error,units\n";
+    const auto row = [&](const char* name, const Estimate& e, const char* units) {
+      f << fmt::format("{},{:.8e},{:.3e},{}\n", name, e.value, e.error, units);
+    };
+    row("r_m", s.r_m, "R");
+    row("f_m", s.f_m, "E* R^2");
+    row("Sigma_m", s.sigma_m, "1/R^2");
+    row("f_m Sigma_m", s.fm_sigma_m, "E*");
+    row("sigma_elastic virial", s.sigma_virial, "E*");
+    row("sigma_elastic rebuilt", s.sigma_rebuilt, "E*");
+    row("N1_elastic virial", s.n1_virial, "E*");
+    row("N1_elastic rebuilt", s.n1_rebuilt, "E*");
+    row("N2_elastic virial", s.n2_virial, "E*");
+    row("N2_elastic rebuilt", s.n2_rebuilt, "E*");
+    row("sigma_elastic mean-radius law", s.sigma_law, "E*");
+    row("N1_elastic mean-radius law", s.n1_law, "E*");
+    row("N2_elastic mean-radius law", s.n2_law, "E*");
+  });
+}
+
+}  // namespace softglass::micro
