@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -14,6 +16,8 @@ namespace softglass::micro {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// Half-width of the parabola fitted around the minimum of g_{2,−2}, units of R.
+constexpr double kMinimumWindow = 0.06;
 
 // Real orthonormal spherical harmonics l = 0, 2 of the unit vector u, in the
 // order of kHarmonicNames.
@@ -169,13 +173,24 @@ Derived derive(const StructureSample& sum, double count, std::size_t particles, 
   d.n1_virial = sigma(0, 0) - sigma(1, 1);
   d.n2_virial = sigma(1, 1) - sigma(2, 2);
 
-  // r_m: minimum of g_{2,−2}, refined by a parabola through its neighbours.
+  // r_m: minimum of g_{2,−2}, refined by the vertex of a least-squares parabola
+  // over ±kMinimumWindow around the lowest bin (a 3-point parabola follows the
+  // noise of single bins when the minimum is broad).
   const std::vector<double>& g = d.g[1];
   const auto lowest = static_cast<std::size_t>(std::min_element(g.begin(), g.end()) - g.begin());
   d.r_m = (lowest + 0.5) * dr;
-  if (lowest > 0 && lowest + 1 < g.size()) {
-    const double curvature = g[lowest - 1] - 2.0 * g[lowest] + g[lowest + 1];
-    if (curvature > 0.0) d.r_m += 0.5 * dr * (g[lowest - 1] - g[lowest + 1]) / curvature;
+  const auto half = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(kMinimumWindow / dr)));
+  if (lowest >= half && lowest + half < g.size()) {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (std::size_t b = lowest - half; b <= lowest + half; ++b) {
+      const double t = (static_cast<double>(b) - static_cast<double>(lowest)) * dr;  // centred
+      const Eigen::Vector3d basis(1.0, t, t * t);
+      normal += basis * basis.transpose();
+      rhs += basis * g[b];
+    }
+    const Eigen::Vector3d c = normal.ldlt().solve(rhs);
+    if (c(2) > 0.0) d.r_m += std::clamp(-c(1) / (2.0 * c(2)), -kMinimumWindow, kMinimumWindow);
   }
   d.f_m = mean_pair_force(law, d.r_m);
   std::size_t lo = lowest, hi = lowest;
