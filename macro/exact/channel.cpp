@@ -1,0 +1,41 @@
+#include "macro/exact/channel.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "macro/exact/rate_moment.h"
+
+namespace softglass::macro::exact {
+
+double wall_stress(const PlaneChannel& channel) {
+  return channel.pressure_gradient * channel.half_height;
+}
+
+double plug_half_width(const HerschelBulkley& law, const PlaneChannel& channel) {
+  return std::min(law.yield_stress / channel.pressure_gradient, channel.half_height);
+}
+
+double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel) {
+  const double tau_w = wall_stress(channel), phi = law.yield_stress / tau_w;
+  if (phi >= 1.0) return 0.0;
+  const double n = law.flow_index, H = channel.half_height;
+  return 2.0 * H * H * std::pow(tau_w / law.consistency, 1.0 / n) * n *
+         std::pow(1.0 - phi, (n + 1.0) / n) * ((1.0 - phi) / (2.0 * n + 1.0) + phi / (n + 1.0));
+}
+
+double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y) {
+  const double G = channel.pressure_gradient;
+  return (law.rate_integral(wall_stress(channel)) - law.rate_integral(G * std::abs(y))) / G;
+}
+
+double flow_rate(const RegularisedLaw& law, const PlaneChannel& channel) {
+  const double G = channel.pressure_gradient;
+  return 2.0 / (G * G) * rate_moment(law, 1, 0.0, wall_stress(channel));
+}
+
+double velocity(const RegularisedLaw& law, const PlaneChannel& channel, double y) {
+  const double G = channel.pressure_gradient;
+  return rate_moment(law, 0, G * std::abs(y), wall_stress(channel)) / G;
+}
+
+}  // namespace softglass::macro::exact

@@ -1,0 +1,135 @@
+#include "macro/material/material_parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "common/errors.h"
+
+namespace softglass::macro {
+
+namespace {
+
+namespace Patterns = dealii::Patterns;
+
+constexpr const char* kSubsection = "material";
+// Entries every file must set (the shear law in full).
+constexpr std::array kRequired{"model", "yield stress", "consistency", "flow index"};
+
+// deal.II's exception text, without source locations, on one line.
+std::string one_line(const dealii::ExceptionBase& error) {
+  std::ostringstream info;
+  error.print_info(info);
+  std::string text;
+  for (std::istringstream words(info.str()); words;) {
+    std::string word;
+    if (words >> word) text += (text.empty() ? "" : " ") + word;
+  }
+  return text;
+}
+
+// ParameterHandler reports entries by mangled path: "material.yield_20stress".
+std::string demangle(const std::string& path) {
+  std::string name;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    if (path[k] == '_' && k + 2 < path.size()) {
+      name += static_cast<char>(std::stoi(path.substr(k + 1, 2), nullptr, 16));
+      k += 2;
+    } else {
+      name += path[k];
+    }
+  }
+  return name;
+}
+
+void declare_normal_stress(dealii::ParameterHandler& prm, const std::string& name,
+                           const std::string& difference) {
+  prm.declare_entry(name + " yield", "0", Patterns::Double(),
+                    "N_y of " + difference + " = N_y + K_N gamma_dot^n_N [Pa]; any finite value.");
+  prm.declare_entry(name + " consistency", "0", Patterns::Double(),
+                    "K_N [Pa s^n_N]; any finite value (0: no rate dependence).");
+  prm.declare_entry(name + " flow index", "1", Patterns::Double(), "n_N [1]; > 0.");
+}
+
+NormalStressLaw normal_stress(const dealii::ParameterHandler& prm, const std::string& name) {
+  return {.yield = prm.get_double(name + " yield"),
+          .consistency = prm.get_double(name + " consistency"),
+          .flow_index = prm.get_double(name + " flow index")};
+}
+
+}  // namespace
+
+void declare_material(dealii::ParameterHandler& prm) {
+  prm.enter_subsection(kSubsection);
+  prm.declare_entry("model", "herschel-bulkley",
+                    Patterns::Selection(fmt::format("{}", fmt::join(model_names(), "|"))),
+                    "Shear law tau = tau_y + K gamma_dot^n above the yield stress: "
+                    "herschel-bulkley, bingham (n = 1), power-law (tau_y = 0) or newtonian "
+                    "(both). Required.",
+                    true);
+  prm.declare_entry("yield stress", "0", Patterns::Double(),
+                    "tau_y [Pa]; >= 0, and 0 for power-law and newtonian. Required.", true);
+  prm.declare_entry("consistency", "1", Patterns::Double(),
+                    "K [Pa s^n] (the viscosity for bingham and newtonian); > 0. Required.", true);
+  prm.declare_entry("flow index", "1", Patterns::Double(),
+                    "n [1]; 0 < n <= 2, and 1 for bingham and newtonian. Required.", true);
+  declare_normal_stress(prm, "N1", "the first normal stress difference N1");
+  declare_normal_stress(prm, "N2", "the second normal stress difference N2");
+  prm.leave_subsection();
+}
+
+Material read_material(dealii::ParameterHandler& prm) {
+  std::vector<std::string> missing;
+  for (const std::string& path : prm.get_entries_wrongly_not_set()) {
+    const std::string name = demangle(path);
+    for (const char* required : kRequired) {
+      if (name == fmt::format("{}.{}", kSubsection, required)) missing.push_back(required);
+    }
+  }
+  require(missing.empty(), fmt::format("material: required entries not set: '{}'",
+                                       fmt::join(missing, "', '")));
+  Material material;
+  prm.enter_subsection(kSubsection);
+  try {
+    material.model = parse_flow_model(prm.get("model"));
+    material.shear = {.yield_stress = prm.get_double("yield stress"),
+                      .consistency = prm.get_double("consistency"),
+                      .flow_index = prm.get_double("flow index")};
+    material.first_normal_stress_difference = normal_stress(prm, "N1");
+    material.second_normal_stress_difference = normal_stress(prm, "N2");
+  } catch (const dealii::ExceptionBase& error) {
+    // A value the pattern accepts but the conversion cannot represent (1e-400).
+    prm.leave_subsection();
+    throw InputError(fmt::format("material: {}", one_line(error)));
+  }
+  prm.leave_subsection();
+  validate(material);
+  return material;
+}
+
+Material parse_material(const std::string& text, const std::string& source) {
+  dealii::ParameterHandler prm;
+  declare_material(prm);
+  std::istringstream input(text);
+  try {
+    prm.parse_input(input, source, "", false);
+  } catch (const dealii::ExceptionBase& error) {
+    throw InputError(one_line(error));
+  }
+  return read_material(prm);
+}
+
+Material read_material_file(const std::filesystem::path& file) {
+  std::ifstream input(file);
+  require(input.good(), fmt::format("material file '{}' cannot be read", file.string()));
+  std::ostringstream text;
+  text << input.rdbuf();
+  return parse_material(text.str(), file.string());
+}
+
+}  // namespace softglass::macro

@@ -1,0 +1,39 @@
+// Reading the material fragment (docs/material-format.md) with deal.II's
+// ParameterHandler, the parameter syntax of every softglass tool.
+//
+// A scene file includes the fragment (`include material.prm`); its reader calls
+// declare_material() among its own declarations, parses, and calls
+// read_material(). Standalone fragments are read by read_material_file().
+//
+// `model`, `yield stress`, `consistency` and `flow index` must be set (also for
+// newtonian, where they read 0 and 1: a file states its law in full); the N1
+// and N2 entries default to zero (N_y = K_N = 0, n_N = 1). Every rule of
+// validate() (material.h) is then enforced. All problems raise InputError
+// (exit code 2) with one line naming the entry, its value and what is allowed.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "macro/material/material.h"
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace softglass::macro {
+
+/// Declares `subsection material` and its entries, documented with units and
+/// allowed values.
+void declare_material(dealii::ParameterHandler& prm);
+
+/// The material parsed into `prm` (declared by declare_material), validated.
+Material read_material(dealii::ParameterHandler& prm);
+
+/// Parses fragment text; `source` names it in messages.
+Material parse_material(const std::string& text, const std::string& source);
+
+/// Reads a file holding the fragment and nothing else.
+Material read_material_file(const std::filesystem::path& file);
+
+}  // namespace softglass::macro
