@@ -1,0 +1,139 @@
+#include "bridge/app/commands.h"
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include <ctime>
+#include <fstream>
+
+#include "bridge/app/law_file.h"
+#include "bridge/app/report.h"
+#include "bridge/law/law.h"
+#include "bridge/material/material.h"
+#include "bridge/output/tables.h"
+#include "bridge/sweep/analysis.h"
+#include "common/atomic_output.h"
+#include "common/errors.h"
+#include "common/progress.h"
+#include "common/version.h"
+
+namespace softglass::bridge {
+
+namespace {
+
+std::vector<std::string> provenance(const std::string& title, const std::string& command_line) {
+  return {title, "command:  " + command_line,
+          fmt::format("software: softglass {} ({}), {:%Y-%m-%d %H:%M:%S} UTC", kVersion,
+                      kGitRevision, fmt::gmtime(std::time(nullptr)))};
+}
+
+// A result file beside `main`: law.prm → law_phi.csv.
+std::filesystem::path beside(const std::filesystem::path& main, const std::string& suffix) {
+  return main.parent_path() / (main.stem().string() + suffix);
+}
+
+void write(AtomicOutput& out, const std::string& text) {
+  std::ofstream f(out.temporary_path(), std::ios::binary);
+  f << text;
+  f.close();
+  if (!f) throw std::runtime_error("writing " + out.temporary_path().string() + " failed");
+}
+
+}  // namespace
+
+void fit_command(const FitOptions& o, const std::string& command_line) {
+  // Refuse early, before any work, if a result exists.
+  AtomicOutput law_out(o.output, o.force), phi_out(beside(o.output, "_phi.csv"), o.force),
+      points_out(beside(o.output, "_points.csv"), o.force),
+      constants_out(beside(o.output, "_constants.csv"), o.force);
+  const FlowCurveTable table = read_flow_curve_table(CsvTable::read(o.table));
+  const Sweep sweep = make_sweep(table);
+  const std::unique_ptr<Resampler> resampler =
+      o.packings.empty()
+          ? make_parametric_resampler(sweep)
+          : make_packing_resampler(sweep, read_packing_runs(CsvTable::read(o.packings)),
+                                   o.packings.string());
+  Progress bar("bootstrap", static_cast<double>(o.replicates), o.quiet);
+  const SweepAnalysis a =
+      analyse_sweep(sweep, *resampler, {o.replicates, o.seed},
+                    [&](std::size_t done) { bar.update(static_cast<double>(done)); });
+  bar.finish();
+  print_fit_report(a, o.table.string());
+
+  std::vector<std::string> lines =
+      provenance("softglass bridge fit: the flow laws of a particle-engine sweep", command_line);
+  lines.push_back(fmt::format("input:    {} ({} state points, {} volume fractions){}",
+                              o.table.string(), sweep.points(), sweep.groups.size(),
+                              o.packings.empty() ? "" : ", runs " + o.packings.string()));
+  for (const std::string& c : table.comments) lines.push_back("input |   " + c);
+  lines.push_back("errors:   " + a.method);
+  for (const std::string& w : a.warnings) lines.push_back("WARNING:  " + w);
+  write(law_out, law_text(make_law(a, lines)));
+  write(phi_out, phi_table(a, lines));
+  write(points_out, points_table(a, lines));
+  write(constants_out, constants_table(a, lines));
+  for (AtomicOutput* out : {&law_out, &phi_out, &points_out, &constants_out}) {
+    out->commit();
+    fmt::print("written  {}\n", out->final_path().string());
+  }
+}
+
+void material_command(const MaterialOptions& o, const std::string& command_line) {
+  std::optional<AtomicOutput> out;
+  if (!o.output.empty()) out.emplace(o.output, o.force);
+  const Law law = read_law_file(o.law);
+  MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
+  std::vector<std::string> lines = provenance(
+      "softglass bridge material: a Herschel-Bulkley material from a law file", command_line);
+  lines.push_back("law:      " + o.law.string());
+  if (o.modulus) {
+    request.modulus = *o.modulus;
+  } else {
+    require(*o.interfacial_tension > 0 && *o.radius > 0,
+            "the interfacial tension and the radius must be positive");
+    request.modulus = 9.92 * *o.interfacial_tension / *o.radius;
+    lines.push_back(
+        fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m (Seth et al. "
+                    "2006, emulsions)",
+                    *o.interfacial_tension, *o.radius));
+  }
+  const Material material = make_material(law, request);
+  const std::string text = material_text(material, lines);
+  if (!out) {
+    fmt::print("{}", text);
+    return;
+  }
+  print_material_report(material);
+  write(*out, text);
+  out->commit();
+  fmt::print("written  {}\n", out->final_path().string());
+}
+
+void rescale_command(const RescaleOptions& o, const std::string& command_line) {
+  AtomicOutput points_out(o.output, o.force), curves_out(beside(o.output, "_curves.csv"), o.force);
+  const CsvTable csv = CsvTable::read(o.data);
+  const std::vector<MeasuredCurve> curves = read_measured_curves(csv, o.units);
+  RescaleSettings settings = o.settings;
+  std::string constants = "the paper's values";
+  if (!o.law.empty()) {
+    const Law law = read_law_file(o.law);
+    settings.k = law.k[index(Quantity::sigma)]->value;
+    if (law.k[index(Quantity::N1)]) settings.k_N1 = law.k[index(Quantity::N1)]->value;
+    constants = "from " + o.law.string();
+  }
+  const std::vector<RescaledCurve> rescaled = rescale(curves, settings);
+  print_rescale_report(rescaled, settings, constants);
+
+  std::vector<std::string> lines = provenance(
+      "softglass bridge rescale: measured flow curves on the universal law", command_line);
+  lines.push_back("input:    " + o.data.string());
+  lines.push_back("constants: " + constants);
+  write(points_out, rescaled_points_table(curves, rescaled, lines));
+  write(curves_out, rescaled_curves_table(rescaled, settings, lines));
+  for (AtomicOutput* out : {&points_out, &curves_out}) {
+    out->commit();
+    fmt::print("written  {}\n", out->final_path().string());
+  }
+}
+
+}  // namespace softglass::bridge

@@ -1,0 +1,49 @@
+// The `bridge` subcommands, start to finish.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "bridge/io/measured_curves.h"
+#include "bridge/rescale/rescale.h"
+
+namespace softglass::bridge {
+
+struct FitOptions {
+  std::filesystem::path table, packings;  // packings: the per-packing companion (optional)
+  std::filesystem::path output = "law.prm";
+  std::size_t replicates = 1000;
+  std::uint64_t seed = 1;
+  bool force = false, quiet = false;
+};
+
+/// Fits a flow-curve table; writes the law file and its CSV tables
+/// (<stem>_phi.csv, <stem>_points.csv, <stem>_constants.csv) beside it.
+void fit_command(const FitOptions& options, const std::string& command_line);
+
+struct MaterialOptions {
+  std::filesystem::path law, output;  // output empty: standard output
+  double phi = 0.0, viscosity = 0.0;
+  std::optional<double> modulus;                      // E* [Pa], or
+  std::optional<double> interfacial_tension, radius;  // γ_i [N/m] and R [m]: E* = 9.92 γ_i/R
+  bool extrapolate = false, force = false;
+};
+
+/// Writes the material fragment for (φ, E*, η_s) from a law file.
+void material_command(const MaterialOptions& options, const std::string& command_line);
+
+struct RescaleOptions {
+  std::filesystem::path data, law;  // law empty: the paper's constants
+  std::filesystem::path output = "rescaled.csv";
+  RescaleSettings settings;
+  FallbackUnits units;
+  bool force = false;
+};
+
+/// Rescales measured curves onto the universal law; writes the points table and
+/// <stem>_curves.csv beside it.
+void rescale_command(const RescaleOptions& options, const std::string& command_line);
+
+}  // namespace softglass::bridge

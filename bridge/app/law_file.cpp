@@ -1,0 +1,171 @@
+#include "bridge/app/law_file.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <fmt/format.h>
+
+#include <cctype>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "common/errors.h"
+
+namespace softglass::bridge {
+
+namespace {
+
+using dealii::ParameterHandler;
+namespace Patterns = dealii::Patterns;
+
+// deal.II's exception text carries source locations and a stack trace; keep
+// the user's part, on one line.
+std::string clean_message(const std::string& what) {
+  const auto info = what.find("Additional information:");
+  std::string text = info == std::string::npos ? what : what.substr(info + 23);
+  text = text.substr(0, text.find("Stacktrace:"));
+  std::string out;
+  for (char c : text) {
+    const bool blank = c == '\n' || c == ' ' || c == '\t';
+    if (blank && (out.empty() || out.back() == ' ')) continue;
+    out += blank ? ' ' : c;
+  }
+  if (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+// ParameterHandler names entries by mangled paths ("law.universal.k_20error":
+// sections joined by '.', every character other than a letter or digit written
+// as '_' and two hex digits). Turned back into what the user writes:
+// "subsection law/universal: entry 'k error'".
+std::string readable_entry(const std::string& mangled) {
+  std::vector<std::string> parts(1);
+  for (std::size_t i = 0; i < mangled.size(); ++i) {
+    const char c = mangled[i];
+    if (c == '.') {
+      parts.emplace_back();
+    } else if (c == '_' && i + 2 < mangled.size() &&
+               std::isxdigit(static_cast<unsigned char>(mangled[i + 1])) &&
+               std::isxdigit(static_cast<unsigned char>(mangled[i + 2]))) {
+      parts.back() += static_cast<char>(std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      parts.back() += c;
+    }
+  }
+  const std::string entry = parts.back();
+  parts.pop_back();
+  std::string section;
+  for (const std::string& p : parts) section += (section.empty() ? "" : "/") + p;
+  return section.empty() ? fmt::format("entry '{}'", entry)
+                         : fmt::format("subsection {}: entry '{}'", section, entry);
+}
+
+// Every entry is a list of numbers: one per volume fraction, or a single value.
+struct Lists {
+  std::map<std::string, std::vector<double>> values;
+
+  void declare(ParameterHandler& prm, const std::string& path, const std::string& name,
+               bool required) {
+    prm.add_parameter(name, values[path + name], "",
+                      Patterns::List(Patterns::Double(), 0, Patterns::List::max_int_value),
+                      required);
+  }
+  const std::vector<double>& operator()(const std::string& key) const { return values.at(key); }
+};
+
+// The list `key` and its errors `key error`, one value per volume fraction each.
+std::vector<Estimate> estimates(const Lists& l, const std::string& key, std::size_t expected,
+                                const std::string& source) {
+  const std::vector<double>& v = l(key);
+  const std::vector<double>& e = l(key + " error");
+  for (const auto& [list, name] : {std::pair(&v, key), std::pair(&e, key + " error")}) {
+    if (list->size() != expected) {
+      throw InputError(
+          fmt::format("{}: '{}' has {} value(s), expected one per volume fraction ({})", source,
+                      name, list->size(), expected));
+    }
+  }
+  std::vector<Estimate> out;
+  for (std::size_t i = 0; i < v.size(); ++i) out.push_back({v[i], e[i]});
+  return out;
+}
+
+std::optional<Estimate> scalar(const Lists& l, const std::string& key, const std::string& source) {
+  const std::vector<double>& v = l(key);
+  const std::vector<double>& e = l(key + " error");
+  if (v.empty() && e.empty()) return std::nullopt;
+  if (v.size() != 1 || e.size() != 1) {
+    throw InputError(
+        fmt::format("{}: '{}' and '{} error' must hold one value each", source, key, key));
+  }
+  return Estimate{v[0], e[0]};
+}
+
+}  // namespace
+
+Law read_law_file(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(fmt::format("law file '{}' does not exist", file.string()));
+  }
+  const std::string source = file.string();
+  ParameterHandler prm;
+  Lists l;
+  prm.enter_subsection("law");
+  for (const char* name : {"volume fractions", "gamma tilde range", "shear modulus",
+                           "shear modulus error", "yield strain", "yield strain error"})
+    l.declare(prm, "", name, true);
+  prm.enter_subsection("universal");
+  for (const char* name : {"k", "k error", "mean exponent", "mean exponent error"})
+    l.declare(prm, "universal/", name, true);
+  for (const char* name : {"k N1", "k N1 error", "k N2", "k N2 error"})
+    l.declare(prm, "universal/", name, false);
+  prm.leave_subsection();
+  for (Quantity q : kAllQuantities) {
+    const std::string section = law_subsection(q);
+    prm.enter_subsection(section);
+    for (const char* name : {"yield", "yield error", "consistency", "consistency error", "exponent",
+                             "exponent error", "correlation"})
+      l.declare(prm, section + "/", name, q == Quantity::sigma);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+  try {
+    // Mandatory entries are checked below, to name them as the user writes them.
+    prm.parse_input(source, "", false, false);
+  } catch (const std::exception& error) {
+    throw InputError(fmt::format("law file '{}': {}", source, clean_message(error.what())));
+  }
+  const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
+  if (!missing.empty()) {
+    std::string names;
+    for (const std::string& m : missing) names += (names.empty() ? "" : "; ") + readable_entry(m);
+    throw InputError(fmt::format("law file '{}': {} missing", source, names));
+  }
+
+  Law law;
+  law.phi = l("volume fractions");
+  const std::vector<double>& range = l("gamma tilde range");
+  if (range.size() != 2) throw InputError(source + ": 'gamma tilde range' must hold two rates");
+  law.gamma_tilde_min = range[0];
+  law.gamma_tilde_max = range[1];
+  law.modulus = estimates(l, "shear modulus", law.phi.size(), source);
+  law.yield_strain = estimates(l, "yield strain", law.phi.size(), source);
+  const std::pair<Quantity, const char*> constants[] = {{Quantity::sigma, "universal/k"},
+                                                        {Quantity::N1, "universal/k N1"},
+                                                        {Quantity::N2, "universal/k N2"}};
+  for (const auto& [q, key] : constants) law.k[index(q)] = scalar(l, key, source);
+  law.mean_exponent = *scalar(l, "universal/mean exponent", source);
+  for (Quantity q : kAllQuantities) {
+    const std::string s = std::string(law_subsection(q)) + "/";
+    if (l(s + "yield").empty() && q != Quantity::sigma) continue;
+    HbLaw& hb = law.hb[index(q)].emplace();
+    hb.yield = estimates(l, s + "yield", law.phi.size(), source);
+    hb.consistency = estimates(l, s + "consistency", law.phi.size(), source);
+    hb.exponent = estimates(l, s + "exponent", law.phi.size(), source);
+    hb.correlation = l(s + "correlation");
+  }
+  validate(law, source);
+  return law;
+}
+
+}  // namespace softglass::bridge

@@ -1,0 +1,163 @@
+// bridge: from simulated flow curves to the universal law and to materials.
+//
+//   bridge fit TABLE.csv [--packings RUNS.csv]    Herschel-Bulkley and universal-law fits
+//   bridge material LAW.prm --phi … --modulus … --viscosity …
+//                                                 a material fragment for the continuum
+//   bridge rescale DATA.csv --viscosity … (--yield-strain … | --shear-modulus …)
+//                                                 measured curves on the universal curve
+//
+// Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
+// 3 output exists (use --force).
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "bridge/app/commands.h"
+#include "common/errors.h"
+#include "common/version.h"
+
+namespace {
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "bridge: error: %s\n", message.c_str());
+  return code;
+}
+
+std::string joined(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+  return line;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace softglass;
+  using namespace softglass::bridge;
+  CLI::App app{
+      "softglass bridge: Herschel-Bulkley and universal-law fits of simulated flow curves, "
+      "materials for the continuum, measured curves on the universal law (Seth et al., Nature "
+      "Materials 2011)",
+      "bridge"};
+  app.set_version_flag("--version",
+                       fmt::format("softglass bridge {} ({})", kVersion, kGitRevision));
+  app.require_subcommand(1);
+  int threads = 0;
+  app.add_option("--threads", threads, "OpenMP threads for the bootstrap (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  const auto positive = CLI::PositiveNumber;
+
+  FitOptions fit;
+  CLI::App* fit_cmd = app.add_subcommand(
+      "fit",
+      "fit a flow-curve table (docs/flow-curve-format.md): per-phi Herschel-Bulkley laws, "
+      "yield strains, the universal k, k', k'' with bootstrap errors; writes a law file and "
+      "CSV tables");
+  fit_cmd->add_option("table", fit.table, "flow-curve table (CSV)")->required();
+  fit_cmd->add_option("--packings", fit.packings,
+                      "its per-packing companion (CSV): errors from a packing bootstrap; without "
+                      "it, a parametric bootstrap from the table's standard errors");
+  fit_cmd->add_option("-o,--output", fit.output, "law file (.prm); tables beside it")
+      ->capture_default_str();
+  fit_cmd->add_option("--bootstrap", fit.replicates, "bootstrap replicates")
+      ->capture_default_str()
+      ->check(CLI::Range(20, 1000000));
+  fit_cmd->add_option("--seed", fit.seed, "seed of the bootstrap")->capture_default_str();
+  fit_cmd->add_flag("-f,--force", fit.force, "overwrite existing results");
+  fit_cmd->add_flag("-q,--quiet", fit.quiet, "no progress display");
+
+  MaterialOptions material;
+  CLI::App* material_cmd =
+      app.add_subcommand("material",
+                         "the Herschel-Bulkley material (docs/material-format.md) of a law file at "
+                         "volume fraction phi, contact modulus E* and solvent viscosity eta_s");
+  material_cmd->add_option("law", material.law, "law file of `bridge fit` (.prm)")->required();
+  material_cmd->add_option("--phi", material.phi, "volume fraction")
+      ->required()
+      ->check(CLI::Range(0.0, 1.0));
+  auto* modulus = material_cmd->add_option("--modulus", material.modulus, "contact modulus E* [Pa]")
+                      ->check(positive);
+  auto* tension = material_cmd
+                      ->add_option("--interfacial-tension", material.interfacial_tension,
+                                   "emulsions: interfacial tension gamma_i [N/m], with --radius: "
+                                   "E* = 9.92 gamma_i / R")
+                      ->check(positive);
+  auto* radius = material_cmd->add_option("--radius", material.radius, "mean droplet radius R [m]")
+                     ->check(positive);
+  tension->needs(radius);
+  radius->needs(tension);
+  modulus->excludes(tension);
+  material_cmd->add_option("--viscosity", material.viscosity, "solvent viscosity eta_s [Pa s]")
+      ->required()
+      ->check(positive);
+  material_cmd->add_option("-o,--output", material.output,
+                           "material file (.prm); default: print it");
+  material_cmd->add_flag("--extrapolate", material.extrapolate,
+                         "allow phi outside the simulated range (linear extrapolation)");
+  material_cmd->add_flag("-f,--force", material.force, "overwrite an existing material file");
+
+  RescaleOptions rescale;
+  RescaleSettings& s = rescale.settings;
+  CLI::App* rescale_cmd =
+      app.add_subcommand("rescale",
+                         "put measured flow curves (CSV with units) on the universal curve; fit E* "
+                         "(and tau_y) when unknown");
+  rescale_cmd->add_option("data", rescale.data, "measured flow curves (CSV)")->required();
+  rescale_cmd->add_option("--viscosity", s.viscosity, "solvent viscosity eta_s [Pa s]")
+      ->required()
+      ->check(positive);
+  rescale_cmd->add_option("--modulus", s.modulus, "contact modulus E* [Pa]; fitted when absent")
+      ->check(positive);
+  auto* strain = rescale_cmd
+                     ->add_option("--yield-strain", s.yield_strain,
+                                  "yield strain gamma_y: one value, or one per curve")
+                     ->delimiter(',');
+  auto* shear = rescale_cmd
+                    ->add_option("--shear-modulus", s.shear_modulus,
+                                 "measured G0 [Pa] instead (gamma_y = tau_y/G0): one, or one per "
+                                 "curve")
+                    ->delimiter(',');
+  strain->excludes(shear);
+  rescale_cmd
+      ->add_option("--yield-stress", s.yield_stress,
+                   "yield stress tau_y [Pa]: one, or one per curve; fitted when absent")
+      ->delimiter(',');
+  rescale_cmd->add_option("--law", rescale.law,
+                          "law file of `bridge fit` for k and k' (default: the paper's 80 and 20)");
+  rescale_cmd->add_option("--min-rate", s.min_rate, "fit only rates from here [1/s]");
+  rescale_cmd->add_option("--max-rate", s.max_rate, "fit only rates up to here [1/s]");
+  rescale_cmd->add_option("--rate-unit", rescale.units.rate,
+                          "units of shear-rate columns without units (1/s, 1/min)");
+  rescale_cmd->add_option("--stress-unit", rescale.units.stress,
+                          "units of stress columns without units (Pa, kPa, MPa, mPa)");
+  rescale_cmd->add_option("-o,--output", rescale.output, "rescaled points (CSV); curves beside it")
+      ->capture_default_str();
+  rescale_cmd->add_flag("-f,--force", rescale.force, "overwrite existing results");
+
+  try {
+    app.parse(argc, argv);
+    if (*material_cmd && !material.modulus && !material.interfacial_tension) {
+      throw CLI::ValidationError("material: give --modulus, or --interfacial-tension and --radius");
+    }
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  if (threads > 0) omp_set_num_threads(threads);
+
+  const std::string command_line = joined(argc, argv);
+  try {
+    if (*fit_cmd) fit_command(fit, command_line);
+    if (*material_cmd) material_command(material, command_line);
+    if (*rescale_cmd) rescale_command(rescale, command_line);
+  } catch (const InputError& e) {
+    return fail(kExitBadInput, e.what());
+  } catch (const OutputExistsError& e) {
+    return fail(kExitOutputExists, e.what());
+  } catch (const std::exception& e) {
+    return fail(kExitFailure, e.what());
+  }
+  return kExitOk;
+}

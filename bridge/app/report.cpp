@@ -1,0 +1,154 @@
+#include "bridge/app/report.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "bridge/law/law.h"
+
+namespace softglass::bridge {
+
+std::string with_error(double value, double error, int digits) {
+  if (!std::isfinite(error) || error <= 0) return fmt::format("{:.4g}", value);
+  // Print the value to the decimal place of the error's last significant digit.
+  const int place = static_cast<int>(std::floor(std::log10(error))) - (digits - 1);
+  const double magnitude = std::max(std::abs(value), error);
+  if (magnitude < 1e-3 || magnitude >= 1e5)
+    return fmt::format("{:.3e} ± {:.{}g}", value, error, digits);
+  const int decimals = std::max(0, -place);
+  return fmt::format("{:.{}f} ± {:.{}f}", value, decimals, error, decimals);
+}
+
+namespace {
+
+// Rheometer data scatter by a few per cent; a law missing them by more than 10 %
+// rms does not describe the curve.
+constexpr double kPoorCollapse = 0.10;
+
+const char* law_title(Quantity q) {
+  switch (q) {
+    case Quantity::sigma:
+      return "sigma/E* = sigma_y/E* + k_sigma gamma~^m";
+    case Quantity::N1:
+      return "N1/E* = N1_y/E* + k_N1 gamma~^m";
+    case Quantity::N2:
+      return "N2/E* = N2_y/E* + k_N2 gamma~^m";
+    case Quantity::force:
+      return "f_m/(E* R^2) = f_y + k_f gamma~^m (force at maximum accumulation)";
+  }
+  return "";
+}
+
+}  // namespace
+
+void print_fit_report(const SweepAnalysis& a, const std::string& source) {
+  const std::vector<PhiGroup>& groups = a.sweep.groups;
+  double low = INFINITY, high = 0;
+  for (const PhiGroup& g : groups) {
+    low = std::min(low, g.curves[index(Quantity::sigma)]->x.front());
+    high = std::max(high, g.curves[index(Quantity::sigma)]->x.back());
+  }
+  fmt::print(
+      "sweep    {}: {} state points, {} volume fractions {} ... {}, gamma~ {:.3g} ... {:.3g}\n",
+      source, a.sweep.points(), groups.size(), groups.front().phi, groups.back().phi, low, high);
+  fmt::print("errors   one standard deviation from a {}\n", a.method);
+  for (Quantity q : kAllQuantities) {
+    if (!a.sweep.present[index(q)]) continue;
+    fmt::print("\nHerschel-Bulkley per volume fraction: {}\n", law_title(q));
+    fmt::print("  {:<6} {:>24} {:>24} {:>16} {:>9} {:>8}\n", "phi", "yield", "consistency",
+               "exponent m", "chi2/dof", "p");
+    for (std::size_t j = 0; j < groups.size(); ++j) {
+      const HbParameters& v = *a.estimate.fit.groups[j].hb[index(q)];
+      const HbParameters& e = *a.uncertainty.error.groups[j].hb[index(q)];
+      const GoodnessOfFit& g = a.estimate.diagnostics.hb[j][index(q)]->goodness;
+      fmt::print("  {:<6} {:>24} {:>24} {:>16} {:>9.2f} {:>8.2g}\n", groups[j].phi,
+                 with_error(v.yield, e.yield), with_error(v.consistency, e.consistency),
+                 with_error(v.exponent, e.exponent), g.reduced_chi2(), g.p_value);
+    }
+  }
+
+  fmt::print("\nyield strain gamma_y = sigma_y/G0   (the paper: {} ... {})\n",
+             PaperValues::yield_strain_min, PaperValues::yield_strain_max);
+  fmt::print("  {:<6} {:>24} {:>20}\n", "phi", "G0/E*", "gamma_y");
+  for (std::size_t j = 0; j < groups.size(); ++j) {
+    const GroupFit &v = a.estimate.fit.groups[j], &e = a.uncertainty.error.groups[j];
+    fmt::print("  {:<6} {:>24} {:>20}\n", groups[j].phi, with_error(v.modulus, e.modulus),
+               with_error(v.yield_strain, e.yield_strain));
+  }
+
+  fmt::print(
+      "\nuniversal laws, one constant for every volume fraction   this sweep      the paper\n");
+  const std::tuple<Quantity, const char*, Estimate> rows[] = {
+      {Quantity::sigma, "k    sigma/sigma_y = 1 + k (gamma~/gamma_y^2)^1/2", PaperValues::k},
+      {Quantity::N1, "k'   N1/N1_y       = 1 + k' (gamma~/gamma_y^2)^1/2", PaperValues::k_N1},
+      {Quantity::N2, "k''  N2/N2_y       = 1 + k'' (gamma~/gamma_y^2)^1/2", PaperValues::k_N2}};
+  for (const auto& [q, name, paper] : rows) {
+    if (!a.estimate.fit.k[index(q)]) continue;
+    const auto& collapse = a.collapse[index(q)];
+    fmt::print("  {:<53} {:>16} {:>10}{}\n", name,
+               with_error(*a.estimate.fit.k[index(q)], *a.uncertainty.error.k[index(q)]),
+               with_error(paper.value, paper.error, 1),
+               collapse ? fmt::format("   collapse Q/dof = {:.2f}, p = {:.2g}",
+                                      collapse->reduced_chi2(), collapse->p_value)
+                        : "");
+  }
+  fmt::print("  {:<53} {:>16} {:>10}\n", "m    mean Herschel-Bulkley exponent of sigma",
+             with_error(a.estimate.fit.mean_exponent, a.uncertainty.error.mean_exponent),
+             with_error(PaperValues::exponent.value, PaperValues::exponent.error, 1));
+  if (!a.warnings.empty()) {
+    fmt::print("\nwarnings\n");
+    for (const std::string& w : a.warnings) fmt::print("  {}\n", w);
+  }
+}
+
+void print_material_report(const Material& m) {
+  fmt::print("material phi = {}, E* = {:.6g} Pa, eta_s = {:.6g} Pa s: {}\n", m.request.phi,
+             m.request.modulus, m.request.viscosity, m.placement);
+  fmt::print("         valid for shear rates {:.3g} ... {:.3g} 1/s\n", m.rate_min, m.rate_max);
+  for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) {
+    const auto& law = m.laws[index(q)];
+    if (!law) continue;
+    const char* lhs = q == Quantity::sigma ? "tau" : column_name(q);
+    fmt::print("         {:<3} = {} Pa + {} Pa s^n gamma_dot^({})\n", lhs,
+               with_error(law->yield.value, law->yield.error()),
+               with_error(law->consistency.value, law->consistency.error()),
+               with_error(law->index.value, law->index.error()));
+  }
+}
+
+void print_rescale_report(const std::vector<RescaledCurve>& rescaled, const RescaleSettings& s,
+                          const std::string& constants_source) {
+  fmt::print("universal law  k = {:.4g}, k' = {:.4g} ({}); eta_s = {:.4g} Pa s\n", s.k, s.k_N1,
+             constants_source, s.viscosity);
+  for (const RescaledCurve& r : rescaled) {
+    const HerschelBulkleyFit& hb = r.herschel_bulkley;
+    fmt::print("\ncurve '{}'\n", r.label);
+    // The weights are 1/τ²: χ²/(number of points) is the mean squared relative residual.
+    const double points = hb.goodness.dof + 3.0;
+    fmt::print("  Herschel-Bulkley  tau_y = {} Pa, K = {} Pa s^n, n = {}, rms {:.1f} %{}\n",
+               with_error(hb.parameters.yield, std::sqrt(hb.covariance(0, 0))),
+               with_error(hb.parameters.consistency, std::sqrt(hb.covariance(1, 1))),
+               with_error(hb.parameters.exponent, std::sqrt(hb.covariance(2, 2))),
+               100.0 * std::sqrt(hb.goodness.chi2 / points),
+               hb.converged ? "" : "  (fit failed: " + hb.status + ")");
+    fmt::print("  universal law     tau_y = {} Pa ({}), E* = {} Pa ({}), gamma_y = {}\n",
+               with_error(r.yield_stress.value, r.yield_stress.error),
+               r.yield_stress_fitted ? "fitted" : "given",
+               with_error(r.modulus.value, r.modulus.error), r.modulus_fitted ? "fitted" : "given",
+               with_error(r.yield_strain.value, r.yield_strain.error));
+    fmt::print("                    rms relative residual {:.1f} %\n", 100.0 * r.rms_residual);
+    if (r.rms_residual > kPoorCollapse) {
+      fmt::print(
+          "WARNING  the universal law misses this curve by {:.0f} % rms: look for wall slip or "
+          "unsteady data at low rates (--min-rate), or a wrong yield strain\n",
+          100.0 * r.rms_residual);
+    }
+    if (r.N1_yield) {
+      fmt::print("  N1 law            N1_y = {} Pa, rms relative residual {:.1f} %\n",
+                 with_error(r.N1_yield->value, r.N1_yield->error), 100.0 * *r.N1_rms_residual);
+    }
+  }
+}
+
+}  // namespace softglass::bridge

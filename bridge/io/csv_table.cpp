@@ -1,0 +1,132 @@
+#include "bridge/io/csv_table.h"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.h"
+
+namespace softglass::bridge {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
+// Splits one line into cells; quotes protect commas, "" inside quotes is a quote.
+std::vector<std::string> split_cells(std::string_view line, const std::string& where) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cells.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  if (quoted) throw InputError(where + ": unterminated quote");
+  for (auto& cell : cells) cell = std::string(trim(cell));
+  return cells;
+}
+
+}  // namespace
+
+CsvTable CsvTable::read(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(fmt::format("table '{}' does not exist", file.string()));
+  }
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(fmt::format("table '{}' cannot be read", file.string()));
+  return parse(text.str(), file.string());
+}
+
+CsvTable CsvTable::parse(std::string_view text, std::string source) {
+  CsvTable table;
+  table.source_ = std::move(source);
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
+  std::size_t number = 0;
+  while (!text.empty()) {
+    const auto end = text.find('\n');
+    const std::string_view raw = text.substr(0, end);
+    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
+    ++number;
+    const std::string_view line = trim(raw);
+    if (line.empty()) continue;
+    if (line.front() == '#') {
+      if (table.header_.empty()) table.comments_.emplace_back(trim(line.substr(1)));
+      continue;
+    }
+    const std::string where = fmt::format("{}, line {}", table.source_, number);
+    auto cells = split_cells(line, where);
+    if (table.header_.empty()) {
+      table.header_ = std::move(cells);
+      continue;
+    }
+    if (cells.size() != table.header_.size()) {
+      throw InputError(fmt::format("{}: {} cells where the header has {}", where, cells.size(),
+                                   table.header_.size()));
+    }
+    table.cells_.push_back(std::move(cells));
+    table.lines_.push_back(number);
+  }
+  if (table.header_.empty()) throw InputError(table.source_ + ": no header line");
+  return table;
+}
+
+std::string CsvTable::where(std::size_t row, std::size_t column) const {
+  return fmt::format("{}, line {}, column '{}'", source_, lines_[row], header_[column]);
+}
+
+double CsvTable::number(std::size_t row, std::size_t column) const {
+  const std::string& cell = cells_[row][column];
+  if (cell.empty()) throw InputError(where(row, column) + ": empty (missing values are refused)");
+  double value = 0.0;
+  const char* begin = cell.data();
+  const char* end = begin + cell.size();
+  if (*begin == '+') ++begin;  // from_chars refuses a leading '+'
+  const auto [stop, error] = std::from_chars(begin, end, value);
+  if (error != std::errc() || stop != end) {
+    throw InputError(fmt::format("{}: '{}' is not a number", where(row, column), cell));
+  }
+  if (!std::isfinite(value)) {
+    throw InputError(fmt::format("{}: '{}' is not finite", where(row, column), cell));
+  }
+  return value;
+}
+
+std::optional<std::size_t> CsvTable::find(std::string_view name) const {
+  for (std::size_t c = 0; c < header_.size(); ++c)
+    if (header_[c] == name) return c;
+  return std::nullopt;
+}
+
+ColumnName split_units(std::string_view header) {
+  header = trim(header);
+  const auto open = header.rfind('[');
+  if (open == std::string_view::npos || !header.ends_with(']')) return {std::string(header), ""};
+  return {std::string(trim(header.substr(0, open))),
+          std::string(trim(header.substr(open + 1, header.size() - open - 2)))};
+}
+
+}  // namespace softglass::bridge

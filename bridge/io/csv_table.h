@@ -1,0 +1,58 @@
+// A strict reader of comma-separated tables: the form of every bridge input.
+//
+// Lines starting with `#` are comments (the ones before the header are kept:
+// they carry provenance); blank lines are skipped. The first other line is the
+// header; every later line is a row with as many cells as the header.
+// Double-quoted cells may hold commas ("" is a quote). Cells are trimmed.
+// A number is read whole (no trailing text) and must be finite: an empty cell,
+// `nan` or `inf` is refused with the file, line and column named.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace softglass::bridge {
+
+class CsvTable {
+ public:
+  /// Reads `file`; InputError when it cannot be read or is malformed.
+  static CsvTable read(const std::filesystem::path& file);
+  /// Parses `text`; `source` names it in messages (usually the file name).
+  static CsvTable parse(std::string_view text, std::string source);
+
+  const std::string& source() const { return source_; }
+  const std::vector<std::string>& comments() const { return comments_; }
+  const std::vector<std::string>& header() const { return header_; }
+  std::size_t rows() const { return cells_.size(); }
+  std::size_t columns() const { return header_.size(); }
+  /// Line number of a row in the file (1-based), for messages.
+  std::size_t line(std::size_t row) const { return lines_[row]; }
+
+  const std::string& text(std::size_t row, std::size_t column) const { return cells_[row][column]; }
+  /// The cell as a finite number; InputError naming source, line and column otherwise.
+  double number(std::size_t row, std::size_t column) const;
+  /// "file, line 7, column 'sigma [E*]'": the place of a cell in messages.
+  std::string where(std::size_t row, std::size_t column) const;
+
+  /// Index of the column whose header is exactly `name`.
+  std::optional<std::size_t> find(std::string_view name) const;
+
+ private:
+  std::string source_;
+  std::vector<std::string> comments_, header_;
+  std::vector<std::vector<std::string>> cells_;
+  std::vector<std::size_t> lines_;
+};
+
+/// A column header split into its name and units: "sigma [E*]" → {"sigma", "E*"}.
+/// Without brackets the units are empty.
+struct ColumnName {
+  std::string name, units;
+};
+ColumnName split_units(std::string_view header);
+
+}  // namespace softglass::bridge

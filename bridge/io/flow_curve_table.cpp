@@ -1,0 +1,195 @@
+#include "bridge/io/flow_curve_table.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "common/errors.h"
+
+namespace softglass::bridge {
+
+const char* column_name(Quantity q) {
+  static constexpr std::array<const char*, kQuantities> names = {"sigma", "N1", "N2", "f_m"};
+  return names[index(q)];
+}
+
+const char* reduced_units(Quantity q) {
+  return q == Quantity::force ? "E*R^2" : "E*";
+}
+
+namespace {
+
+std::string without_spaces(std::string s) {
+  std::erase(s, ' ');
+  return s;
+}
+
+// The documented units of a column, or "" for a column the bridge does not know
+// (which must still name some units).
+std::string expected_units(const std::string& name) {
+  for (const char* n : {"phi", "gamma_tilde", "packings", "converged", "Z", "seed"})
+    if (name == n) return "1";
+  const auto family = [&](const std::string& base) {
+    return name == base || name.starts_with(base + "_");
+  };
+  for (const char* base : {"sigma", "N1", "N2", "pressure", "G0"})
+    if (family(base)) return "E*";
+  if (family("f_m")) return "E*R^2";
+  return "";
+}
+
+// The header of a reduced-units table: names mapped to column indices, units checked.
+class Columns {
+ public:
+  explicit Columns(const CsvTable& csv) : csv_(csv) {
+    for (std::size_t c = 0; c < csv.columns(); ++c) {
+      const ColumnName column = split_units(csv.header()[c]);
+      if (column.units.empty()) {
+        throw InputError(fmt::format(
+            "{}: column '{}' has no units; every column names its units in brackets, e.g. "
+            "'sigma [E*]' (docs/flow-curve-format.md)",
+            csv.source(), csv.header()[c]));
+      }
+      const std::string expected = expected_units(column.name);
+      if (!expected.empty() && without_spaces(column.units) != expected) {
+        throw InputError(fmt::format(
+            "{}: column '{}' is in '{}', expected '{}': flow-curve tables are in reduced units "
+            "(stresses in E*, forces in E* R^2), all columns alike",
+            csv.source(), csv.header()[c], column.units, expected));
+      }
+      if (!index_.emplace(column.name, c).second) {
+        throw InputError(fmt::format("{}: column '{}' appears twice", csv.source(), column.name));
+      }
+    }
+    // Every cell must be a finite number (the format allows no missing values).
+    for (std::size_t r = 0; r < csv.rows(); ++r)
+      for (std::size_t c = 0; c < csv.columns(); ++c) csv.number(r, c);
+  }
+
+  std::optional<std::size_t> find(const std::string& name) const {
+    const auto it = index_.find(name);
+    return it == index_.end() ? std::nullopt : std::optional(it->second);
+  }
+  std::size_t require(const std::string& name) const {
+    const auto c = find(name);
+    if (!c) {
+      throw InputError(fmt::format("{}: column '{} [{}]' is missing (docs/flow-curve-format.md)",
+                                   csv_.source(), name, expected_units(name)));
+    }
+    return *c;
+  }
+
+  // The value of row r in column c, checked by `valid`; `rule` says what is allowed.
+  template <class Valid>
+  double value(std::size_t r, std::size_t c, Valid valid, const char* rule) const {
+    const double v = csv_.number(r, c);
+    if (!valid(v)) throw InputError(fmt::format("{}: {} (must be {})", csv_.where(r, c), v, rule));
+    return v;
+  }
+  double positive(std::size_t r, std::size_t c) const {
+    return value(
+        r, c, [](double v) { return v > 0; }, "> 0");
+  }
+  double fraction(std::size_t r, std::size_t c) const {
+    return value(
+        r, c, [](double v) { return v > 0 && v < 1; }, "in (0, 1)");
+  }
+  double count(std::size_t r, std::size_t c, double least) const {
+    return value(
+        r, c, [&](double v) { return v >= least && v == std::floor(v) && v < 1e15; },
+        least > 0 ? "a whole number >= 1" : "a whole number >= 0");
+  }
+
+ private:
+  const CsvTable& csv_;
+  std::map<std::string, std::size_t> index_;
+};
+
+// The value columns (and, if `with_errors`, their standard-error columns) present.
+PerQuantity<std::pair<std::size_t, std::size_t>> value_columns(const Columns& columns,
+                                                               const CsvTable& csv,
+                                                               bool with_errors) {
+  PerQuantity<std::pair<std::size_t, std::size_t>> result;
+  for (Quantity q : kAllQuantities) {
+    const std::string name = column_name(q);
+    const auto value = q == Quantity::sigma ? columns.require(name) : columns.find(name);
+    const auto error = columns.find(name + "_se");
+    if (!value) {
+      if (error)
+        throw InputError(fmt::format("{}: '{}_se' without '{}'", csv.source(), name, name));
+      continue;
+    }
+    result[index(q)] = {*value, with_errors ? columns.require(name + "_se") : 0};
+  }
+  return result;
+}
+
+}  // namespace
+
+FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
+  const Columns columns(csv);
+  const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
+                    packings = columns.require("packings"), g0 = columns.require("G0"),
+                    g0_se = columns.require("G0_se");
+  const auto quantities = value_columns(columns, csv, true);
+
+  FlowCurveTable table;
+  table.source = csv.source();
+  table.comments = csv.comments();
+  for (Quantity q : kAllQuantities) table.present[index(q)] = quantities[index(q)].has_value();
+  std::map<std::pair<double, double>, std::size_t> seen;  // (φ, γ̃) → line
+  for (std::size_t r = 0; r < csv.rows(); ++r) {
+    StatePoint p;
+    p.line = csv.line(r);
+    p.phi = columns.fraction(r, phi);
+    p.gamma_tilde = columns.positive(r, rate);
+    p.packings = static_cast<std::size_t>(columns.count(r, packings, 1));
+    p.modulus = {columns.positive(r, g0), columns.value(
+                                              r, g0_se, [](double v) { return v >= 0; }, ">= 0")};
+    for (Quantity q : kAllQuantities) {
+      const auto& c = quantities[index(q)];
+      if (!c) continue;
+      const double v = may_be_negative(q) ? csv.number(r, c->first) : columns.positive(r, c->first);
+      p.values[index(q)] = Estimate{v, columns.positive(r, c->second)};
+    }
+    const auto [it, fresh] = seen.emplace(std::pair(p.phi, p.gamma_tilde), p.line);
+    if (!fresh) {
+      throw InputError(
+          fmt::format("{}, line {}: state point phi = {}, gamma~ = {} already on line {}",
+                      csv.source(), p.line, p.phi, p.gamma_tilde, it->second));
+    }
+    table.points.push_back(p);
+  }
+  if (table.points.empty()) throw InputError(csv.source() + ": the table has no rows");
+  return table;
+}
+
+std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
+  const Columns columns(csv);
+  const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
+                    seed = columns.require("seed"), g0 = columns.require("G0");
+  const auto quantities = value_columns(columns, csv, false);
+  std::vector<PackingRun> runs;
+  for (std::size_t r = 0; r < csv.rows(); ++r) {
+    PackingRun run;
+    run.line = csv.line(r);
+    run.phi = columns.fraction(r, phi);
+    run.gamma_tilde = columns.positive(r, rate);
+    run.seed = static_cast<std::uint64_t>(columns.count(r, seed, 0));
+    run.modulus = columns.positive(r, g0);
+    for (Quantity q : kAllQuantities) {
+      const auto& c = quantities[index(q)];
+      if (!c) continue;
+      run.values[index(q)] =
+          may_be_negative(q) ? csv.number(r, c->first) : columns.positive(r, c->first);
+    }
+    runs.push_back(run);
+  }
+  if (runs.empty()) throw InputError(csv.source() + ": the per-packing table has no rows");
+  return runs;
+}
+
+}  // namespace softglass::bridge

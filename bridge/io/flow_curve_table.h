@@ -1,0 +1,88 @@
+// The flow-curve table of docs/flow-curve-format.md and its per-packing
+// companion, read strictly.
+//
+// The table holds one row per state point (φ, γ̃) averaged over packings; the
+// companion one row per run (φ, γ̃, packing seed). Both are in reduced units:
+// stresses in E*, forces in E* R². Every column must carry its units in
+// brackets and the units must be the documented ones, so that a table in
+// pascals (or a mixture) is refused instead of being fitted as if reduced.
+//
+// Beyond the documented columns, the bridge reads the optional structure
+// columns `f_m [E*R^2]` and `f_m_se [E*R^2]`: the elastic force at the radius of
+// maximum accumulation (Fig. 3c of the paper), for the force law.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bridge/io/csv_table.h"
+
+namespace softglass::bridge {
+
+/// A value and its standard error (one standard deviation).
+struct Estimate {
+  double value = 0.0;
+  double error = 0.0;
+};
+
+/// The observables the bridge fits, each against γ̃: shear stress, first and
+/// second normal stress differences, and the force at maximum accumulation.
+enum class Quantity : std::size_t { sigma, N1, N2, force };
+inline constexpr std::size_t kQuantities = 4;
+inline constexpr std::array<Quantity, kQuantities> kAllQuantities = {Quantity::sigma, Quantity::N1,
+                                                                     Quantity::N2, Quantity::force};
+
+/// Column name in the tables: "sigma", "N1", "N2", "f_m".
+const char* column_name(Quantity q);
+/// Units in the tables: "E*" or "E*R^2".
+const char* reduced_units(Quantity q);
+/// Optional quantities indexed by Quantity.
+template <class T>
+using PerQuantity = std::array<std::optional<T>, kQuantities>;
+inline std::size_t index(Quantity q) {
+  return static_cast<std::size_t>(q);
+}
+/// N1 and N2 may take either sign; σ and the contact force are positive.
+inline bool may_be_negative(Quantity q) {
+  return q == Quantity::N1 || q == Quantity::N2;
+}
+
+/// One state point of the table, averaged over its packings.
+struct StatePoint {
+  double phi = 0.0, gamma_tilde = 0.0;
+  std::size_t packings = 0;
+  Estimate modulus;              // G0/E*: mean and standard error over packings
+  PerQuantity<Estimate> values;  // sigma always present
+  std::size_t line = 0;          // in the file, for messages
+};
+
+struct FlowCurveTable {
+  std::string source;
+  std::vector<std::string> comments;        // provenance lines before the header
+  std::vector<StatePoint> points;           // file order
+  std::array<bool, kQuantities> present{};  // which quantities the table has
+};
+
+/// One run of the per-packing companion.
+struct PackingRun {
+  double phi = 0.0, gamma_tilde = 0.0;
+  std::uint64_t seed = 0;
+  double modulus = 0.0;        // G0/E* of this packing
+  PerQuantity<double> values;  // sigma always present
+  std::size_t line = 0;
+};
+
+/// Reads and checks the flow-curve table: required columns, units, finite
+/// values, φ in (0, 1), γ̃ > 0, σ > 0, standard errors > 0, G0 > 0, whole
+/// packing counts ≥ 1, no state point twice. InputError names file, line, column.
+FlowCurveTable read_flow_curve_table(const CsvTable& csv);
+
+/// Reads and checks the per-packing companion (same rules, `seed [1]` instead
+/// of `packings [1]`, no standard errors needed).
+std::vector<PackingRun> read_packing_runs(const CsvTable& csv);
+
+}  // namespace softglass::bridge

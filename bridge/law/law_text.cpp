@@ -1,0 +1,92 @@
+// The law as a .prm fragment (law/law.h). Written as text rather than through
+// ParameterHandler so that the provenance and the explanations sit next to the
+// numbers; app/law_file.cpp reads it back with ParameterHandler.
+#include <fmt/format.h>
+
+#include "bridge/law/law.h"
+
+namespace softglass::bridge {
+
+namespace {
+
+template <class T, class F>
+std::string list(const std::vector<T>& values, F&& format) {
+  std::string text;
+  for (const T& v : values) text += (text.empty() ? "" : ", ") + format(v);
+  return text;
+}
+std::string values(const std::vector<Estimate>& e) {
+  return list(e, [](const Estimate& x) { return fmt::format("{:.10g}", x.value); });
+}
+std::string errors(const std::vector<Estimate>& e) {
+  return list(e, [](const Estimate& x) { return fmt::format("{:.4g}", x.error); });
+}
+
+// "  set name = value", names aligned.
+void set(std::string& out, const std::string& indent, const std::string& name,
+         const std::string& value) {
+  out += fmt::format("{}set {:<19} = {}\n", indent, name, value);
+}
+
+void estimates(std::string& out, const std::string& indent, const std::string& name,
+               const std::vector<Estimate>& e) {
+  set(out, indent, name, values(e));
+  set(out, indent, name + " error", errors(e));
+}
+
+}  // namespace
+
+std::string law_text(const Law& law) {
+  std::string out;
+  for (const std::string& line : law.provenance) out += "# " + line + "\n";
+  out +=
+      "# Reduced units: stresses in E*, forces in E* R^2, rates gamma~ = gamma_dot eta_s / E*.\n"
+      "# Every 'error' is one standard deviation; lists run over the volume fractions.\n"
+      "subsection law\n";
+  set(out, "  ", "volume fractions", list(law.phi, [](double p) { return fmt::format("{}", p); }));
+  set(out, "  ", "gamma tilde range",
+      fmt::format("{:.6g}, {:.6g}", law.gamma_tilde_min, law.gamma_tilde_max));
+  out += "  # G0/E*: the linear shear modulus of the packings\n";
+  estimates(out, "  ", "shear modulus", law.modulus);
+  out += "  # gamma_y = sigma_y / G0, with the Herschel-Bulkley sigma_y\n";
+  estimates(out, "  ", "yield strain", law.yield_strain);
+
+  out +=
+      "  subsection universal\n"
+      "    # sigma/sigma_y = 1 + k (gamma~/gamma_y^2)^(1/2), one k for every volume fraction;\n"
+      "    # N1/N1_y and N2/N2_y alike with k N1 (the paper's k') and k N2 (k'').\n"
+      "    # The paper (Seth et al. 2011): k = 80 +- 3, k' = 20 +- 2, k'' = 26 +- 2.\n";
+  const std::pair<Quantity, const char*> constants[] = {
+      {Quantity::sigma, "k"}, {Quantity::N1, "k N1"}, {Quantity::N2, "k N2"}};
+  for (const auto& [q, name] : constants) {
+    if (const auto& k = law.k[index(q)]) {
+      set(out, "    ", name, fmt::format("{:.10g}", k->value));
+      set(out, "    ", std::string(name) + " error", fmt::format("{:.4g}", k->error));
+    }
+  }
+  out +=
+      "    # mean over the volume fractions of the sigma exponents m (the paper: 0.50 +- 0.02)\n";
+  set(out, "    ", "mean exponent", fmt::format("{:.10g}", law.mean_exponent.value));
+  set(out, "    ", "mean exponent error", fmt::format("{:.4g}", law.mean_exponent.error));
+  out += "  end\n";
+
+  for (Quantity q : kAllQuantities) {
+    const auto& hb = law.hb[index(q)];
+    if (!hb) continue;
+    out += fmt::format(
+        "  subsection {}\n"
+        "    # {}/{} = yield + consistency gamma~^exponent, per volume fraction\n",
+        law_subsection(q), column_name(q), reduced_units(q));
+    estimates(out, "    ", "yield", hb->yield);
+    estimates(out, "    ", "consistency", hb->consistency);
+    estimates(out, "    ", "exponent", hb->exponent);
+    out += "    # correlation of ln|consistency| and exponent over the bootstrap replicates\n";
+    set(out, "    ", "correlation",
+        list(hb->correlation, [](double r) { return fmt::format("{:.4f}", r); }));
+    out += "  end\n";
+  }
+  out += "end\n";
+  return out;
+}
+
+}  // namespace softglass::bridge

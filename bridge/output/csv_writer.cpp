@@ -1,0 +1,52 @@
+#include "bridge/output/csv_writer.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace softglass::bridge {
+
+namespace {
+
+std::string quoted(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
+CsvWriter::CsvWriter(const std::vector<std::string>& comments,
+                     const std::vector<std::string>& header)
+    : columns_(header.size()) {
+  for (const std::string& line : comments) text_ += "# " + line + "\n";
+  for (const std::string& name : header) *this << name;
+  end_row();
+}
+
+void CsvWriter::separate() {
+  if (cells_++ > 0) text_ += ',';
+}
+
+CsvWriter& CsvWriter::operator<<(double value) {
+  separate();
+  text_ += fmt::format("{:.10g}", value);
+  return *this;
+}
+
+CsvWriter& CsvWriter::operator<<(const std::string& text) {
+  separate();
+  text_ += quoted(text);
+  return *this;
+}
+
+void CsvWriter::end_row() {
+  if (cells_ != columns_) {
+    throw std::logic_error(fmt::format("CSV row with {} cells under {} columns", cells_, columns_));
+  }
+  text_ += '\n';
+  cells_ = 0;
+}
+
+}  // namespace softglass::bridge

@@ -1,0 +1,120 @@
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "bridge/law/law.h"
+#include "bridge/output/csv_writer.h"
+#include "bridge/output/tables.h"
+
+namespace softglass::bridge {
+
+namespace {
+
+std::string column(Quantity q, const std::string& what, const std::string& units) {
+  return fmt::format("{}_{} [{}]", column_name(q), what, units);
+}
+
+bool has(const SweepAnalysis& a, Quantity q) {
+  return a.sweep.present[index(q)];
+}
+
+}  // namespace
+
+std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& comments) {
+  std::vector<std::string> header = {"phi [1]",
+                                     "G0 [E*]",
+                                     "G0_se [E*]",
+                                     "gamma_y [1]",
+                                     "gamma_y_se [1]",
+                                     "gamma_y_universal [1]",
+                                     "gamma_y_universal_se [1]"};
+  for (Quantity q : kAllQuantities) {
+    if (!has(a, q)) continue;
+    const std::string u = reduced_units(q);
+    for (const std::string& name : {std::string("yield"), std::string("consistency")}) {
+      header.push_back(column(q, name, u));
+      header.push_back(column(q, name + "_se", u));
+    }
+    header.push_back(column(q, "exponent", "1"));
+    header.push_back(column(q, "exponent_se", "1"));
+    header.push_back(column(q, "chi2_dof", "1"));
+    header.push_back(column(q, "p", "1"));
+    if (q == Quantity::force) continue;
+    header.push_back(column(q, "own_k", "1"));
+    header.push_back(column(q, "own_k_se", "1"));
+    header.push_back(column(q, "universal_yield", u));
+    header.push_back(column(q, "universal_yield_se", u));
+  }
+  CsvWriter w(comments, header);
+  for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+    const GroupFit &v = a.estimate.fit.groups[j], &e = a.uncertainty.error.groups[j];
+    w << v.phi << v.modulus << e.modulus << v.yield_strain << e.yield_strain
+      << v.universal_yield_strain << e.universal_yield_strain;
+    for (Quantity q : kAllQuantities) {
+      if (!has(a, q)) continue;
+      const HbParameters &pv = *v.hb[index(q)], &pe = *e.hb[index(q)];
+      const GoodnessOfFit& g = a.estimate.diagnostics.hb[j][index(q)]->goodness;
+      w << pv.yield << pe.yield << pv.consistency << pe.consistency << pv.exponent << pe.exponent
+        << g.reduced_chi2() << g.p_value;
+      if (q == Quantity::force) continue;
+      w << *v.own_k[index(q)] << *e.own_k[index(q)] << *v.universal_yield[index(q)]
+        << *e.universal_yield[index(q)];
+    }
+    w.end_row();
+  }
+  return w.text();
+}
+
+std::string points_table(const SweepAnalysis& a, const std::vector<std::string>& comments) {
+  std::vector<std::string> header = {"phi [1]", "gamma_tilde [1]", "collapse_rate [1]"};
+  for (Quantity q : kAllQuantities) {
+    if (!has(a, q)) continue;
+    const std::string u = reduced_units(q), name = column_name(q);
+    header.push_back(fmt::format("{} [{}]", name, u));
+    header.push_back(fmt::format("{}_se [{}]", name, u));
+    header.push_back(fmt::format("{}_weight_se [{}]", name, u));
+    header.push_back(fmt::format("{}_herschel_bulkley [{}]", name, u));
+    if (q != Quantity::force) header.push_back(fmt::format("{}_ratio [1]", name));
+  }
+  CsvWriter w(comments, header);
+  for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+    const PhiGroup& g = a.sweep.groups[j];
+    const GroupFit& f = a.estimate.fit.groups[j];
+    const std::vector<double>& rates = g.curves[index(Quantity::sigma)]->x;
+    for (std::size_t i = 0; i < rates.size(); ++i) {
+      w << g.phi << rates[i] << collapse_rate(rates[i], f.universal_yield_strain);
+      for (Quantity q : kAllQuantities) {
+        if (!has(a, q)) continue;
+        const Curve& c = *g.curves[index(q)];
+        w << c.y[i] << (*g.table_errors[index(q)])[i] << c.se[i] << (*f.hb[index(q)])(rates[i]);
+        if (q != Quantity::force) w << c.y[i] / *f.universal_yield[index(q)];
+      }
+      w.end_row();
+    }
+  }
+  return w.text();
+}
+
+std::string constants_table(const SweepAnalysis& a, const std::vector<std::string>& comments) {
+  CsvWriter w(comments, {"constant", "value [1]", "error [1]", "paper [1]", "paper_error [1]",
+                         "collapse_chi2_dof [1]", "collapse_p [1]"});
+  const std::pair<Quantity, Estimate> paper[] = {{Quantity::sigma, PaperValues::k},
+                                                 {Quantity::N1, PaperValues::k_N1},
+                                                 {Quantity::N2, PaperValues::k_N2}};
+  for (const auto& [q, reference] : paper) {
+    if (!a.estimate.fit.k[index(q)]) continue;
+    const auto& collapse = a.collapse[index(q)];
+    w << (q == Quantity::sigma ? std::string("k") : "k_" + std::string(column_name(q)))
+      << *a.estimate.fit.k[index(q)] << *a.uncertainty.error.k[index(q)] << reference.value
+      << reference.error << (collapse ? collapse->reduced_chi2() : NAN)
+      << (collapse ? collapse->p_value : NAN);
+    w.end_row();
+  }
+  w << std::string("mean_exponent") << a.estimate.fit.mean_exponent
+    << a.uncertainty.error.mean_exponent << PaperValues::exponent.value
+    << PaperValues::exponent.error << NAN << NAN;
+  w.end_row();
+  return w.text();
+}
+
+}  // namespace softglass::bridge

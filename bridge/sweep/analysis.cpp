@@ -1,0 +1,155 @@
+#include "bridge/sweep/analysis.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "common/errors.h"
+
+namespace softglass::bridge {
+
+namespace {
+
+constexpr double kMissesData = 1e-3;  // p-value below which a law misses its data
+constexpr double kPoorRelativeError = 0.25;
+constexpr double kPoorExponentError = 0.1;
+constexpr double kTolerableFailures = 0.01;
+
+const char* universal_name(Quantity q) {
+  return q == Quantity::sigma ? "k (sigma)" : q == Quantity::N1 ? "k' (N1)" : "k'' (N2)";
+}
+
+std::string goodness_text(const GoodnessOfFit& g) {
+  return fmt::format("chi2/dof = {:.3g} with {} degrees of freedom, p = {:.2g}", g.reduced_chi2(),
+                     g.dof, g.p_value);
+}
+
+// Refusals and failures of the original fit: only the stress law is essential.
+void require_stress_law(const Sweep& sweep, const SweepFitOutcome& outcome) {
+  for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
+    const PhiGroup& g = sweep.groups[j];
+    const HerschelBulkleyFit& hb = *outcome.diagnostics.hb[j][index(Quantity::sigma)];
+    if (!hb.converged) {
+      throw NumericalError(
+          fmt::format("phi = {}: the Herschel-Bulkley fit of sigma failed: {}", g.phi, hb.status));
+    }
+    const PlateauCheck plateau = check_plateau(*g.curves[index(Quantity::sigma)], hb);
+    if (!plateau.ok) throw InputError(fmt::format("phi = {}, sigma: {}", g.phi, plateau.reason));
+  }
+  const UniversalFit& universal = *outcome.diagnostics.universal[index(Quantity::sigma)];
+  if (!universal.converged) {
+    throw NumericalError("the universal stress fit failed: " + universal.status);
+  }
+}
+
+void warn_about_fits(const SweepAnalysis& a, std::vector<std::string>& warnings) {
+  for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+    const PhiGroup& g = a.sweep.groups[j];
+    const GroupFit& error = a.uncertainty.error.groups[j];
+    const GroupFit& value = a.estimate.fit.groups[j];
+    for (Quantity q : kAllQuantities) {
+      if (!g.curves[index(q)]) continue;
+      const std::string where = fmt::format("phi = {}, {}", g.phi, column_name(q));
+      const HerschelBulkleyFit& hb = *a.estimate.diagnostics.hb[j][index(q)];
+      if (!hb.converged) {
+        warnings.push_back(where + ": the Herschel-Bulkley fit failed: " + hb.status);
+        continue;
+      }
+      if (hb.goodness.p_value < kMissesData) {
+        warnings.push_back(where + ": the Herschel-Bulkley law misses the data (" +
+                           goodness_text(hb.goodness) + ")");
+      }
+      if (q != Quantity::sigma) {
+        const PlateauCheck plateau = check_plateau(*g.curves[index(q)], hb);
+        if (!plateau.ok) warnings.push_back(where + ": " + plateau.reason);
+      }
+      const HbParameters& v = *value.hb[index(q)];
+      const HbParameters& e = *error.hb[index(q)];
+      // Not the consistency: it is the value at γ̃ = 1, far outside the data, and
+      // its error mostly mirrors the exponent's (their correlation is ~0.99).
+      if (e.yield > kPoorRelativeError * std::abs(v.yield) || e.exponent > kPoorExponentError) {
+        warnings.push_back(fmt::format(
+            "{}: poorly determined: yield {:.3g} ± {:.2g}, consistency {:.3g} ± {:.2g}, "
+            "exponent {:.3f} ± {:.3f}",
+            where, v.yield, e.yield, v.consistency, e.consistency, v.exponent, e.exponent));
+      }
+    }
+  }
+}
+
+// Cochran's test: Q = Σ w_j (k_j − k̄)², w_j = 1/SE_j², k̄ = Σ w_j k_j / Σ w_j.
+GoodnessOfFit homogeneity(const SweepAnalysis& a, Quantity q) {
+  double sw = 0.0, swk = 0.0;
+  for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+    const double w = 1.0 / std::pow(*a.uncertainty.error.groups[j].own_k[index(q)], 2);
+    sw += w;
+    swk += w * *a.estimate.fit.groups[j].own_k[index(q)];
+  }
+  double q_statistic = 0.0;
+  for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+    q_statistic += std::pow((*a.estimate.fit.groups[j].own_k[index(q)] - swk / sw) /
+                                *a.uncertainty.error.groups[j].own_k[index(q)],
+                            2);
+  }
+  return goodness_of_fit(q_statistic, static_cast<int>(a.sweep.groups.size()) - 1);
+}
+
+void warn_about_collapse(const SweepAnalysis& a, std::vector<std::string>& warnings) {
+  for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) {
+    const auto& universal = a.estimate.diagnostics.universal[index(q)];
+    if (!universal) continue;
+    if (!universal->converged) {
+      warnings.push_back(
+          fmt::format("{}: the universal fit failed: {}", universal_name(q), universal->status));
+      continue;
+    }
+    const double k = *a.estimate.fit.k[index(q)], error = *a.uncertainty.error.k[index(q)];
+    if (error > kPoorRelativeError * std::abs(k)) {
+      warnings.push_back(
+          fmt::format("{}: poorly determined: {:.3g} ± {:.2g}", universal_name(q), k, error));
+    }
+    const auto& collapse = a.collapse[index(q)];
+    if (collapse && collapse->p_value < kMissesData) {
+      std::string own;
+      for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+        own += fmt::format("{}{:.3g} ± {:.2g} (phi {})", own.empty() ? "" : ", ",
+                           *a.estimate.fit.groups[j].own_k[index(q)],
+                           *a.uncertainty.error.groups[j].own_k[index(q)], a.sweep.groups[j].phi);
+      }
+      warnings.push_back(fmt::format(
+          "{}: the volume fractions do not collapse within their errors (Cochran's Q/dof = "
+          "{:.3g}, p = {:.2g}); each phi's own value: {}",
+          universal_name(q), collapse->reduced_chi2(), collapse->p_value, own));
+    }
+  }
+}
+
+}  // namespace
+
+SweepAnalysis analyse_sweep(const Sweep& sweep, const Resampler& resampler,
+                            const BootstrapOptions& options,
+                            const std::function<void(std::size_t)>& progress) {
+  SweepAnalysis a;
+  a.sweep = sweep;
+  a.estimate = fit_sweep(sweep);
+  require_stress_law(sweep, a.estimate);
+  a.uncertainty = bootstrap(a.estimate.fit, resampler, options, progress);
+  a.method = fmt::format("{}; {} replicates, seed {}", resampler.description(), options.replicates,
+                         options.seed);
+  if (a.sweep.groups.size() >= 2) {
+    for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2})
+      if (a.sweep.present[index(q)]) a.collapse[index(q)] = homogeneity(a, q);
+  }
+  warn_about_fits(a, a.warnings);
+  warn_about_collapse(a, a.warnings);
+  for (const auto& [name, fraction] : a.uncertainty.failures) {
+    if (fraction > kTolerableFailures) {
+      a.warnings.push_back(fmt::format(
+          "{}: {:.1f} % of the bootstrap replicates failed to fit; its error is unreliable", name,
+          100.0 * fraction));
+    }
+  }
+  return a;
+}
+
+}  // namespace softglass::bridge

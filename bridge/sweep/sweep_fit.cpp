@@ -1,0 +1,82 @@
+#include "bridge/sweep/sweep_fit.h"
+
+#include <cmath>
+
+namespace softglass::bridge {
+
+namespace {
+
+constexpr std::array<Quantity, 3> kStresses = {Quantity::sigma, Quantity::N1, Quantity::N2};
+
+HbParameters usable(const HerschelBulkleyFit& fit) {
+  return fit.converged ? fit.parameters : HbParameters{kNaN, kNaN, kNaN};
+}
+
+}  // namespace
+
+SweepFitOutcome fit_sweep(const Sweep& sweep) {
+  SweepFitOutcome out;
+  SweepFit& fit = out.fit;
+  FitDiagnostics& diagnostics = out.diagnostics;
+  diagnostics.hb.resize(sweep.groups.size());
+
+  for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
+    const PhiGroup& g = sweep.groups[j];
+    GroupFit& f = fit.groups.emplace_back();
+    f.phi = g.phi;
+    f.modulus = g.modulus.value;
+    for (Quantity q : kAllQuantities) {
+      if (!g.curves[index(q)]) continue;
+      const HerschelBulkleyFit& hb =
+          diagnostics.hb[j][index(q)].emplace(fit_herschel_bulkley(*g.curves[index(q)]));
+      f.hb[index(q)] = usable(hb);
+    }
+    f.yield_strain = f.hb[index(Quantity::sigma)]->yield / f.modulus;
+  }
+
+  // The universal stress law, then the normal laws on its yield strains.
+  std::vector<const Curve*> curves;
+  std::vector<double> moduli, yield_strains;
+  for (const PhiGroup& g : sweep.groups) {
+    curves.push_back(&*g.curves[index(Quantity::sigma)]);
+    moduli.push_back(g.modulus.value);
+  }
+  const UniversalFit& stress =
+      diagnostics.universal[index(Quantity::sigma)].emplace(fit_universal_stress(curves, moduli));
+  fit.k[index(Quantity::sigma)] = stress.converged ? stress.k : kNaN;
+  for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
+    GroupFit& f = fit.groups[j];
+    f.universal_yield[index(Quantity::sigma)] = stress.converged ? stress.yield[j] : kNaN;
+    f.universal_yield_strain = *f.universal_yield[index(Quantity::sigma)] / f.modulus;
+    yield_strains.push_back(f.universal_yield_strain);
+  }
+  for (Quantity q : {Quantity::N1, Quantity::N2}) {
+    if (!sweep.present[index(q)]) continue;
+    curves.clear();
+    for (const PhiGroup& g : sweep.groups) curves.push_back(&*g.curves[index(q)]);
+    const UniversalFit& normal =
+        diagnostics.universal[index(q)].emplace(fit_universal_normal(curves, yield_strains));
+    fit.k[index(q)] = normal.converged ? normal.k : kNaN;
+    for (std::size_t j = 0; j < sweep.groups.size(); ++j)
+      fit.groups[j].universal_yield[index(q)] = normal.converged ? normal.yield[j] : kNaN;
+  }
+
+  // Each φ's own constant from its m = ½ law: the collapse checked φ by φ.
+  for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
+    GroupFit& f = fit.groups[j];
+    for (Quantity q : kStresses) {
+      if (!sweep.present[index(q)]) continue;
+      const SquareRootLaw law = fit_square_root_law(*sweep.groups[j].curves[index(q)]);
+      f.own_k[index(q)] = q == Quantity::sigma
+                              ? law.slope / f.modulus
+                              : law.slope * f.universal_yield_strain / law.intercept;
+    }
+  }
+
+  double sum = 0.0;
+  for (const GroupFit& f : fit.groups) sum += f.hb[index(Quantity::sigma)]->exponent;
+  fit.mean_exponent = sum / static_cast<double>(fit.groups.size());
+  return out;
+}
+
+}  // namespace softglass::bridge

@@ -1,0 +1,60 @@
+// Helpers shared by the bridge tests: a per-test temporary directory, text
+// files, and the shared rheometry folder (absent on some machines).
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace softglass::bridge::testing {
+
+class TemporaryDirectory {
+ public:
+  TemporaryDirectory() {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name =
+        test ? std::string(test->test_suite_name()) + "-" + test->name() : std::string("bridge");
+    path_ = std::filesystem::temp_directory_path() /
+            ("softglass-bridge-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// ../shared/data/rheometry, where the real rheometer files live when present.
+inline std::filesystem::path rheometry_dir() {
+  return std::filesystem::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry";
+}
+
+/// Expects `text` to contain every one of `parts`.
+inline void expect_contains(const std::string& text, std::initializer_list<std::string> parts) {
+  for (const std::string& part : parts)
+    EXPECT_NE(text.find(part), std::string::npos) << part << " in: " << text;
+}
+
+}  // namespace softglass::bridge::testing

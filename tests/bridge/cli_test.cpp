@@ -1,0 +1,145 @@
+// The `bridge` command line, driven as a user would: exit codes (0 ok, 2 bad
+// input, 3 output exists), messages that name the problem, result files that
+// appear whole or not at all, and the three subcommands end to end on a
+// synthetic sweep.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "bridge_test_support.h"
+#include "synthetic_sweep.h"
+
+namespace softglass::bridge {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::expect_contains;
+
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+class BridgeCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    fs::create_directories(work());
+    fs::create_directories(dir_ / "capture");
+    const testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 1);
+    testing::write_text(work() / "sweep.csv", testing::table_csv(s));
+    testing::write_text(work() / "runs.csv", testing::runs_csv(s));
+  }
+
+  fs::path work() const { return dir_ / "work"; }
+
+  Outcome bridge(const std::string& arguments) const {
+    const fs::path out = dir_ / "capture" / "stdout.txt", err = dir_ / "capture" / "stderr.txt";
+    const std::string command = "cd '" + work().string() +
+                                "' && '" SOFTGLASS_BRIDGE_EXECUTABLE "' " + arguments + " > '" +
+                                out.string() + "' 2> '" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status)) << command;
+    return {WEXITSTATUS(status), testing::read_text(out), testing::read_text(err)};
+  }
+
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(work()))
+      names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  testing::TemporaryDirectory dir_;
+};
+
+const char* kFit = "fit sweep.csv --packings runs.csv --bootstrap 100 --quiet";
+
+TEST_F(BridgeCli, HelpAndBadCommandLines) {
+  const Outcome help = bridge("--help");
+  EXPECT_EQ(help.code, 0);
+  expect_contains(help.out, {"fit", "material", "rescale"});
+  EXPECT_EQ(bridge("").code, 2) << "a subcommand is required";
+  EXPECT_EQ(bridge("fit").code, 2) << "fit needs a table";
+  EXPECT_EQ(bridge("fit sweep.csv --bootstrap 1").code, 2);
+  EXPECT_EQ(bridge("material law.prm --phi 0.8 --viscosity 1e-3").code, 2) << "no E*";
+  EXPECT_EQ(bridge("material law.prm --phi 0.8 --modulus 4e4 --interfacial-tension 5e-3 "
+                   "--radius 1e-6 --viscosity 1e-3")
+                .code,
+            2)
+      << "E* twice";
+  EXPECT_EQ(
+      bridge("rescale data.csv --viscosity 1e-3 --yield-strain 0.03 --shear-modulus 100").code, 2);
+}
+
+TEST_F(BridgeCli, FitWritesTheLawAndItsTablesAndRefusesToOverwrite) {
+  const Outcome o = bridge(kFit);
+  ASSERT_EQ(o.code, 0) << o.err;
+  expect_contains(o.out, {"k    sigma/sigma_y", "80 ± 3", "gamma_y", "written  law.prm"});
+  EXPECT_EQ(files(), (std::vector<std::string>{"law.prm", "law_constants.csv", "law_phi.csv",
+                                               "law_points.csv", "runs.csv", "sweep.csv"}));
+  expect_contains(testing::read_text(work() / "law.prm"),
+                  {"# command:", "--packings runs.csv", "packing bootstrap", "subsection law"});
+
+  const std::string before = testing::read_text(work() / "law_phi.csv");
+  const Outcome again = bridge(kFit);
+  EXPECT_EQ(again.code, 3);
+  expect_contains(again.err, {"law.prm", "--force"});
+  EXPECT_EQ(testing::read_text(work() / "law_phi.csv"), before);
+  EXPECT_EQ(bridge(std::string(kFit) + " --force").code, 0);
+  EXPECT_EQ(files().size(), 6u) << "no temporary file left";
+}
+
+TEST_F(BridgeCli, FitRefusesABadTableWithExitCodeTwo) {
+  std::string text = testing::read_text(work() / "sweep.csv");
+  text.replace(text.find("1.2868314229e-03"), 16, "nan");
+  testing::write_text(work() / "bad.csv", text);
+  const Outcome o = bridge("fit bad.csv --quiet");
+  EXPECT_EQ(o.code, 2);
+  expect_contains(o.err, {"bad.csv, line 3", "sigma [E*]", "not finite"});
+  EXPECT_FALSE(fs::exists(work() / "law.prm"));
+  EXPECT_EQ(bridge("fit no_such.csv --quiet").code, 2);
+}
+
+TEST_F(BridgeCli, MaterialForThePapersEmulsion) {
+  ASSERT_EQ(bridge(kFit).code, 0);
+  const Outcome printed = bridge("material law.prm --phi 0.80 --modulus 40e3 --viscosity 1e-3");
+  ASSERT_EQ(printed.code, 0) << printed.err;
+  expect_contains(printed.out,
+                  {"# law:      law.prm", "phi = 0.8, E* = 40000 Pa, eta_s = 0.001 Pa s",
+                   "subsection material", "set yield stress", "set N1 yield"});
+  // E* = 9.92 γ_i/R: γ_i = 5 mN/m, R = 1.24 µm give 40 kPa.
+  const Outcome emulsion = bridge(
+      "material law.prm --phi 0.78 --interfacial-tension 5e-3 --radius 1.24e-6 --viscosity 1e-3 "
+      "-o material.prm");
+  ASSERT_EQ(emulsion.code, 0) << emulsion.err;
+  expect_contains(emulsion.out, {"interpolated between", "written  material.prm"});
+  expect_contains(testing::read_text(work() / "material.prm"),
+                  {"9.92 gamma_i / R", "E* = 40000 Pa"});
+
+  const Outcome outside = bridge("material law.prm --phi 0.95 --modulus 40e3 --viscosity 1e-3");
+  EXPECT_EQ(outside.code, 2);
+  expect_contains(outside.err, {"outside the simulated range", "--extrapolate"});
+  EXPECT_EQ(
+      bridge("material law.prm --phi 0.92 --modulus 40e3 --viscosity 1e-3 --extrapolate").code, 0);
+  EXPECT_EQ(bridge("material missing.prm --phi 0.8 --modulus 40e3 --viscosity 1e-3").code, 2);
+}
+
+TEST_F(BridgeCli, RescaleWritesPointsAndCurves) {
+  testing::write_text(
+      work() / "data.csv",
+      "# made up: tau_y = 100 Pa, E* = 40 kPa, gamma_y = 0.03\n"
+      "Shear rate [1/s],Stress [Pa]\n"
+      "0.001,100.6\n0.01,101.9\n0.1,106.0\n1,118.9\n10,159.6\n100,288.4\n1000,695\n");
+  const Outcome o = bridge("rescale data.csv --viscosity 1e-3 --yield-strain 0.03");
+  ASSERT_EQ(o.code, 0) << o.err;
+  expect_contains(o.out, {"curve 'data'", "E* = ", "(fitted)", "written  rescaled.csv"});
+  expect_contains(testing::read_text(work() / "rescaled_curves.csv"), {"tau_y [Pa]", "data,"});
+  const Outcome mixed = bridge("rescale sweep.csv --viscosity 1e-3 --yield-strain 0.03 -o r2.csv");
+  EXPECT_EQ(mixed.code, 2) << "a reduced table is not a measured curve";
+}
+
+}  // namespace
+}  // namespace softglass::bridge

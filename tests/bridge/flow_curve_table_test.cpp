@@ -1,0 +1,164 @@
+// The flow-curve table and its per-packing companion: a synthetic sweep read
+// back exactly, and degenerate input — missing columns and values, NaN,
+// negative values, mixed units, too few points, mismatched companions —
+// refused with a message naming what is wrong.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "bridge/io/flow_curve_table.h"
+#include "bridge/sweep/resampling.h"
+#include "bridge/sweep/sweep.h"
+#include "bridge_test_support.h"
+#include "common/errors.h"
+#include "synthetic_sweep.h"
+
+namespace softglass::bridge {
+namespace {
+
+using testing::expect_contains;
+
+FlowCurveTable parse_table(const std::string& text) {
+  return read_flow_curve_table(CsvTable::parse(text, "sweep.csv"));
+}
+
+// The synthetic table as CSV, with `from` replaced by `to` once.
+std::string edited(const std::string& from, const std::string& to) {
+  std::string text = testing::table_csv(testing::make_synthetic_sweep({}, 1));
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+// The message of the InputError that reading `text` (table, grouped) raises.
+std::string refusal(const std::string& text) {
+  try {
+    make_sweep(parse_table(text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted:\n" << text.substr(0, 400);
+  return "";
+}
+
+TEST(FlowCurveTable, ReadsTheSyntheticSweepBack) {
+  const testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 3);
+  const FlowCurveTable t = parse_table(testing::table_csv(s));
+  ASSERT_EQ(t.points.size(), s.table.points.size());
+  EXPECT_EQ(t.present, (std::array<bool, kQuantities>{true, true, true, true}));
+  EXPECT_EQ(t.comments.size(), 1u);
+  for (std::size_t i = 0; i < t.points.size(); ++i) {
+    const StatePoint &a = t.points[i], &b = s.table.points[i];
+    EXPECT_EQ(a.phi, b.phi);
+    EXPECT_NEAR(a.gamma_tilde, b.gamma_tilde, 1e-6 * b.gamma_tilde);  // 7 digits written
+    for (Quantity q : kAllQuantities)
+      EXPECT_NEAR(a.values[index(q)]->value, b.values[index(q)]->value,
+                  1e-9 * std::abs(b.values[index(q)]->value));  // 11 digits written
+  }
+  EXPECT_LT(t.points[0].values[index(Quantity::N2)]->value, 0) << "N2 may be negative";
+  const Sweep sweep = make_sweep(t);
+  ASSERT_EQ(sweep.groups.size(), 5u);
+  EXPECT_EQ(sweep.points(), t.points.size());
+  EXPECT_EQ(sweep.groups[2].phi, 0.8);
+  EXPECT_TRUE(
+      std::is_sorted(sweep.groups[2].curves[0]->x.begin(), sweep.groups[2].curves[0]->x.end()));
+}
+
+TEST(FlowCurveTable, RefusesDegenerateTablesNamingTheProblem) {
+  const std::string header = testing::table_csv(testing::make_synthetic_sweep({}, 1));
+  const struct {
+    const char* what;
+    std::string text;
+    std::vector<std::string> message;
+  } cases[] = {
+      {"missing column", edited(",G0_se [E*]", ",G0_error [E*]"), {"G0_se [E*]", "missing"}},
+      {"column without units", edited("sigma [E*],", "sigma,"), {"'sigma'", "no units"}},
+      {"mixed units",
+       edited("N1 [E*],", "N1 [Pa],"),
+       {"'N1 [Pa]'", "'Pa'", "expected 'E*'", "reduced"}},
+      {"dimensionless phi in percent", edited("phi [1]", "phi [%]"), {"'phi [%]'", "expected '1'"}},
+      {"NaN", edited(",5,1.2868314229e-03", ",5,nan"), {"line 3", "'sigma [E*]'", "not finite"}},
+      {"empty cell", edited(",5,1.2868314229e-03", ",5,"), {"line 3", "'sigma [E*]'", "empty"}},
+      {"negative stress",
+       edited(",5,1.2868314229e-03", ",5,-1.2868314229e-03"),
+       {"line 3", "'sigma [E*]'", "must be > 0"}},
+      {"negative rate",
+       edited("0.7,1.000000e-09", "0.7,-1.000000e-09"),
+       {"'gamma_tilde [1]'", "must be > 0"}},
+      {"zero standard error",
+       edited("1.2868314229e-03,1.222923e-05", "1.2868314229e-03,0"),
+       {"'sigma_se [E*]'", "must be > 0"}},
+      {"phi above one", edited("0.7,1.000000e-09", "1.7,1.000000e-09"), {"'phi [1]'", "(0, 1)"}},
+      {"fractional packings",
+       edited("0.7,1.000000e-09,5", "0.7,1.000000e-09,4.5"),
+       {"'packings [1]'", "whole number"}},
+      {"duplicate state point",
+       edited("0.7,3.162278e-09", "0.7,1.000000e-09"),
+       {"already on line 3"}},
+      {"N1 without its error", edited(",N1_se [E*]", ",N1_sd [E*]"), {"N1_se [E*]", "missing"}},
+      {"no rows", header.substr(0, header.find("\n0.7")), {"no rows"}},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.what);
+    const std::string message = refusal(c.text);
+    for (const std::string& part : c.message)
+      EXPECT_NE(message.find(part), std::string::npos) << message;
+  }
+}
+
+TEST(FlowCurveTable, RefusesTooFewShearRatesPerVolumeFraction) {
+  testing::SyntheticTruth truth;
+  truth.gamma_tilde = {1e-8, 1e-7, 1e-6};
+  const std::string message = refusal(testing::table_csv(testing::make_synthetic_sweep(truth, 1)));
+  expect_contains(message, {"phi = 0.7", "3 shear rate", "at least 4"});
+}
+
+// The per-packing companion must be the runs behind the table.
+TEST(FlowCurveTable, RefusesCompanionsThatDoNotMatchTheTable) {
+  const testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 1);
+  const Sweep sweep = make_sweep(s.table);
+  const auto refusal_of = [&](std::vector<PackingRun> runs) -> std::string {
+    try {
+      make_packing_resampler(sweep, runs, "runs.csv");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "companion accepted";
+    return "";
+  };
+  EXPECT_NO_THROW(make_packing_resampler(sweep, s.runs, "runs.csv"));
+
+  std::vector<PackingRun> stray = s.runs;
+  stray[7].gamma_tilde *= 2;
+  expect_contains(refusal_of(stray), {"runs.csv", "not a state point"});
+
+  std::vector<PackingRun> missing = s.runs;
+  missing.pop_back();
+  expect_contains(refusal_of(missing), {"4 run(s)", "averages 5 packings"});
+
+  std::vector<PackingRun> shifted = s.runs;
+  *shifted[0].values[index(Quantity::sigma)] *= 1.5;
+  expect_contains(refusal_of(shifted), {"average sigma", "same sweep"});
+
+  std::vector<PackingRun> no_n1 = s.runs;
+  for (PackingRun& r : no_n1) r.values[index(Quantity::N1)].reset();
+  expect_contains(refusal_of(no_n1), {"'N1'", "one of the two tables"});
+
+  // Read from CSV, the companion needs its seed column.
+  const std::string text = testing::runs_csv(s);
+  EXPECT_THROW(read_packing_runs(CsvTable::parse(
+                   std::regex_replace(text, std::regex("seed"), "sead"), "runs.csv")),
+               InputError);
+  EXPECT_EQ(read_packing_runs(CsvTable::parse(text, "runs.csv")).size(), s.runs.size());
+}
+
+TEST(FlowCurveTable, RefusesAPackingBootstrapOverASinglePacking) {
+  testing::SyntheticTruth truth;
+  truth.packings = 2;
+  testing::SyntheticSweep s = testing::make_synthetic_sweep(truth, 1);
+  for (PackingRun& r : s.runs) r.seed = 1;  // both runs of every point from one packing
+  EXPECT_THROW(make_packing_resampler(make_sweep(s.table), s.runs, "runs.csv"), InputError);
+}
+
+}  // namespace
+}  // namespace softglass::bridge

@@ -1,0 +1,86 @@
+// The law file: written by law_text, read back by ParameterHandler (the
+// command line's reader), with every malformed variant refused naming the entry.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "bridge/app/law_file.h"
+#include "bridge/law/law.h"
+#include "bridge_test_support.h"
+#include "common/errors.h"
+#include "synthetic_sweep.h"
+
+namespace softglass::bridge {
+namespace {
+
+using testing::expect_contains;
+
+Law synthetic_law(bool normal = true) {
+  testing::SyntheticTruth t;
+  t.normal = normal;
+  const testing::SyntheticSweep s = testing::make_synthetic_sweep(t, 1);
+  const Sweep sweep = make_sweep(s.table);
+  const SweepAnalysis a =
+      analyse_sweep(sweep, *make_packing_resampler(sweep, s.runs, "runs"), {100, 1});
+  return make_law(a, {"test law", "second line"});
+}
+
+TEST(LawFile, RoundTripsThroughParameterHandler) {
+  testing::TemporaryDirectory dir;
+  for (bool normal : {true, false}) {
+    const Law law = synthetic_law(normal);
+    testing::write_text(dir / "law.prm", law_text(law));
+    const Law back = read_law_file(dir / "law.prm");
+    ASSERT_EQ(back.phi, law.phi);
+    EXPECT_NEAR(back.gamma_tilde_min, law.gamma_tilde_min, 1e-6 * law.gamma_tilde_min);
+    EXPECT_EQ(back.hb[index(Quantity::N1)].has_value(), normal);
+    EXPECT_EQ(back.k[index(Quantity::N2)].has_value(), normal);
+    for (Quantity q : kAllQuantities) {
+      if (!law.hb[index(q)]) continue;
+      for (std::size_t j = 0; j < law.phi.size(); ++j) {
+        // Values are written to 10 significant digits, errors to 4.
+        const HbLaw &a = *law.hb[index(q)], &b = *back.hb[index(q)];
+        EXPECT_NEAR(b.yield[j].value, a.yield[j].value, 1e-9 * std::abs(a.yield[j].value));
+        EXPECT_NEAR(b.exponent[j].error, a.exponent[j].error, 1e-3 * a.exponent[j].error);
+        EXPECT_NEAR(b.correlation[j], a.correlation[j], 1e-4);
+      }
+    }
+    EXPECT_NEAR(back.k[0]->value, law.k[0]->value, 1e-8 * law.k[0]->value);
+    expect_contains(law_text(law), {"# test law\n", "subsection law", "set k ", "80 +- 3"});
+  }
+}
+
+TEST(LawFile, RefusesMalformedFilesNamingTheEntry) {
+  testing::TemporaryDirectory dir;
+  const std::string good = law_text(synthetic_law());
+  const auto refusal = [&](const std::string& text) -> std::string {
+    testing::write_text(dir / "bad.prm", text);
+    try {
+      read_law_file(dir / "bad.prm");
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "accepted";
+    return "";
+  };
+  const auto replaced = [&](const std::string& pattern, const std::string& by) {
+    const std::string text =
+        std::regex_replace(good, std::regex(pattern), by, std::regex_constants::format_first_only);
+    EXPECT_NE(text, good) << pattern;
+    return text;
+  };
+  expect_contains(refusal(replaced("  set k error[^\n]*\n", "")),
+                  {"subsection law/universal: entry 'k error' missing"});
+  expect_contains(refusal(good + "subsection law\n  set colour = red\nend\n"), {"colour"});
+  expect_contains(refusal(replaced("(set yield +=) [^,]*,", "$1")),
+                  {"sigma/yield", "one per volume fraction"});
+  expect_contains(refusal(replaced("(set exponent +=) [^,]*,", "$1 2.5,")),
+                  {"sigma/exponent", "(0, 2]"});
+  expect_contains(refusal(replaced("(set volume fractions +=) 0.7,", "$1 0.95,")), {"increase"});
+  expect_contains(refusal(replaced("(set k +=) [^\n]*", "$1 eighty")), {"k"});
+  expect_contains(refusal(replaced("  subsection sigma\n[^]*?  end\n", "")), {"sigma"});
+  EXPECT_THROW(read_law_file(dir / "no_such.prm"), InputError);
+}
+
+}  // namespace
+}  // namespace softglass::bridge

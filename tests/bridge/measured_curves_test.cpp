@@ -1,0 +1,92 @@
+// Reading measured flow curves: the rheometer layouts, units and their
+// conversion, and the refusal of missing, reduced or mixed units and bad values.
+#include <gtest/gtest.h>
+
+#include "bridge/io/measured_curves.h"
+#include "bridge_test_support.h"
+#include "common/errors.h"
+
+namespace softglass::bridge {
+namespace {
+
+using testing::expect_contains;
+
+std::vector<MeasuredCurve> read(const std::string& text, FallbackUnits units = {}) {
+  return read_measured_curves(CsvTable::parse(text, "data.csv"), units);
+}
+
+std::string refusal(const std::string& text, FallbackUnits units = {}) {
+  try {
+    read(text, units);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted:\n" << text;
+  return "";
+}
+
+const std::string kInstrument =
+    "Stress [Pa],Shear rate [1/s],Viscosity [Pa.s],Normal stress [Pa]\n"
+    "260.59,1000.0,0.26,0.28\n"
+    "20.0,1.0,20.0,0.27\n"
+    "78.1,100.0,0.78,0.27\n"
+    "33.6,10.0,3.36,0.27\n";
+
+TEST(MeasuredCurves, ReadsAnInstrumentExportSortedByRate) {
+  const auto curves = read(kInstrument);
+  ASSERT_EQ(curves.size(), 1u);
+  EXPECT_EQ(curves[0].label, "data");
+  EXPECT_EQ(curves[0].shear_rate, (std::vector<double>{1.0, 10.0, 100.0, 1000.0}));
+  EXPECT_EQ(curves[0].stress, (std::vector<double>{20.0, 33.6, 78.1, 260.59}));
+  EXPECT_FALSE(curves[0].N1) << "'Normal stress' is not N1 (meaningless in Couette)";
+}
+
+TEST(MeasuredCurves, GroupsRowsBySampleAndReadsUnitSuffixes) {
+  const auto curves = read(
+      "sample_id,shear_rate_1/s,stress_kPa,N1 [Pa]\n"
+      "A,1,0.010,1\nB,1,0.020,2\nA,2,0.011,1\nB,2,0.021,2\nA,3,0.012,1\nB,3,0.022,2\n"
+      "A,4,0.013,1\nB,4,0.023,2\n");
+  ASSERT_EQ(curves.size(), 2u);
+  EXPECT_EQ(curves[1].label, "B");
+  EXPECT_DOUBLE_EQ(curves[1].stress[0], 20.0) << "kPa converted to Pa";
+  ASSERT_TRUE(curves[1].N1);
+  EXPECT_EQ((*curves[1].N1)[3], 2.0);
+}
+
+TEST(MeasuredCurves, ReadsPairedColumnsWithUnitsFromTheCommandLine) {
+  const std::string text =
+      "0.68,,0.80,\n0.001,4.7,0.001,28.7\n0.01,4.9,0.01,29.7\n0.1,5.5,0.1,34.0\n1,7.2,1,42.4\n"
+      ",,10,63.2\n";
+  const auto curves = read(text, {"1/min", "Pa"});
+  ASSERT_EQ(curves.size(), 2u);
+  EXPECT_EQ(curves[0].label, "0.68");
+  EXPECT_EQ(curves[0].shear_rate.size(), 4u) << "a shorter curve ends at empty cells";
+  EXPECT_EQ(curves[1].shear_rate.size(), 5u);
+  EXPECT_DOUBLE_EQ(curves[1].shear_rate[4], 10.0 / 60.0);
+  expect_contains(refusal(text), {"no units", "--rate-unit"});
+}
+
+TEST(MeasuredCurves, RefusesMissingReducedAndMixedUnits) {
+  expect_contains(refusal("shear rate,stress [Pa]\n1,2\n2,3\n3,4\n4,5\n"),
+                  {"'shear rate'", "no units"});
+  expect_contains(refusal("Shear rate [1/s],Stress [E*]\n1,2\n2,3\n3,4\n4,5\n"),
+                  {"'E*' is not a stress unit", "dimensional"});
+  expect_contains(refusal("gamma dot [1],stress [Pa]\n1,2\n2,3\n3,4\n4,5\n"),
+                  {"'1' is not a shear-rate unit"});
+  expect_contains(refusal("Shear rate [1/s],Stress [Pa],N1 [1]\n1,2,1\n2,3,1\n3,4,1\n4,5,1\n"),
+                  {"'N1 [1]'", "not a stress unit"});
+  expect_contains(refusal("Viscosity [Pa.s],Torque [uN.m]\n1,2\n"),
+                  {"shear-rate and a stress column"});
+  expect_contains(refusal("rate [1/s],stress [Pa],Stress [kPa]\n1,2,3\n"), {"second column"});
+}
+
+TEST(MeasuredCurves, RefusesBadValuesAndShortCurves) {
+  expect_contains(refusal("rate [1/s],stress [Pa]\n1,2\n2,-3\n3,4\n4,5\n"),
+                  {"line 3", "'stress [Pa]'", "must be > 0"});
+  expect_contains(refusal("rate [1/s],stress [Pa]\n1,2\n2,nan\n3,4\n4,5\n"),
+                  {"line 3", "not finite"});
+  expect_contains(refusal("rate [1/s],stress [Pa]\n1,2\n2,3\n3,4\n"), {"3 point(s)", "at least 4"});
+}
+
+}  // namespace
+}  // namespace softglass::bridge

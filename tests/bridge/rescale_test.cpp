@@ -1,0 +1,148 @@
+// `bridge rescale` on curves made from the universal law with known τ_y, γ_y
+// and E*: what is fitted comes back within its error, the rescaled points lie
+// on 1 + k √x, and inconsistent settings are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "bridge/rescale/rescale.h"
+#include "bridge_test_support.h"
+#include "common/errors.h"
+
+namespace softglass::bridge {
+namespace {
+
+using testing::expect_contains;
+
+// τ = τ_y (1 + k √(γ̇ η_s/(E* γ_y²))), N1 = N1_y (1 + k′ …), 1e-3 … 1e3 1/s,
+// with 2 % relative noise.
+struct Sample {
+  double tau_y = 100.0, gamma_y = 0.03, modulus = 40e3, viscosity = 1e-3, n1_yield = 40.0;
+};
+MeasuredCurve measured(const Sample& s, std::uint64_t seed, double noise = 0.02) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal;
+  MeasuredCurve c;
+  c.label = "sample";
+  c.N1.emplace();
+  for (int i = 0; i <= 24; ++i) {
+    const double rate = std::pow(10.0, -3 + 0.25 * i);
+    const double root = std::sqrt(rate * s.viscosity / s.modulus) / s.gamma_y;
+    c.shear_rate.push_back(rate);
+    c.stress.push_back(s.tau_y * (1 + 80 * root) * (1 + noise * normal(rng)));
+    c.N1->push_back(s.n1_yield * (1 + 20 * root) * (1 + noise * normal(rng)));
+  }
+  return c;
+}
+
+RescaleSettings settings_for(const Sample& s) {
+  RescaleSettings r;
+  r.viscosity = s.viscosity;
+  r.yield_strain = {s.gamma_y};
+  return r;
+}
+
+// Within 4 standard errors (a handful of parameters per test: a false alarm rate
+// below 1e-3); the fits' errors themselves are Jacobian errors, accurate here
+// since the noise is Gaussian and the model right.
+void expect_within(const Estimate& e, double truth, const char* what) {
+  EXPECT_LT(std::abs(e.value - truth), 4 * e.error) << what << ": " << e.value << " ± " << e.error;
+  EXPECT_GT(e.error, 0.0) << what;
+}
+
+TEST(Rescale, FitsTheModulusWhenItIsUnknown) {
+  const Sample s;
+  const auto out = rescale({measured(s, 1)}, settings_for(s));
+  ASSERT_EQ(out.size(), 1u);
+  const RescaledCurve& r = out[0];
+  EXPECT_TRUE(r.modulus_fitted && r.yield_stress_fitted);
+  expect_within(r.modulus, s.modulus, "E*");
+  expect_within(r.yield_stress, s.tau_y, "tau_y");
+  expect_within(*r.N1_yield, s.n1_yield, "N1_y");
+  EXPECT_NEAR(r.rms_residual, 0.02, 0.006) << "the residuals are the 2 % noise";
+  for (std::size_t i = 0; i < r.collapse_rate.size(); ++i)
+    EXPECT_NEAR(r.stress_ratio[i] / (1 + 80 * std::sqrt(r.collapse_rate[i])), 1.0, 0.1);
+}
+
+TEST(Rescale, FitsOnlyTheYieldStressWhenTheModulusIsGiven) {
+  const Sample s;
+  RescaleSettings settings = settings_for(s);
+  settings.modulus = s.modulus;
+  const RescaledCurve r = rescale({measured(s, 2)}, settings)[0];
+  EXPECT_FALSE(r.modulus_fitted);
+  EXPECT_EQ(r.modulus.value, s.modulus);
+  EXPECT_EQ(r.modulus.error, 0.0);
+  expect_within(r.yield_stress, s.tau_y, "tau_y");
+  // Nothing left to fit: the points are rescaled as given.
+  settings.yield_stress = {s.tau_y};
+  const RescaledCurve given = rescale({measured(s, 2)}, settings)[0];
+  EXPECT_FALSE(given.yield_stress_fitted);
+  EXPECT_EQ(given.yield_stress.value, s.tau_y);
+  EXPECT_NEAR(given.rms_residual, 0.02, 0.006);
+}
+
+// The paper's route: γ_y = τ_y/G0 with G0 measured.
+TEST(Rescale, TakesTheYieldStrainFromTheShearModulus) {
+  const Sample s;
+  RescaleSettings settings = settings_for(s);
+  settings.yield_strain.clear();
+  settings.shear_modulus = {s.tau_y / s.gamma_y};
+  const RescaledCurve r = rescale({measured(s, 3)}, settings)[0];
+  expect_within(r.modulus, s.modulus, "E*");
+  expect_within(r.yield_strain, s.gamma_y, "gamma_y");
+}
+
+TEST(Rescale, HerschelBulkleyFitOfTheMeasuredCurve) {
+  const Sample s;
+  const RescaledCurve r = rescale({measured(s, 4, 0.01)}, settings_for(s))[0];
+  ASSERT_TRUE(r.herschel_bulkley.converged);
+  // The universal law is Herschel-Bulkley with n = ½ and K = τ_y k √(η_s/E*)/γ_y.
+  EXPECT_NEAR(r.herschel_bulkley.parameters.exponent, 0.5,
+              4 * std::sqrt(r.herschel_bulkley.covariance(2, 2)));
+  EXPECT_NEAR(r.herschel_bulkley.parameters.yield, s.tau_y,
+              4 * std::sqrt(r.herschel_bulkley.covariance(0, 0)));
+}
+
+TEST(Rescale, OnlyTheRateWindowIsFitted) {
+  const Sample s;
+  MeasuredCurve c = measured(s, 5);
+  for (std::size_t i = 0; i < 6; ++i) c.stress[i] *= 0.3;  // "wall slip" below 0.03 1/s
+  RescaleSettings settings = settings_for(s);
+  settings.min_rate = 0.03;
+  const RescaledCurve r = rescale({c}, settings)[0];
+  EXPECT_FALSE(r.used[0]);
+  EXPECT_TRUE(r.used.back());
+  expect_within(r.modulus, s.modulus, "E*");
+  EXPECT_LT(r.rms_residual, 0.03);
+}
+
+TEST(Rescale, RefusesInconsistentSettingsAndCurvesWithoutPlateau) {
+  const Sample s;
+  const MeasuredCurve c = measured(s, 6);
+  const auto refusal = [&](const RescaleSettings& settings, const MeasuredCurve& curve) {
+    try {
+      rescale({curve, curve}, settings);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "accepted";
+    return std::string();
+  };
+  RescaleSettings both = settings_for(s);
+  both.shear_modulus = {3000};
+  expect_contains(refusal(both, c), {"one of the two"});
+  RescaleSettings three = settings_for(s);
+  three.yield_strain = {0.03, 0.03, 0.03};
+  expect_contains(refusal(three, c), {"--yield-strain", "3 values for 2 curves"});
+  RescaleSettings window = settings_for(s);
+  window.min_rate = 500;
+  expect_contains(refusal(window, c), {"point(s) in the rate window"});
+  MeasuredCurve fluid = c;  // a power-law fluid
+  for (std::size_t i = 0; i < fluid.stress.size(); ++i)
+    fluid.stress[i] = 50 * std::sqrt(fluid.shear_rate[i]);
+  expect_contains(refusal(settings_for(s), fluid), {"yield", "--yield-stress"});
+}
+
+}  // namespace
+}  // namespace softglass::bridge
