@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "macro/io/deal_ii_errors.h"
 
 namespace softglass::macro {
 
@@ -20,18 +21,6 @@ namespace Patterns = dealii::Patterns;
 constexpr const char* kSubsection = "material";
 // Entries every file must set (the shear law in full).
 constexpr std::array kRequired{"model", "yield stress", "consistency", "flow index"};
-
-// deal.II's exception text, without source locations, on one line.
-std::string one_line(const dealii::ExceptionBase& error) {
-  std::ostringstream info;
-  error.print_info(info);
-  std::string text;
-  for (std::istringstream words(info.str()); words;) {
-    std::string word;
-    if (words >> word) text += (text.empty() ? "" : " ") + word;
-  }
-  return text;
-}
 
 // ParameterHandler reports entries by mangled path: "material.yield_20stress".
 std::string demangle(const std::string& path) {
@@ -105,7 +94,7 @@ Material read_material(dealii::ParameterHandler& prm) {
   } catch (const dealii::ExceptionBase& error) {
     // A value the pattern accepts but the conversion cannot represent (1e-400).
     prm.leave_subsection();
-    throw InputError(fmt::format("material: {}", one_line(error)));
+    throw InputError(fmt::format("material: {}", io::one_line(error)));
   }
   prm.leave_subsection();
   validate(material);
@@ -119,7 +108,7 @@ Material parse_material(const std::string& text, const std::string& source) {
   try {
     prm.parse_input(input, source, "", false);
   } catch (const dealii::ExceptionBase& error) {
-    throw InputError(one_line(error));
+    throw InputError(io::one_line(error));
   }
   return read_material(prm);
 }

@@ -1,0 +1,105 @@
+#include "macro/app/scene_file.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "common/errors.h"
+#include "macro/io/deal_ii_errors.h"
+#include "macro/fe/solver_settings.h"
+#include "macro/material/material_parameters.h"
+#include "macro/scenes/scene.h"
+
+namespace softglass::macro::app {
+
+namespace Patterns = dealii::Patterns;
+
+namespace {
+
+// Includes nest at most this deep (a file including itself is an error).
+constexpr int kMaxIncludeDepth = 8;
+
+std::string expand(const std::filesystem::path& file, int depth) {
+  require(depth <= kMaxIncludeDepth,
+          fmt::format("include nesting deeper than {} at '{}'", kMaxIncludeDepth, file.string()));
+  std::ifstream in(file);
+  require(in.good(), fmt::format("scene file '{}' cannot be read", file.string()));
+  static const std::regex include_line(R"(^\s*include\s+(\S+)\s*$)", std::regex::icase);
+  std::string text, line;
+  while (std::getline(in, line)) {
+    std::smatch match;
+    if (std::regex_match(line, match, include_line)) {
+      std::filesystem::path included = match[1].str();
+      if (included.is_relative()) included = file.parent_path() / included;
+      text += expand(included, depth + 1);
+    } else {
+      text += line + "\n";
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+void declare_scene_file(dealii::ParameterHandler& prm) {
+  declare_scenes(prm);
+  declare_material(prm);
+  fe::declare_solver_settings(prm);
+  prm.enter_subsection("sweep");
+  prm.declare_entry("values", "", Patterns::List(Patterns::Double(), 0, 100000),
+                    "operating points: rotation rates [rad/s] or pressure gradients [Pa/m], > 0, "
+                    "comma-separated; empty: first/last/points/spacing");
+  prm.declare_entry("first", "1", Patterns::Double(), "first operating point (> 0)");
+  prm.declare_entry("last", "1", Patterns::Double(), "last operating point (> 0)");
+  prm.declare_entry("points", "1", Patterns::Integer(1, 100000), "number of operating points");
+  prm.declare_entry("spacing", "log", Patterns::Selection("log|linear"), "log | linear");
+  prm.leave_subsection();
+  prm.enter_subsection("output");
+  prm.declare_entry("vtu", "last", Patterns::Selection("none|last|all"),
+                    "ParaView fields: none | last (operating point) | all");
+  prm.leave_subsection();
+}
+
+std::string expand_includes(const std::filesystem::path& file) { return expand(file, 0); }
+
+void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
+  const std::string text = expand_includes(file);
+  std::istringstream input(text);
+  try {
+    prm.parse_input(input, file.string(), "", false);
+  } catch (const dealii::ExceptionBase& error) {
+    throw InputError(io::one_line(error));
+  }
+}
+
+std::vector<double> read_sweep(dealii::ParameterHandler& prm) {
+  prm.enter_subsection("sweep");
+  std::vector<double> points;
+  const std::string values = prm.get("values");
+  if (!values.empty()) {
+    for (const std::string& item : dealii::Utilities::split_string_list(values)) {
+      const double v = dealii::Utilities::string_to_double(item);
+      require(std::isfinite(v) && v > 0.0,
+              fmt::format("sweep: values contains {}, which is not allowed; allowed: > 0", item));
+      points.push_back(v);
+    }
+  } else {
+    const double first = prm.get_double("first"), last = prm.get_double("last");
+    const int n = prm.get_integer("points");
+    for (auto [name, v] : {std::pair{"first", first}, std::pair{"last", last}})
+      require(std::isfinite(v) && v > 0.0,
+              fmt::format("sweep: {} = {} is not allowed; allowed: > 0", name, v));
+    const bool log = prm.get("spacing") == "log";
+    for (int k = 0; k < n; ++k) {
+      const double t = n == 1 ? 0.0 : double(k) / (n - 1);
+      points.push_back(log ? first * std::pow(last / first, t) : first + (last - first) * t);
+    }
+  }
+  prm.leave_subsection();
+  return points;
+}
+
+}  // namespace softglass::macro::app

@@ -1,0 +1,29 @@
+// The scene file: a deal.II ParameterHandler file holding `set scene`, the
+// scene's subsection, `subsection solver`, `subsection sweep`, `subsection
+// output` and (usually by `include FILE`) the material fragment.
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace softglass::macro::app {
+
+/// Declares every entry a scene file may hold.
+void declare_scene_file(dealii::ParameterHandler& prm);
+
+/// The file's text with each `include FILE` line replaced by that file's text,
+/// FILE taken relative to the including file. InputError if a file is missing.
+std::string expand_includes(const std::filesystem::path& file);
+
+/// Parses the scene file into `prm`; unknown entries, values that do not match
+/// their pattern (e.g. a unit written after a number) → InputError naming the
+/// line and entry.
+void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file);
+
+/// The operating points of `subsection sweep`, validated (> 0, finite).
+std::vector<double> read_sweep(dealii::ParameterHandler& prm);
+
+}  // namespace softglass::macro::app

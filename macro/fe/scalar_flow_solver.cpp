@@ -1,0 +1,668 @@
+// The scalar flow solver (scalar_flow_solver.h). The one heavy translation unit
+// of the reduced scenes: every deal.II template it needs is instantiated here,
+// for dim = 1 and 2, and nowhere else.
+//
+// The mathematics, in the order of the functions below.
+//
+// Regularised method. With a regularised viscosity η_ε (regularised_law.h) the
+// functional J of scalar_problem.h is smooth and strictly convex, and its
+// minimiser solves the nonlinear problem
+//
+//     R(u)(v) = ∫ ρ s² η_ε(γ̇) ∇u·∇v dx − ∫ ρ f v dx = 0,     γ̇ = s|∇u|.
+//
+// Newton's method linearises the flux q = ρ s² η_ε ∇u about the current u: with
+// n = ∇u/|∇u| and the tangent τ' = dτ/dγ̇ = η + γ̇ dη/dγ̇,
+//
+//     ∂q/∂∇u = ρ s² [ η (I − n⊗n) + τ' n⊗n ],
+//
+// symmetric positive definite (τ' > 0 for every regularised law), so each
+// Newton step is a weighted anisotropic Laplace problem, solved by a sparse
+// direct factorisation. The step is a descent direction of J; if the full step
+// does not reduce the residual, the step length minimises J along it exactly:
+// φ(α) = J(u + αδ) is convex, so its derivative φ'(α) = R(u + αδ)(δ) increases
+// and its zero is found by regula falsi. Newton then converges from any start.
+//
+// Continuation. The smaller ε, the more η_ε varies (from τ_y/ε in the plug to K
+// γ̇^{n−1} in the flow) and the narrower the region where Newton converges
+// quadratically. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
+// the scene's viscosity scale) and divides ε by 10 per stage down to the target,
+// each stage starting from the previous one's solution. The last two stages
+// (10ε and ε) give the regularisation error estimate: the outputs converge like
+// O(ε) (macro.md), so the error at ε is about their difference / 9.
+//
+// Augmented Lagrangian (ALG2, Fortin & Glowinski 1983). The unregularised J is
+// not differentiable where γ̇ = 0. Introduce the shear-rate field γ ≈ s∇u at
+// the quadrature points and a multiplier λ (the stress), and alternate
+//   1. u: r ∫ ρ s² ∇u·∇v = ∫ ρ f v − ∫ ρ s (λ − r γ)·∇v  (one matrix, factorised once);
+//   2. γ: pointwise, with χ = λ + r s∇u: γ = 0 where |χ| ≤ τ_y (rigid), else
+//         γ = g χ/|χ| with τ_y + K gⁿ + r g = |χ| (HerschelBulkley::proximal_rate);
+//   3. λ ← λ + r (s∇u − γ).
+// The rigid set {γ = 0} is then exactly the set where the stress is below the
+// yield stress: no regularisation. The price is slow convergence (the residual
+// falls roughly like 1/iterations), measured by the constraint residual.
+//
+// Adaptivity. After each solve the Kelly indicator (the jump of the normal
+// derivative across faces) ranks the cells; the top fraction is refined, and so
+// is every cell the yield surface crosses (some quadrature points yielded and
+// some not). The discretisation error is estimated as the change of each output
+// over the last cycle.
+#include "macro/fe/scalar_flow_solver.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_refinement.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/error_estimator.h>
+#include <deal.II/numerics/solution_transfer.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include "common/errors.h"
+#include "macro/material/regularised_law.h"
+
+namespace softglass::macro::fe {
+
+using namespace dealii;
+
+namespace {
+
+// Continuation divides ε by this per stage; 10 keeps each stage within a few
+// Newton iterations of the previous one for n down to 0.3 (measured).
+constexpr double kContinuationFactor = 10.0;
+// Regula falsi on φ'(α): stop when |φ'| has dropped to this fraction of φ'(0)
+// (an inexact but sufficient line search), or after this many steps.
+constexpr double kLineSearchReduction = 0.1;
+constexpr int kLineSearchSteps = 12;
+
+double power(double r, int k) { return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k)); }
+
+Outputs difference(const Outputs& a, const Outputs& b, double divisor) {
+  return {.flow = std::abs(a.flow - b.flow) / divisor,
+          .dissipation = std::abs(a.dissipation - b.dissipation) / divisor,
+          .yielded_fraction = std::abs(a.yielded_fraction - b.yielded_fraction) / divisor,
+          .boundary = std::abs(a.boundary - b.boundary) / divisor,
+          .max_value = std::abs(a.max_value - b.max_value) / divisor};
+}
+
+}  // namespace
+
+template <int dim>
+class ScalarFlowSolver<dim>::Implementation {
+ public:
+  Implementation(const Triangulation<dim>& base_mesh, unsigned mapping_degree,
+                 const SectionWeights& weights, const HerschelBulkley& law,
+                 const SolverSettings& settings)
+      : weights_(weights),
+        law_(law),
+        settings_(settings),
+        mapping_(mapping_degree),
+        fe_(settings.fe_degree),
+        dof_handler_(triangulation_) {
+    base_.copy_triangulation(base_mesh);
+    base_.refine_global(settings.global_refinements);
+  }
+
+  PointResult run(const Drive& drive, const BoundaryFunctional& boundary);
+  void output_results(const std::filesystem::path& file) const;
+
+ private:
+  // --- setup -------------------------------------------------------------
+  void setup_system();
+  void make_constraints();
+  void impose_boundary_values();
+
+  // --- regularised method --------------------------------------------------
+  void assemble_system(const RegularisedLaw& law, bool with_matrix);
+  double directional_derivative(const RegularisedLaw& law, const Vector<double>& trial,
+                                const Vector<double>& direction);
+  unsigned solve_newton(const RegularisedLaw& law);
+  unsigned solve_with_continuation(double target_scale, double start_scale);
+
+  // --- augmented Lagrangian -------------------------------------------------
+  unsigned solve_augmented_lagrangian(double penalty, Outputs* previous_outputs);
+
+  // --- outputs and adaptivity --------------------------------------------
+  Outputs evaluate(const BoundaryFunctional& boundary) const;
+  void refine_mesh();
+
+  /// The stress of the current solution at a shear rate: the regularised law
+  /// while regularising, the rate field of ALG2 otherwise.
+  double stress(double rate) const { return regularised_ ? regularised_->stress(rate) : law_.stress(rate); }
+
+  double rho(const Point<dim>& x) const { return power(x[0], weights_.radial_weight); }
+  double s(const Point<dim>& x) const { return power(x[0], weights_.rate_radius_power); }
+
+  SectionWeights weights_;
+  HerschelBulkley law_;
+  SolverSettings settings_;
+  Drive drive_;
+
+  Triangulation<dim> base_;
+  Triangulation<dim> triangulation_;
+  MappingQ<dim> mapping_;
+  FE_Q<dim> fe_;
+  DoFHandler<dim> dof_handler_;
+  AffineConstraints<double> constraints_;       // hanging nodes + Dirichlet data
+  AffineConstraints<double> zero_constraints_;  // hanging nodes + homogeneous Dirichlet
+  SparsityPattern sparsity_;
+  SparseMatrix<double> system_matrix_;
+  Vector<double> solution_, residual_;
+
+  // The regularised law of the last solve (null for ALG2), and for ALG2 the
+  // rigid/yielded state per quadrature point (1 = yielded) for the outputs.
+  std::unique_ptr<RegularisedLaw> regularised_;
+  std::vector<double> al_rate_;  // |γ| per quadrature point, cell by cell
+
+  // The previous operating point's solution on the (refined) base mesh, and its
+  // characteristic rate: the warm start of the next point.
+  Vector<double> previous_base_solution_;
+  double previous_rate_ = 0.0;
+};
+
+// --- setup ----------------------------------------------------------------
+
+template <int dim>
+void ScalarFlowSolver<dim>::Implementation::setup_system() {
+  dof_handler_.distribute_dofs(fe_);
+  make_constraints();
+  DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+  DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints_, false);
+  sparsity_.copy_from(dsp);
+  system_matrix_.reinit(sparsity_);
+  residual_.reinit(dof_handler_.n_dofs());
+}
+
+template <int dim>
+void ScalarFlowSolver<dim>::Implementation::make_constraints() {
+  for (auto [constraints, homogeneous] :
+       {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
+    constraints->clear();
+    DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
+    for (const auto& [id, value] : drive_.boundary_values) {
+      VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id,
+                                               Functions::ConstantFunction<dim>(homogeneous ? 0.0 : value),
+                                               *constraints);
+    }
+    constraints->close();
+  }
+}
+
+template <int dim>
+void ScalarFlowSolver<dim>::Implementation::impose_boundary_values() {
+  constraints_.distribute(solution_);
+}
+
+// --- regularised method -----------------------------------------------------
+
+// Residual R(u)(φ_i) and, if asked, the Newton matrix, condensed with the
+// homogeneous constraints (the update vanishes on Dirichlet boundaries).
+template <int dim>
+void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw& law,
+                                                            bool with_matrix) {
+  if (with_matrix) system_matrix_ = 0.0;
+  residual_ = 0.0;
+  const QGauss<dim> quadrature(fe_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature,
+                          update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+  const unsigned n = fe_.n_dofs_per_cell();
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> cell_residual(n);
+  std::vector<Tensor<1, dim>> gradients(quadrature.size());
+  std::vector<types::global_dof_index> dofs(n);
+
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values.get_function_gradients(solution_, gradients);
+    cell_matrix = 0.0;
+    cell_residual = 0.0;
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const Point<dim>& x = fe_values.quadrature_point(q);
+      const double sq = s(x), weight = rho(x) * sq * sq * fe_values.JxW(q);
+      const double g = gradients[q].norm(), rate = sq * g;
+      const Viscosity eta = law.viscosity(rate);
+      // n = ∇u/|∇u|; at rest the anisotropic part vanishes (γ̇ dη/dγ̇ = 0).
+      const Tensor<1, dim> direction = g > 0.0 ? gradients[q] / g : Tensor<1, dim>();
+      const double anisotropy = eta.derivative * rate;  // τ' − η
+      const double f = drive_.source * rho(x) * fe_values.JxW(q);
+      for (unsigned i = 0; i < n; ++i) {
+        const Tensor<1, dim> grad_i = fe_values.shape_grad(i, q);
+        cell_residual(i) += weight * eta.value * (gradients[q] * grad_i) - f * fe_values.shape_value(i, q);
+        if (!with_matrix) continue;
+        const double n_i = direction * grad_i;
+        for (unsigned j = 0; j < n; ++j) {
+          const Tensor<1, dim> grad_j = fe_values.shape_grad(j, q);
+          cell_matrix(i, j) += weight * (eta.value * (grad_i * grad_j) + anisotropy * n_i * (direction * grad_j));
+        }
+      }
+    }
+    cell->get_dof_indices(dofs);
+    if (with_matrix) {
+      zero_constraints_.distribute_local_to_global(cell_matrix, cell_residual, dofs, system_matrix_,
+                                                   residual_);
+    } else {
+      zero_constraints_.distribute_local_to_global(cell_residual, dofs, residual_);
+    }
+  }
+}
+
+// φ'(α) = R(u + αδ)(δ) for the trial u + αδ.
+template <int dim>
+double ScalarFlowSolver<dim>::Implementation::directional_derivative(const RegularisedLaw& law,
+                                                                     const Vector<double>& trial,
+                                                                     const Vector<double>& direction) {
+  const Vector<double> saved = solution_;
+  solution_ = trial;
+  assemble_system(law, false);
+  solution_ = saved;
+  return residual_ * direction;
+}
+
+template <int dim>
+unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law) {
+  Vector<double> update(dof_handler_.n_dofs()), trial(dof_handler_.n_dofs());
+  for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
+    assemble_system(law, true);
+    const double residual_norm = residual_.l2_norm();
+    SparseDirectUMFPACK direct;
+    direct.initialize(system_matrix_);
+    update = residual_;
+    direct.solve(update);
+    update *= -1.0;
+    zero_constraints_.distribute(update);
+
+    // Full step if it lowers the residual; else the exact line search on J.
+    double alpha = 1.0;
+    trial = solution_;
+    trial += update;
+    const double slope0 = residual_ * update;  // φ'(0) < 0: a descent direction
+    solution_.swap(trial);
+    assemble_system(law, false);
+    solution_.swap(trial);
+    if (residual_.l2_norm() > residual_norm && slope0 < 0.0) {
+      double lo = 0.0, hi = 1.0, d_lo = slope0, d_hi = residual_ * update;
+      if (d_hi > 0.0) {
+        for (int k = 0; k < kLineSearchSteps; ++k) {
+          alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
+          trial = solution_;
+          trial.add(alpha, update);
+          const double d = directional_derivative(law, trial, update);
+          if (std::abs(d) <= kLineSearchReduction * std::abs(slope0)) break;
+          (d < 0.0 ? lo : hi) = alpha;
+          (d < 0.0 ? d_lo : d_hi) = d;
+        }
+      }
+    }
+    solution_.add(alpha, update);
+    const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
+    if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
+  }
+  throw NumericalError(fmt::format(
+      "Newton did not converge in {} iterations ({} regularisation, eps = {:.3g} 1/s, {} dofs)",
+      settings_.max_newton_iterations, law.name(), law.rate_scale(), dof_handler_.n_dofs()));
+}
+
+// Newton at ε = start, start/10, ... down to the target; returns the iterations.
+// Leaves the law at the target in regularised_.
+template <int dim>
+unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double target_scale,
+                                                                        double start_scale) {
+  unsigned iterations = 0;
+  double eps = std::max(start_scale, target_scale);
+  while (true) {
+    regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
+    iterations += solve_newton(*regularised_);
+    if (eps <= target_scale * (1.0 + 1e-12)) return iterations;
+    eps = std::max(eps / kContinuationFactor, target_scale);
+  }
+}
+
+// --- augmented Lagrangian ----------------------------------------------------
+
+template <int dim>
+unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
+    double penalty, Outputs* previous_outputs) {
+  const std::unique_ptr<RegularisedLaw> start_law = std::move(regularised_);
+  const QGauss<dim> quadrature(fe_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature,
+                          update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+  const unsigned n = fe_.n_dofs_per_cell(), nq = quadrature.size();
+  const std::size_t points = triangulation_.n_active_cells() * nq;
+  std::vector<Tensor<1, dim>> rate(points), multiplier(points), gradients(nq);
+  al_rate_.assign(points, 0.0);
+  std::vector<types::global_dof_index> dofs(n);
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> cell_rhs(n), rhs(dof_handler_.n_dofs());
+
+  // The u-step matrix r∫ρs²∇φ_i·∇φ_j is the same at every iteration: factorise
+  // it once. The Dirichlet data enter its right-hand side through the
+  // inhomogeneous constraints, so the local matrices are needed for that too.
+  const auto assemble = [&](bool with_matrix) {
+    rhs = 0.0;
+    if (with_matrix) system_matrix_ = 0.0;
+    std::size_t k = 0;
+    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+      fe_values.reinit(cell);
+      cell_matrix = 0.0;
+      cell_rhs = 0.0;
+      for (const unsigned q : fe_values.quadrature_point_indices()) {
+        const Point<dim>& x = fe_values.quadrature_point(q);
+        const double sq = s(x), jxw = rho(x) * fe_values.JxW(q);
+        const Tensor<1, dim> load = sq * (multiplier[k + q] - penalty * rate[k + q]);
+        for (unsigned i = 0; i < n; ++i) {
+          cell_rhs(i) += (drive_.source * fe_values.shape_value(i, q) - load * fe_values.shape_grad(i, q)) * jxw;
+          for (unsigned j = 0; j < n; ++j)
+            cell_matrix(i, j) += penalty * sq * sq * (fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q)) * jxw;
+        }
+      }
+      cell->get_dof_indices(dofs);
+      if (with_matrix) {
+        constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix_, rhs);
+      } else {
+        constraints_.distribute_local_to_global(cell_rhs, dofs, rhs, cell_matrix);
+      }
+      k += nq;
+    }
+  };
+  // Start from the current u (a regularised solution, when there is one):
+  // γ = s∇u and λ = its regularised stress, so ALG2 only corrects the plug.
+  {
+    std::size_t k = 0;
+    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+      fe_values.reinit(cell);
+      fe_values.get_function_gradients(solution_, gradients);
+      for (const unsigned q : fe_values.quadrature_point_indices()) {
+        rate[k] = s(fe_values.quadrature_point(q)) * gradients[q];
+        if (start_law) multiplier[k] = start_law->viscosity(rate[k].norm()).value * rate[k];
+        ++k;
+      }
+    }
+  }
+  regularised_.reset();
+  assemble(true);
+  SparseDirectUMFPACK direct;
+  direct.initialize(system_matrix_);
+
+  const BoundaryFunctional none;
+  unsigned iteration = 0;
+  const unsigned check_every = std::max(1u, settings_.al_max_iterations / 10);
+  for (iteration = 1; iteration <= settings_.al_max_iterations; ++iteration) {
+    if (iteration > 1) assemble(false);
+    direct.solve(rhs);
+    solution_ = rhs;
+    constraints_.distribute(solution_);
+
+    // Local steps 2 and 3, and the constraint residual ‖s∇u − γ‖ against ‖γ‖.
+    double mismatch = 0.0, norm = 0.0;
+    std::size_t k = 0;
+    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+      fe_values.reinit(cell);
+      fe_values.get_function_gradients(solution_, gradients);
+      for (const unsigned q : fe_values.quadrature_point_indices()) {
+        const Point<dim>& x = fe_values.quadrature_point(q);
+        const Tensor<1, dim> strain = s(x) * gradients[q];
+        const Tensor<1, dim> chi = multiplier[k] + penalty * strain;
+        const double chi_norm = chi.norm();
+        const double g = law_.proximal_rate(chi_norm, penalty);
+        rate[k] = g > 0.0 ? (g / chi_norm) * chi : Tensor<1, dim>();
+        al_rate_[k] = g;
+        multiplier[k] += penalty * (strain - rate[k]);
+        const double w = rho(x) * fe_values.JxW(q);
+        mismatch += (strain - rate[k]).norm_square() * w;
+        norm += rate[k].norm_square() * w;
+        ++k;
+      }
+    }
+    const double relative = std::sqrt(mismatch / std::max(norm, std::numeric_limits<double>::min()));
+    if (relative <= settings_.al_tolerance) break;
+    if (previous_outputs && (iteration == 1 || iteration % check_every == 0))
+      *previous_outputs = evaluate(none);
+  }
+  if (iteration > settings_.al_max_iterations) {
+    throw NumericalError(fmt::format("augmented Lagrangian did not reach {} in {} iterations",
+                                     settings_.al_tolerance, settings_.al_max_iterations));
+  }
+  return iteration;
+}
+
+// --- outputs and adaptivity ----------------------------------------------------
+
+template <int dim>
+Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional& boundary) const {
+  Outputs out;
+  const QGauss<dim> quadrature(fe_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature,
+                          update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+  std::vector<double> values(quadrature.size());
+  std::vector<Tensor<1, dim>> gradients(quadrature.size());
+  double volume = 0.0, yielded = 0.0;
+  std::size_t k = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values.get_function_values(solution_, values);
+    fe_values.get_function_gradients(solution_, gradients);
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const Point<dim>& x = fe_values.quadrature_point(q);
+      const double w = rho(x) * fe_values.JxW(q);
+      // ALG2 keeps the rate field γ, which is exactly zero in rigid regions.
+      const double rate = regularised_ ? s(x) * gradients[q].norm() : al_rate_[k];
+      const double tau = stress(rate);
+      out.flow += values[q] * w;
+      out.dissipation += tau * rate * w;
+      volume += w;
+      if (regularised_ ? tau > law_.yield_stress : rate > 0.0) yielded += w;
+      ++k;
+    }
+    if (boundary.integrand && cell->at_boundary()) {
+      for (const unsigned f : cell->face_indices()) {
+        if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != boundary.id) continue;
+        const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
+        FEFaceValues<dim> face_values(mapping_, fe_, face_quadrature,
+                                      update_gradients | update_quadrature_points | update_JxW_values);
+        face_values.reinit(cell, f);
+        std::vector<Tensor<1, dim>> face_gradients(face_quadrature.size());
+        face_values.get_function_gradients(solution_, face_gradients);
+        for (const unsigned q : face_values.quadrature_point_indices()) {
+          const Point<dim>& x = face_values.quadrature_point(q);
+          out.boundary += boundary.integrand(s(x) * face_gradients[q].norm()) * rho(x) * face_values.JxW(q);
+        }
+      }
+    }
+  }
+  out.flow *= weights_.measure_factor;
+  out.dissipation *= weights_.measure_factor;
+  out.boundary *= weights_.measure_factor;
+  out.yielded_fraction = volume > 0.0 ? yielded / volume : 0.0;
+  out.max_value = solution_.linfty_norm();
+  return out;
+}
+
+template <int dim>
+void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
+  Vector<float> indicators(triangulation_.n_active_cells());
+  KellyErrorEstimator<dim>::estimate(mapping_, dof_handler_, QGauss<dim - 1>(fe_.degree + 1),
+                                     std::map<types::boundary_id, const Function<dim>*>(),
+                                     solution_, indicators);
+  GridRefinement::refine_and_coarsen_fixed_number(triangulation_, indicators,
+                                                  settings_.refine_fraction, 0.0);
+
+  // Cells a yield surface crosses: some quadrature points above τ_y, some below.
+  const QGauss<dim> quadrature(fe_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_quadrature_points);
+  std::vector<Tensor<1, dim>> gradients(quadrature.size());
+  std::size_t k = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values.get_function_gradients(solution_, gradients);
+    bool above = false, below = false;
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const double rate = regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
+      const bool yielded = regularised_ ? stress(rate) > law_.yield_stress : rate > 0.0;
+      (yielded ? above : below) = true;
+      ++k;
+    }
+    if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
+  }
+
+  triangulation_.prepare_coarsening_and_refinement();
+  SolutionTransfer<dim> transfer(dof_handler_);
+  transfer.prepare_for_coarsening_and_refinement(solution_);
+  triangulation_.execute_coarsening_and_refinement();
+  setup_system();
+  Vector<double> interpolated(dof_handler_.n_dofs());
+  transfer.interpolate(solution_, interpolated);
+  solution_ = interpolated;
+  impose_boundary_values();
+}
+
+template <int dim>
+PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
+                                                       const BoundaryFunctional& boundary) {
+  const auto start = std::chrono::steady_clock::now();
+  drive_ = drive;
+  triangulation_.clear();
+  triangulation_.copy_triangulation(base_);
+  setup_system();
+  solution_.reinit(dof_handler_.n_dofs());
+  PointResult result;
+
+  const double rate_c = drive.characteristic_rate;
+  const double target = settings_.relative_rate_scale * rate_c;
+  const bool warm = previous_base_solution_.size() == solution_.size() && previous_rate_ > 0.0;
+  if (warm) {
+    // The profile of the previous point, rescaled by the ratio of shear rates.
+    solution_ = previous_base_solution_;
+    solution_ *= rate_c / previous_rate_;
+  }
+  impose_boundary_values();
+
+  Outputs before;  // at 10ε (regularised) or earlier in the ALG2 iterations
+  const auto solve_first = [&]() {
+    if (settings_.method == Method::augmented_lagrangian) {
+      // ALG2's penalty: the viscosity scale η(γ̇_c) of the scene.
+      const double penalty = settings_.al_relative_penalty * law_.viscosity(rate_c);
+      if (!warm) result.iterations += solve_with_continuation(1e-2 * rate_c, rate_c);
+      result.iterations += solve_augmented_lagrangian(penalty, &before);
+      return;
+    }
+    // Cold start: continuation from ε = γ̇_c down to 10ε. Warm start: straight
+    // to 10ε, falling back to the full continuation if Newton fails.
+    const double coarse = kContinuationFactor * target;
+    try {
+      result.iterations += warm ? solve_with_continuation(coarse, coarse)
+                                : solve_with_continuation(coarse, rate_c);
+    } catch (const NumericalError&) {
+      if (!warm) throw;
+      solution_ = 0.0;
+      impose_boundary_values();
+      result.iterations += solve_with_continuation(coarse, rate_c);
+    }
+    before = evaluate(boundary);
+    result.iterations += solve_with_continuation(target, target);
+  };
+  solve_first();
+  previous_base_solution_ = solution_;
+  previous_rate_ = rate_c;
+  Outputs value = evaluate(boundary);
+  result.regularisation_error =
+      settings_.method == Method::regularised ? difference(value, before, kContinuationFactor - 1.0)
+                                              : difference(value, before, 1.0);
+
+  for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
+    refine_mesh();
+    const Outputs coarse_value = value;
+    if (settings_.method == Method::augmented_lagrangian) {
+      const double penalty = settings_.al_relative_penalty * law_.viscosity(rate_c);
+      result.iterations += solve_augmented_lagrangian(penalty, nullptr);
+    } else {
+      result.iterations += solve_newton(*regularised_);
+    }
+    value = evaluate(boundary);
+    result.discretisation_error = difference(value, coarse_value, 1.0);
+  }
+  result.value = value;
+  result.cells = triangulation_.n_active_cells();
+  result.dofs = dof_handler_.n_dofs();
+  result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+template <int dim>
+void ScalarFlowSolver<dim>::Implementation::output_results(const std::filesystem::path& file) const {
+  // Cell averages of the derived fields (one value per cell keeps the file
+  // small and shows the yield surface as the set of partly yielded cells).
+  const unsigned n_cells = triangulation_.n_active_cells();
+  Vector<double> rate(n_cells), tau(n_cells), eta(n_cells), yielded(n_cells);
+  const QGauss<dim> quadrature(fe_.degree + 1);
+  FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_quadrature_points);
+  std::vector<Tensor<1, dim>> gradients(quadrature.size());
+  std::size_t k = 0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values.get_function_gradients(solution_, gradients);
+    const unsigned c = cell->active_cell_index();
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const double g = regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
+      const double t = stress(g);
+      rate(c) += g / quadrature.size();
+      tau(c) += t / quadrature.size();
+      yielded(c) += (regularised_ ? t > law_.yield_stress : g > 0.0) ? 1.0 / quadrature.size() : 0.0;
+      ++k;
+    }
+    eta(c) = rate(c) > 0.0 ? tau(c) / rate(c) : std::numeric_limits<double>::infinity();
+  }
+  DataOut<dim> data_out;
+  data_out.attach_dof_handler(dof_handler_);
+  data_out.add_data_vector(solution_, weights_.rate_radius_power == 1 ? "angular_velocity" : "velocity");
+  data_out.add_data_vector(rate, "shear_rate");
+  data_out.add_data_vector(tau, "stress");
+  data_out.add_data_vector(eta, "viscosity");
+  data_out.add_data_vector(yielded, "yielded");
+  data_out.build_patches(mapping_, fe_.degree);
+  std::ofstream out(file);
+  data_out.write_vtu(out);
+  if (!out) throw NumericalError(fmt::format("cannot write {}", file.string()));
+}
+
+// --- the public face -------------------------------------------------------------
+
+template <int dim>
+ScalarFlowSolver<dim>::ScalarFlowSolver(const Triangulation<dim>& base_mesh, unsigned mapping_degree,
+                                        const SectionWeights& weights, const HerschelBulkley& law,
+                                        const SolverSettings& settings)
+    : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, law, settings)) {}
+
+template <int dim>
+ScalarFlowSolver<dim>::~ScalarFlowSolver() = default;
+
+template <int dim>
+PointResult ScalarFlowSolver<dim>::run(const Drive& drive, const BoundaryFunctional& boundary) {
+  return impl_->run(drive, boundary);
+}
+
+template <int dim>
+void ScalarFlowSolver<dim>::output_results(const std::filesystem::path& file) const {
+  impl_->output_results(file);
+}
+
+template class ScalarFlowSolver<1>;
+template class ScalarFlowSolver<2>;
+
+}  // namespace softglass::macro::fe

@@ -1,0 +1,20 @@
+#include "macro/io/deal_ii_errors.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <sstream>
+
+namespace softglass::macro::io {
+
+std::string one_line(const dealii::ExceptionBase& error) {
+  std::ostringstream info;
+  error.print_info(info);
+  std::string text;
+  for (std::istringstream words(info.str()); words;) {
+    std::string word;
+    if (words >> word) text += (text.empty() ? "" : " ") + word;
+  }
+  return text;
+}
+
+}  // namespace softglass::macro::io

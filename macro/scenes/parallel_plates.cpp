@@ -1,0 +1,53 @@
+// Parallel plates: the upper plate (radius R) turns at Ω a gap h above the
+// fixed lower one, rim free; ω(r, z) in the meridian plane. Without inertia
+// the flow is the torsional one, ω = Ω z/h exactly, and the torque is the
+// closed form of exact/parallel_plates.h, reported beside the result.
+#include <deal.II/base/parameter_handler.h>
+#include <fmt/format.h>
+
+#include <numbers>
+
+#include "macro/exact/parallel_plates.h"
+#include "macro/scenes/entries.h"
+#include "macro/scenes/meshes.h"
+#include "macro/scenes/reduced_scene.h"
+
+namespace softglass::macro {
+
+using dealii::ParameterHandler;
+namespace Patterns = dealii::Patterns;
+
+void declare_parallel_plates(ParameterHandler& prm) {
+  prm.enter_subsection("parallel-plates");
+  prm.declare_entry("radius", "0.025", Patterns::Double(), "R [m], > 0");
+  prm.declare_entry("gap", "0.001", Patterns::Double(), "h [m], > 0");
+  prm.declare_entry("radial cells", "16", Patterns::Integer(1, 10000), "cells along the radius");
+  prm.declare_entry("gap cells", "2", Patterns::Integer(1, 1000), "cells across the gap");
+  prm.leave_subsection();
+}
+
+std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Material& material,
+                                            const fe::SolverSettings& settings) {
+  prm.enter_subsection("parallel-plates");
+  const double R = entries::positive(prm, "parallel-plates", "radius", "m");
+  const double h = entries::positive(prm, "parallel-plates", "gap", "m");
+  const unsigned radial = prm.get_integer("radial cells"), gap = prm.get_integer("gap cells");
+  prm.leave_subsection();
+  dealii::Triangulation<2> mesh;
+  meshes::rectangle(mesh, 0.0, R, 0.0, h, radial, gap);
+  const HerschelBulkley law = material.shear;
+  const exact::ParallelPlates plates{.radius = R, .gap = h};
+  ReducedSceneSpec<2> spec;
+  spec.description = fmt::format(
+      "parallel plates R = {} m, gap {} m: omega(r, z) in the meridian plane, upper plate at Omega", R, h);
+  spec.kind = DriveKind::rotation;
+  spec.weights = {.radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
+  spec.drive = [R, h](double omega) {
+    return fe::Drive{.source = 0.0, .boundary_values = {{3, omega}, {2, 0.0}},
+                     .characteristic_rate = omega * R / h};
+  };
+  spec.reference = [law, plates](double omega) { return exact::torque(law, plates, omega); };
+  return make_reduced_scene(mesh, std::move(spec), law, settings);
+}
+
+}  // namespace softglass::macro

@@ -1,0 +1,57 @@
+// A scene: one geometry of macro.md with its reduced formulation, solved at a
+// list of operating points (rotation rates or pressure gradients), each giving
+// one row of the results table.
+//
+// Every scene is declared in the scene file's ParameterHandler (so that an
+// unknown key anywhere is an error) and built by make_scene() for the one the
+// file selects with `set scene = ...`.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "macro/fe/solver_settings.h"
+#include "macro/material/material.h"
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace softglass::macro {
+
+/// A CSV column: name and unit, written "name [unit]".
+struct Column {
+  std::string name;
+  std::string unit;
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  /// One line: geometry, formulation and boundary conditions.
+  virtual std::string description() const = 0;
+  /// The operating-point column (rotation_rate [rad/s] or pressure_gradient [Pa/m]).
+  virtual Column drive() const = 0;
+  /// The result columns of a row.
+  virtual std::vector<Column> columns() const = 0;
+  /// Solves at one operating point (warm-started from the previous one).
+  virtual std::vector<double> solve(double drive) = 0;
+  /// The fields of the last solved point, for ParaView.
+  virtual void write_vtu(const std::filesystem::path& file) const = 0;
+};
+
+/// Names accepted by `set scene`.
+std::vector<std::string> scene_names();
+
+/// Declares `scene` and the subsection of every scene.
+void declare_scenes(dealii::ParameterHandler& prm);
+
+/// The selected scene, its parameters validated (InputError naming the entry).
+/// Relative file names in the scene (meshes) are taken from `scene_directory`.
+std::unique_ptr<Scene> make_scene(dealii::ParameterHandler& prm, const Material& material,
+                                  const fe::SolverSettings& settings,
+                                  const std::filesystem::path& scene_directory);
+
+}  // namespace softglass::macro
