@@ -1,5 +1,6 @@
 # Every dependency comes from Debian's packages; nothing is downloaded.
 find_package(OpenMP REQUIRED)
+find_package(MPI REQUIRED COMPONENTS CXX)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(fmt REQUIRED)
 find_package(CLI11 REQUIRED)

@@ -8,7 +8,7 @@ packages=(
   cmake g++ make ccache pkg-config
   libeigen3-dev libhdf5-dev hdf5-tools libboost-math-dev
   libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
-  libdeal.ii-dev
+  libdeal.ii-dev libopenmpi-dev openmpi-bin
   gnuplot-nox
 )
 if [ "${1:-}" = bench ]; then

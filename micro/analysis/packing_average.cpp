@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,6 +24,15 @@ MeanAndError mean_of(const std::vector<double>& values) {
   double squares = 0.0;
   for (double v : values) squares += (v - mean) * (v - mean);
   return {mean, std::sqrt(squares / (k - 1.0) / k)};
+}
+
+// Mean over the runs, with the two errors of AveragedObservable.
+AveragedObservable average(const std::string& name, const std::vector<double>& means,
+                           const std::vector<double>& errors) {
+  double within2 = 0.0;
+  for (double e : errors) within2 += e * e;
+  const MeanAndError m = mean_of(means);
+  return {name, m.mean, std::sqrt(within2) / static_cast<double>(means.size()), m.error};
 }
 
 bool same(double a, double b) {
@@ -61,22 +71,33 @@ PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) 
   for (const auto& r : runs) {
     a.converged_runs += r.converged;
     a.averaged_strain += r.averaged_strain;
+    a.coordination += r.coordination / static_cast<double>(runs.size());
     moduli.push_back(r.shear_modulus);
   }
   const MeanAndError g = mean_of(moduli);
   a.shear_modulus = g.mean;
   a.shear_modulus_error = g.error;
 
-  const double k = static_cast<double>(runs.size());
   for (std::size_t q = 0; q < first.observables.size(); ++q) {
-    std::vector<double> means;
-    double within2 = 0.0;
+    std::vector<double> means, errors;
     for (const auto& r : runs) {
       means.push_back(r.observables[q].estimate.mean);
-      within2 += std::pow(r.observables[q].estimate.standard_error, 2);
+      errors.push_back(r.observables[q].estimate.standard_error);
     }
-    const MeanAndError m = mean_of(means);
-    a.observables.push_back({first.observables[q].name, m.mean, std::sqrt(within2) / k, m.error});
+    a.observables.push_back(average(first.observables[q].name, means, errors));
+  }
+
+  const bool structure = std::all_of(runs.begin(), runs.end(), [](const auto& r) { return r.f_m.has_value(); });
+  if (structure) {
+    std::vector<double> r_m, r_m_error, f_m, f_m_error;
+    for (const auto& r : runs) {
+      r_m.push_back(r.r_m->value);
+      r_m_error.push_back(r.r_m->error);
+      f_m.push_back(r.f_m->value);
+      f_m_error.push_back(r.f_m->error);
+    }
+    a.r_m = average("r_m", r_m, r_m_error);
+    a.f_m = average("f_m", f_m, f_m_error);
   }
   return a;
 }

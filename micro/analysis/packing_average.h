@@ -9,6 +9,7 @@
 // is the larger of the two.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,9 @@ struct PackingAverage {
   double gamma_tilde = 0.0, volume_fraction = 0.0;
   double shear_modulus = 0.0, shear_modulus_error = 0.0;  // mean and SE over packings
   double averaged_strain = 0.0;                           // total over runs
+  double coordination = 0.0;                              // mean Z under shear
   std::vector<AveragedObservable> observables;            // shear_observable_names() order
+  std::optional<AveragedObservable> r_m, f_m;             // when every run has its structure
 
   const AveragedObservable& operator[](const std::string& name) const;
 };

@@ -1,7 +1,6 @@
 #include "micro/app/commands.h"
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <chrono>
 #include <cstdio>
@@ -12,8 +11,8 @@
 #include "micro/analysis/layering.h"
 #include "micro/analysis/packing_average.h"
 #include "micro/analysis/run_structure.h"
-#include "micro/analysis/shear_modulus.h"
 #include "micro/app/parameter_file.h"
+#include "micro/app/run_steps.h"
 #include "micro/io/run_file.h"
 #include "micro/io/structure_csv.h"
 
@@ -24,57 +23,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-struct Prepared {
-  MicroParameters parameters;
-  std::shared_ptr<const ContactLaw> law;
-  RunRecord record;
-};
-
-// Parameters, law and the relaxed packing with its G0: the common first half of
-// `pack` and `run`.
-Prepared prepare(const CommandOptions& options, const std::string& command, AtomicOutput*& out,
-                 std::optional<AtomicOutput>& storage) {
-  const auto start = Clock::now();
-  Prepared p;
-  p.parameters = read_parameter_file(options.parameter_file);
-  MicroParameters& prm = p.parameters;
-  storage.emplace(options.output.value_or(prm.output_file), prm.overwrite || options.force);
-  out = &*storage;
-  p.law = make_contact_law(prm.contact_law);
-
-  RunRecord& record = p.record;
-  record.command = command;
-  record.contact_law = prm.contact_law;
-  record.parameters = prm.text;
-  record.timings.threads = omp_get_max_threads();
-
-  if (!prm.packing_input.empty()) {
-    StoredPacking stored = read_packing(prm.packing_input);
-    record.packing_particles = std::move(stored.particles);
-    record.packing_box = stored.box;
-    record.packing = stored.report;
-    record.modulus = stored.modulus;
-    if (!options.quiet) std::fprintf(stderr, "packing read from %s\n", prm.packing_input.c_str());
-  } else {
-    Progress bar("packing", prm.packing.volume_fraction - prm.packing.initial_volume_fraction,
-                 options.quiet);
-    Packing packing = make_packing(prm.packing, p.law, [&](double phi) {
-      bar.update(phi - prm.packing.initial_volume_fraction, fmt::format("phi {:.3f}", phi));
-    });
-    bar.finish();
-    record.packing_particles = std::move(packing.particles);
-    record.packing_box = packing.box;
-    record.packing = packing.report;
-    record.timings.packing = seconds_since(start);
-
-    const auto modulus_start = Clock::now();
-    ContactSystem system(record.packing_particles, record.packing_box, p.law, prm.packing.skin);
-    record.modulus = shear_modulus(system);
-    record.timings.modulus = seconds_since(modulus_start);
-  }
-  return p;
 }
 
 void print_packing(const RunRecord& r, const MicroParameters& prm) {
@@ -138,9 +86,7 @@ void print_structure(const StructureRecord& record) {
 }
 
 void finish(RunRecord& record, AtomicOutput& out, Clock::time_point start) {
-  record.timings.total = seconds_since(start);
-  write_run_file(out.temporary_path(), record);
-  out.commit();
+  write_record(out, record, seconds_since(start));
   fmt::print("written  {}\n", out.final_path().string());
 }
 
@@ -148,46 +94,29 @@ void finish(RunRecord& record, AtomicOutput& out, Clock::time_point start) {
 
 void pack_command(const CommandOptions& options) {
   const auto start = Clock::now();
-  std::optional<AtomicOutput> storage;
-  AtomicOutput* out = nullptr;
-  Prepared p = prepare(options, "pack", out, storage);
-  print_packing(p.record, p.parameters);
-  finish(p.record, *out, start);
+  const MicroParameters prm = read_parameter_file(options.parameter_file);
+  AtomicOutput out(options.output.value_or(prm.output_file), prm.overwrite || options.force);
+  RunRecord record = pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", options.quiet);
+  print_packing(record, prm);
+  finish(record, out, start);
 }
 
 void run_command(const CommandOptions& options) {
   const auto start = Clock::now();
-  std::optional<AtomicOutput> storage;
-  AtomicOutput* out = nullptr;
-  Prepared p = prepare(options, "run", out, storage);
-  const MicroParameters& prm = p.parameters;
-  RunRecord& record = p.record;
+  const MicroParameters prm = read_parameter_file(options.parameter_file);
+  AtomicOutput out(options.output.value_or(prm.output_file), prm.overwrite || options.force);
+  const std::shared_ptr<const ContactLaw> law = make_contact_law(prm.contact_law);
+  RunRecord record = pack_and_measure(prm, law, "run", options.quiet);
   print_packing(record, prm);
 
-  const auto shear_start = Clock::now();
-  ContactSystem system(record.packing_particles, record.packing_box, p.law, prm.packing.skin);
-  OverdampedShear flow(std::move(system), prm.shear_model);
-  const auto integrator = make_integrator(prm.integrator);
   Progress bar("shear", prm.protocol.max_strain, options.quiet);
-  ShearRecord shear;
-  shear.gamma_tilde = prm.shear_model.gamma_tilde;
-  shear.result = run_shear(flow, *integrator, prm.protocol, [&](const ShearProgress& progress) {
-    bar.update(progress.strain, fmt::format("strain {:.2f}, worst rel. error {:.3g}",
-                                            progress.strain, progress.worst_relative_error));
+  shear_and_analyse(record, prm, law, [&](double strain, double worst) {
+    bar.update(strain, fmt::format("strain {:.2f}, worst rel. error {:.3g}", strain, worst));
   });
   bar.finish();
-  shear.final_particles = flow.system().wrapped_in_label_order();
-  shear.final_box = flow.system().box();
-  record.timings.shear = seconds_since(shear_start);
-  print_shear(shear, static_cast<double>(record.packing.particles));
-  const std::vector<Snapshot> stationary = stationary_snapshots(shear.result);
-  if (stationary.size() >= 2) {
-    record.structure = analyse_snapshots(stationary, shear.final_particles.radius, shear.final_box.side(),
-                                         *p.law, prm.structure);
-    print_structure(*record.structure);
-  }
-  record.shear = std::move(shear);
-  finish(record, *out, start);
+  print_shear(*record.shear, static_cast<double>(record.packing.particles));
+  if (record.structure) print_structure(*record.structure);
+  finish(record, out, start);
 }
 
 void analyze_command(const AnalyzeOptions& options) {

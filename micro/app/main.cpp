@@ -4,8 +4,8 @@
 //   micro run FILE.prm       pack, shear at one γ̃ until stationary, summarise
 //   micro template           print a documented parameter file
 //   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
-//   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
 //   micro summary A.h5 B.h5  average runs of one state point over packings
+//   micro sweep FILE.prm     flow curves over φ, γ̃ and packings (MPI: mpirun -n K micro sweep …)
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
@@ -19,6 +19,8 @@
 #include "common/version.h"
 #include "micro/app/commands.h"
 #include "micro/app/parameter_file.h"
+#include "micro/app/sweep_command.h"
+#include "micro/app/workers.h"
 
 namespace {
 
@@ -76,6 +78,21 @@ int main(int argc, char** argv) {
   summary->add_option("--csv", csv, "also write the table as CSV");
   summary->add_flag("-f,--force", options.force, "overwrite an existing CSV file");
 
+  micro::SweepOptions sweep_options;
+  std::size_t only_case = 0;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "flow curves: packings, then every (phi, gamma~, seed) case, then the flow-curve "
+               "table; resumable (finished files are skipped), one sweep per folder");
+  sweep->add_option("parameter_file", sweep_options.parameter_file,
+                    "sweep file: a run's parameters plus subsection 'sweep'")
+      ->required();
+  sweep->add_flag("--list", sweep_options.list, "print the cases and whether they are done; run nothing");
+  sweep->add_flag("--gather", sweep_options.gather_only, "only rebuild the tables from the finished runs");
+  auto* case_option = sweep->add_option("--case", only_case,
+                                        "run case K alone (and its packing if missing): one task of "
+                                        "a batch array job; see --list");
+  sweep->add_flag("-q,--quiet", sweep_options.quiet, "no progress bar (the log lines stay)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -84,12 +101,16 @@ int main(int argc, char** argv) {
   }
   if (threads > 0) omp_set_num_threads(threads);
   if (!output.empty()) options.output = output;
+  if (*case_option) sweep_options.only_case = only_case;
+  for (int k = 0; k < argc; ++k) sweep_options.command_line += (k ? " " : "") + std::string(argv[k]);
+  const micro::Workers workers;
 
   try {
     if (*tmpl) std::fputs(micro::parameter_template().c_str(), stdout);
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
     if (*summary) micro::summary_command(run_files, csv, options.force);
+    if (*sweep) micro::sweep_command(sweep_options, workers);
     if (*analyze) {
       if (bin_width > 0.0) analyze_options.bin_width = bin_width;
       if (slab > 0.0) analyze_options.slab = slab;

@@ -195,22 +195,26 @@ std::string clean_message(const std::string& what) {
   return collapsed;
 }
 
-}  // namespace
-
-MicroParameters read_parameter_file(const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file)) {
-    throw InputError(fmt::format("parameter file '{}' does not exist", file.string()));
+// `text` (printed by ParameterHandler) without its top-level subsection `name`.
+std::string without_subsection(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::string line, out;
+  int depth = 0;
+  bool skipping = false;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(' ');
+    const std::string word = first == std::string::npos ? "" : line.substr(first);
+    const bool opens = word.rfind("subsection ", 0) == 0, closes = word == "end";
+    if (opens && depth == 0 && word == "subsection " + name) skipping = true;
+    if (!skipping) out += line + '\n';
+    depth += opens ? 1 : closes ? -1 : 0;
+    if (skipping && depth == 0 && closes) skipping = false;
   }
-  ParameterHandler prm;
-  Entries e;
-  declare(prm, e);
-  try {
-    prm.parse_input(file.string(), "", false, false);
-  } catch (const std::exception& error) {
-    throw InputError(
-        fmt::format("parameter file '{}': {}", file.string(), clean_message(error.what())));
-  }
+  return out;
+}
 
+// The engine's types from the parsed entries, checked as a whole.
+MicroParameters convert(const ParameterHandler& prm, const Entries& e, const std::filesystem::path& file) {
   MicroParameters p = e.p;
   p.packing.particles = e.particles;
   p.packing.seed = e.seed;
@@ -238,7 +242,123 @@ MicroParameters read_parameter_file(const std::filesystem::path& file) {
 
   std::ostringstream text;
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
-  p.text = text.str();
+  p.text = without_subsection(text.str(), "sweep");
+  return p;
+}
+
+void parse(ParameterHandler& prm, const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(fmt::format("parameter file '{}' does not exist", file.string()));
+  }
+  try {
+    prm.parse_input(file.string(), "", false, false);
+  } catch (const std::exception& error) {
+    throw InputError(
+        fmt::format("parameter file '{}': {}", file.string(), clean_message(error.what())));
+  }
+}
+
+// The `sweep` subsection of a sweep file (micro/sweep/sweep_plan.h).
+struct SweepEntries {
+  SweepSpec spec;
+  std::string directory = "sweep";
+  unsigned long packings = 0, first_seed = 1, particles = 0, checkpoint_steps = 20000;
+};
+
+void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
+  prm.enter_subsection("sweep");
+  entry(prm, "preset", s.spec.preset,
+        "Fidelity: fast, standard or paper (docs/sweeps.md states their error and cost), or "
+        "custom. A preset fixes N, the lists below when they are empty, the number of packings "
+        "when it is 0, and each run's target relative error and max strain; custom takes all "
+        "of them from this file.",
+        Patterns::Selection("fast|standard|paper|custom"));
+  entry(prm, "volume fractions", s.spec.volume_fractions,
+        "Volume fractions phi (comma-separated); empty: the preset's. Overrides "
+        "particles/volume fraction.",
+        Patterns::List(Patterns::Double(0.64, 0.95), 0, 1000, ","));
+  entry(prm, "gamma dot tildes", s.spec.gamma_tildes,
+        "Shear rates gamma~ (comma-separated); empty: the preset's. Overrides "
+        "shear/gamma dot tilde.",
+        Patterns::List(Patterns::Double(1e-14, 1e-1), 0, 1000, ","));
+  entry(prm, "packings", s.packings,
+        "Packings (seeds first seed, first seed + 1, ...) per volume fraction; 0: the preset's.",
+        Patterns::Integer(0, 1000));
+  entry(prm, "first seed", s.first_seed, "Seed of the first packing.", Patterns::Integer(0));
+  entry(prm, "particles", s.particles,
+        "Particles per packing; 0: the preset's. Overrides particles/number.",
+        Patterns::Integer(0, 50000000));
+  entry(prm, "output directory", s.directory,
+        "Folder of the sweep: packings/, runs/, flow_curve.csv, flow_curve_packings.csv, "
+        "flow_curve.h5. Relative to the current directory.",
+        Patterns::Anything());
+  entry(prm, "checkpoint steps", s.checkpoint_steps,
+        "A running case saves its state every this many accepted steps (about a minute for "
+        "N = 1000 at the default) and a rerun goes on from it; 0: no checkpoints.",
+        Patterns::Integer(0));
+  prm.leave_subsection();
+}
+
+}  // namespace
+
+MicroParameters read_parameter_file(const std::filesystem::path& file) {
+  ParameterHandler prm;
+  Entries e;
+  declare(prm, e);
+  parse(prm, file);
+  return convert(prm, e, file);
+}
+
+SweepParameters read_sweep_file(const std::filesystem::path& file) {
+  ParameterHandler prm;
+  Entries e;
+  SweepEntries s;
+  declare(prm, e);
+  declare_sweep(prm, s);
+  parse(prm, file);
+  SweepParameters sweep;
+  sweep.base = convert(prm, e, file);
+  sweep.spec = s.spec;
+  sweep.spec.packings = static_cast<unsigned>(s.packings);
+  sweep.spec.first_seed = static_cast<unsigned>(s.first_seed);
+  sweep.spec.particles = s.particles;
+  sweep.spec.checkpoint_steps = s.checkpoint_steps;
+  require(!s.directory.empty(), "sweep: output directory is empty");
+  sweep.spec.directory = s.directory;
+  return sweep;
+}
+
+MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSettings& c) {
+  ParameterHandler prm;
+  Entries e;
+  declare(prm, e);
+  try {
+    prm.parse_input_from_string(base.text, "", true);
+    prm.enter_subsection("particles");
+    prm.set("number", static_cast<long int>(c.particles));
+    prm.set("volume fraction", c.volume_fraction);
+    prm.set("seed", static_cast<long int>(c.seed));
+    prm.leave_subsection();
+    prm.enter_subsection("shear");
+    prm.set("gamma dot tilde", c.gamma_tilde);
+    if (c.target_relative_error > 0.0) {
+      prm.set("target relative error", c.target_relative_error);
+      prm.set("max strain", c.max_strain);
+      prm.set("min strain", std::min(e.p.protocol.min_strain, c.max_strain));
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("packing");
+    prm.set("input file", c.packing_input.string());
+    prm.leave_subsection();
+    prm.enter_subsection("output");
+    prm.set("file", c.output.string());
+    prm.leave_subsection();
+  } catch (const std::exception& error) {
+    throw InputError(fmt::format("sweep case phi = {}, gamma~ = {}: {}", c.volume_fraction,
+                                 c.gamma_tilde, clean_message(error.what())));
+  }
+  MicroParameters p = convert(prm, e, std::filesystem::path());
+  p.contact_law.table_file = base.contact_law.table_file;  // already resolved
   return p;
 }
 

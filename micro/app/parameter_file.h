@@ -12,6 +12,7 @@
 #include "micro/dynamics/overdamped_shear.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
+#include "micro/sweep/sweep_plan.h"
 
 namespace softglass::micro {
 
@@ -34,6 +35,26 @@ struct MicroParameters {
 /// and inconsistent combinations raise InputError naming the entry. Input file
 /// names in it are taken relative to the parameter file's directory.
 MicroParameters read_parameter_file(const std::filesystem::path& file);
+
+/// A sweep file: a parameter file for every case plus a `sweep` subsection.
+struct SweepParameters {
+  MicroParameters base;
+  SweepSpec spec;
+};
+SweepParameters read_sweep_file(const std::filesystem::path& file);
+
+/// What a sweep sets in each case's parameters.
+struct SweepCaseSettings {
+  std::size_t particles;
+  double volume_fraction, gamma_tilde;
+  unsigned seed;
+  double target_relative_error, max_strain;  // the preset's; ≤ 0: keep the file's
+  std::filesystem::path packing_input;       // empty: make the packing
+  std::filesystem::path output;
+};
+/// `base` with the case's entries set, checked, and its text (a valid
+/// `micro run` file) updated.
+MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSettings& settings);
 
 /// The documented template with all defaults.
 std::string parameter_template();

@@ -10,38 +10,13 @@
 #include "common/errors.h"
 #include "common/h5_file.h"
 #include "common/version.h"
+#include "micro/io/h5_groups.h"
 
 namespace softglass::micro {
 
 namespace {
 
 constexpr std::int64_t kFormatVersion = 1;
-
-std::vector<double> flatten(const std::vector<Vec3>& v) {
-  std::vector<double> flat;
-  flat.reserve(3 * v.size());
-  for (const Vec3& x : v) flat.insert(flat.end(), {x.x(), x.y(), x.z()});
-  return flat;
-}
-
-std::vector<double> flatten(const std::vector<Eigen::Matrix3d>& m) {
-  std::vector<double> flat;
-  flat.reserve(9 * m.size());
-  for (const auto& s : m)
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) flat.push_back(s(i, j));  // row-major: [k][i][j] = σ_ij
-  return flat;
-}
-
-void write_configuration(H5Group&& g, const Particles& p, const LeesEdwardsBox& box) {
-  g.write("position", flatten(p.position), {p.size(), 3},
-          {"R", "particle centres in the primary cell [0, L)^3; x flow, y gradient, z vorticity"});
-  g.write("radius", p.radius, {}, {"R", "particle radii (mean 1)"});
-  g.write("velocity", flatten(p.velocity), {p.size(), 3},
-          {"gamma_dot R", "non-affine velocity u - gamma_dot y e_x (zero for a packing)"});
-  g.write_scalar("side", box.side(), {"R", "side L of the cubic cell"});
-  g.write_scalar("strain", box.strain(), {"1", "accumulated Lees-Edwards strain"});
-}
 
 void write_packing(H5Group& g, const PackingReport& r, const ShearModulus& m) {
   const auto scalar = [&](const char* name, double value, const char* units, const char* what) {
@@ -71,18 +46,7 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   g.write_scalar("gamma_tilde", s.gamma_tilde,
                  {"1", "dimensionless shear rate gamma_dot eta_s / E*"});
 
-  H5Group ts = g.create_group("timeseries");
-  const TimeSeries& t = r.series;
-  ts.write("strain", t.strain, {}, {"1", "strain at each sample"});
-  ts.write("stress_elastic", flatten(t.elastic), {t.size(), 3, 3},
-           {"E*", "elastic stress tensor sigma^e_ij = -(1/V) sum d_i f_j, [sample][i][j]"});
-  ts.write("stress_viscous", flatten(t.viscous), {t.size(), 3, 3},
-           {"E*", "viscous (EHD) stress tensor sigma^v_ij, not symmetric, [sample][i][j]"});
-  ts.write("coordination", t.coordination, {}, {"1", "Z = 2 x contacts / N"});
-  ts.write(
-      "layering", t.layering, {},
-      {"1", "S_y = max_m |sum exp(2 pi i m y/L)|^2 / N; about 3 when disordered, > 20 layered"});
-  ts.write("step", t.step, {}, {"1", "last accepted integrator step (strain)"});
+  write_time_series(g.create_group("timeseries"), r.series);
 
   H5Group sum = g.create_group("summary");
   sum.set_attribute("converged", static_cast<std::int64_t>(r.converged));
@@ -119,18 +83,7 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
 
   write_configuration(g.create_group("configuration"), s.final_particles, s.final_box);
 
-  if (!r.snapshots.empty()) {
-    H5Group snapshots = g.create_group("snapshots");
-    std::vector<double> strain, position;
-    for (const Snapshot& snap : r.snapshots) {
-      strain.push_back(snap.strain);
-      for (const Vec3& x : snap.position) position.insert(position.end(), {x.x(), x.y(), x.z()});
-    }
-    const std::size_t n = r.snapshots.front().position.size();
-    snapshots.write("strain", strain, {}, {"1", "strain of each stored configuration"});
-    snapshots.write("position", position, {strain.size(), 3 * n},
-                    {"R", "configurations [snapshot][3 i + axis], label order, in the cell"});
-  }
+  if (!r.snapshots.empty()) write_snapshots(g.create_group("snapshots"), r.snapshots);
 }
 
 void write_structure(H5Group&& g, const StructureRecord& record) {
@@ -275,31 +228,7 @@ StoredPacking read_packing(const std::filesystem::path& path) {
 
 TimeSeries read_time_series(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
-  const H5Group ts = file.root().group("shear").group("timeseries");
-  TimeSeries t;
-  t.strain = ts.read_array("strain").data;
-  t.coordination = ts.read_array("coordination").data;
-  t.layering = ts.read_array("layering").data;
-  t.step = ts.read_array("step").data;
-  const auto tensors = [&](const char* name) {
-    const H5Array a = ts.read_array(name);
-    if (a.dims.size() != 3 || a.dims[0] != t.strain.size() || a.dims[1] != 3 || a.dims[2] != 3) {
-      throw InputError(
-          fmt::format("'{}': dataset '{}' must have shape n x 3 x 3", path.string(), name));
-    }
-    std::vector<Eigen::Matrix3d> m(a.dims[0]);
-    for (std::size_t k = 0; k < m.size(); ++k)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) m[k](i, j) = a.data[9 * k + 3 * i + j];
-    return m;
-  };
-  t.elastic = tensors("stress_elastic");
-  t.viscous = tensors("stress_viscous");
-  if (t.coordination.size() != t.size() || t.step.size() != t.size() ||
-      t.layering.size() != t.size()) {
-    throw InputError(fmt::format("'{}': time-series datasets differ in length", path.string()));
-  }
-  return t;
+  return read_time_series(file.root().group("shear").group("timeseries"), path.string());
 }
 
 StoredRunSummary read_run_summary(const std::filesystem::path& path) {
@@ -332,6 +261,15 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
     e.reliable = q.attribute_int("reliable") != 0;
     s.observables.push_back({name, e});
   }
+  if (root.has_child("structure")) {
+    const H5Group structure = root.group("structure");
+    const auto estimate = [&](const char* name) {
+      const H5Array a = structure.read_array(name);
+      return Estimate{a.data.at(0), a.data.at(1)};
+    };
+    s.r_m = estimate("r_m");
+    s.f_m = estimate("f_m");
+  }
   return s;
 }
 
@@ -357,21 +295,8 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
   const double first = shear.group("timeseries").read_array("strain").data.front();
   const double stationary_from = first + shear.group("summary").attribute_double("transient_strain");
 
-  const H5Group g = shear.group("snapshots");
-  const std::vector<double> strain = g.read_array("strain").data;
-  const H5Array position = g.read_array("position");
-  const std::size_t n = s.radius.size();
-  if (position.dims.size() != 2 || position.dims[0] != strain.size() || position.dims[1] != 3 * n) {
-    throw InputError(fmt::format("'{}': /shear/snapshots/position must have shape {} x {}", path.string(),
-                                 strain.size(), 3 * n));
-  }
-  for (std::size_t k = 0; k < strain.size(); ++k) {
-    if (strain[k] < stationary_from - 1e-9) continue;
-    Snapshot snap{strain[k], std::vector<Vec3>(n)};
-    const double* p = &position.data[k * 3 * n];
-    for (std::size_t i = 0; i < n; ++i) snap.position[i] = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
-    s.snapshots.push_back(std::move(snap));
-  }
+  for (Snapshot& snap : read_snapshots(shear.group("snapshots"), s.radius.size(), path.string()))
+    if (snap.strain >= stationary_from - 1e-9) s.snapshots.push_back(std::move(snap));
   return s;
 }
 

@@ -74,6 +74,7 @@ struct StoredRunSummary {
   bool converged = false;
   double averaged_strain = 0.0, coordination = 0.0, layering = 0.0;
   std::vector<ObservableEstimate> observables;  // shear_observable_names() order
+  std::optional<Estimate> r_m, f_m;             // when the run has /structure
 };
 StoredRunSummary read_run_summary(const std::filesystem::path& path);
 

@@ -133,19 +133,64 @@ ShearSummary summarise(const TimeSeries& series, double min_stationary_strain) {
   return summary;
 }
 
-ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const ShearProtocol& protocol,
-                      const std::function<void(const ShearProgress&)>& progress) {
+ShearCounters& ShearCounters::operator+=(const ShearCounters& more) {
+  const bool first = steps == 0;
+  steps += more.steps;
+  rejected_steps += more.rejected_steps;
+  evaluations += more.evaluations;
+  neighbour_builds += more.neighbour_builds;
+  fixed_point_sweeps += more.fixed_point_sweeps;
+  newton_iterations += more.newton_iterations;
+  cg_iterations += more.cg_iterations;
+  if (more.steps > 0) {
+    smallest_step = first ? more.smallest_step : std::min(smallest_step, more.smallest_step);
+    largest_step = std::max(largest_step, more.largest_step);
+  }
+  return *this;
+}
+
+ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator, const ShearProtocol& protocol,
+                      const std::function<void(const ShearProgress&)>& progress,
+                      const ShearCheckpointing& checkpointing) {
   protocol.validate();
+  if ((checkpointing.every_steps > 0 || checkpointing.resume_from) && !checkpointing.new_integrator)
+    throw std::invalid_argument("run_shear: checkpoints need new_integrator");
   const auto clock_start = std::chrono::steady_clock::now();
   ShearResult result;
   TimeSeries& series = result.series;
-  const double start = flow.strain();
-  const std::size_t builds_before = flow.system().neighbours().builds();
-  std::size_t sweeps = 0, newton = 0, cg = 0;
-
+  double start = flow.strain();
   double next_snapshot = 0.0;  // strain since the start
-  flow.sample_stress_from(-std::numeric_limits<double>::infinity());
-  flow.evaluate();  // the first sample
+  double next_sample = start + protocol.sample_interval;
+  double next_check = start + std::max(protocol.check_interval, protocol.min_strain);
+  double worst = std::numeric_limits<double>::infinity();
+  double seconds_before = 0.0;  // of the run before it was resumed
+
+  // The counters of the current segment (since the start or the last
+  // checkpoint) and of the finished segments.
+  Integrator* integrator = &given_integrator;
+  std::unique_ptr<Integrator> owned_integrator;
+  ShearCounters finished;
+  std::size_t builds_before = 0, evaluations_before = 0, accepted_before = 0, rejected_before = 0;
+  ShearCounters solver;  // sweeps, Newton and CG iterations of this segment
+  const auto segment = [&] {
+    const IntegratorStats& stats = integrator->stats();
+    ShearCounters c = solver;
+    c.steps = stats.accepted - accepted_before;
+    c.rejected_steps = stats.rejected - rejected_before;
+    c.evaluations = flow.evaluations() - evaluations_before;
+    c.neighbour_builds = flow.system().neighbours().builds() - builds_before;
+    c.smallest_step = stats.smallest_step;
+    c.largest_step = stats.largest_step;
+    return c;
+  };
+  const auto begin_segment = [&] {
+    builds_before = flow.system().neighbours().builds();
+    evaluations_before = flow.evaluations();
+    accepted_before = integrator->stats().accepted;
+    rejected_before = integrator->stats().rejected;
+    solver = {};
+  };
+
   const auto record = [&] {
     const StressSample s = flow.stress();
     series.strain.push_back(flow.strain());
@@ -155,7 +200,7 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
                                   static_cast<double>(flow.system().size()));
     series.layering.push_back(
         gradient_layering(flow.system().particles().position, flow.system().box().side()).order);
-    series.step.push_back(integrator.stats().last_step);
+    series.step.push_back(integrator->stats().last_step);
     // Snapshots on the samples nearest to each multiple of the snapshot interval.
     if (protocol.snapshot_interval > 0.0 &&
         flow.strain() - start >= next_snapshot - 1e-9 * protocol.sample_interval) {
@@ -163,21 +208,66 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
       next_snapshot += protocol.snapshot_interval;
     }
   };
-  record();
-
-  double next_sample = start + protocol.sample_interval;
   // Steps between samples skip the stress (the sample lands exactly on its strain).
   const auto sample_at = [&](double strain) {
     flow.sample_stress_from(strain - 1e-9 * protocol.sample_interval);
   };
-  sample_at(next_sample);
-  double next_check = start + std::max(protocol.check_interval, protocol.min_strain);
-  double worst = std::numeric_limits<double>::infinity();
+
+  // Starting afresh from a checkpoint: a new contact system built from the
+  // stored particles, a new integrator, the first evaluation from the stored
+  // velocities.
+  const auto restart_from = [&](const ShearCheckpoint& c) {
+    const std::shared_ptr<const ContactLaw> law = flow.system().shared_law();
+    const double skin = flow.system().neighbours().skin();
+    flow = OverdampedShear(ContactSystem(c.particles, c.box, law, skin), flow.model());
+    owned_integrator = checkpointing.new_integrator();
+    integrator = owned_integrator.get();
+    start = c.start;
+    next_sample = c.next_sample;
+    next_check = c.next_check;
+    next_snapshot = c.next_snapshot;
+    worst = c.worst;
+    begin_segment();
+    sample_at(next_sample);
+    flow.evaluate();
+  };
+  const auto checkpoint = [&] {
+    finished += segment();
+    // The strain as the file holds it (one double), so that a resumed run
+    // starts from the very same cell.
+    LeesEdwardsBox box(flow.system().box().side());
+    box.set_strain(flow.system().box().strain());
+    ShearCheckpoint c{flow.system().particles(), box, start, next_sample, next_check,
+                      next_snapshot, worst, series, result.snapshots, finished,
+                      seconds_before + std::chrono::duration<double>(
+                                           std::chrono::steady_clock::now() - clock_start)
+                                           .count()};
+    if (checkpointing.save) checkpointing.save(c);
+    restart_from(c);
+  };
+
+  if (const ShearCheckpoint* resume = checkpointing.resume_from) {
+    series = resume->series;
+    result.snapshots = resume->snapshots;
+    finished = resume->counters;
+    seconds_before = resume->seconds;
+    restart_from(*resume);
+  } else {
+    begin_segment();
+    flow.sample_stress_from(-std::numeric_limits<double>::infinity());
+    flow.evaluate();  // the first sample
+    record();
+    sample_at(next_sample);
+  }
+
   for (;;) {
-    integrator.step(flow, next_sample - flow.strain());
-    sweeps += static_cast<std::size_t>(flow.last_solve().fixed_point_sweeps);
-    newton += static_cast<std::size_t>(flow.last_solve().newton_iterations);
-    cg += static_cast<std::size_t>(flow.last_solve().cg_iterations);
+    if (checkpointing.every_steps > 0 &&
+        integrator->stats().accepted - accepted_before >= checkpointing.every_steps)
+      checkpoint();
+    integrator->step(flow, next_sample - flow.strain());
+    solver.fixed_point_sweeps += static_cast<std::size_t>(flow.last_solve().fixed_point_sweeps);
+    solver.newton_iterations += static_cast<std::size_t>(flow.last_solve().newton_iterations);
+    solver.cg_iterations += static_cast<std::size_t>(flow.last_solve().cg_iterations);
     if (flow.strain() < next_sample - 1e-9 * protocol.sample_interval) continue;
 
     record();
@@ -226,18 +316,11 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const Shear
     }
   }
 
-  const IntegratorStats& stats = integrator.stats();
-  result.counters = {stats.accepted,
-                     stats.rejected,
-                     flow.evaluations(),
-                     flow.system().neighbours().builds() - builds_before,
-                     sweeps,
-                     newton,
-                     cg,
-                     stats.smallest_step,
-                     stats.largest_step};
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  finished += segment();
+  result.counters = finished;
+  result.seconds = seconds_before + std::chrono::duration<double>(
+                                        std::chrono::steady_clock::now() - clock_start)
+                                        .count();
   return result;
 }
 

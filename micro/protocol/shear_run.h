@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,7 @@ struct ShearSummary {
 ShearSummary summarise(const TimeSeries& series, double min_stationary_strain);
 
 struct ShearCounters {
+  ShearCounters& operator+=(const ShearCounters& more);
   std::size_t steps = 0, rejected_steps = 0, evaluations = 0, neighbour_builds = 0;
   std::size_t fixed_point_sweeps = 0, newton_iterations = 0, cg_iterations = 0;
   double smallest_step = 0.0, largest_step = 0.0;
@@ -107,7 +109,35 @@ struct ShearProgress {
   double worst_relative_error;  // at the last check (∞ before the first)
 };
 
+/// Everything a run needs to go on from where it was: the particles in the
+/// engine's order with the velocities that warm-start the next drag solve, the
+/// strain, and the run's history and bookkeeping.
+struct ShearCheckpoint {
+  Particles particles;
+  LeesEdwardsBox box;
+  double start = 0.0;  // strain at which the run began
+  double next_sample = 0.0, next_check = 0.0, next_snapshot = 0.0;
+  double worst = 0.0;  // worst relative error at the last check
+  TimeSeries series;
+  std::vector<Snapshot> snapshots;
+  ShearCounters counters;  // up to the checkpoint
+  double seconds = 0.0;    // wall time up to the checkpoint
+};
+
+/// Checkpoints every `every_steps` accepted steps. At each one the run starts
+/// afresh from the checkpoint — new contact system, new integrator, velocities
+/// and history restored — whether or not it was interrupted there, so a run
+/// resumed from a checkpoint takes exactly the steps of an uninterrupted one
+/// and ends with the same numbers, bit for bit.
+struct ShearCheckpointing {
+  std::size_t every_steps = 0;  // 0: never
+  std::function<void(const ShearCheckpoint&)> save;
+  std::function<std::unique_ptr<Integrator>()> new_integrator;
+  const ShearCheckpoint* resume_from = nullptr;  // go on from here instead of starting
+};
+
 ShearResult run_shear(OverdampedShear& flow, Integrator& integrator, const ShearProtocol& protocol,
-                      const std::function<void(const ShearProgress&)>& progress = {});
+                      const std::function<void(const ShearProgress&)>& progress = {},
+                      const ShearCheckpointing& checkpointing = {});
 
 }  // namespace softglass::micro

@@ -1,0 +1,111 @@
+#include "micro/app/run_steps.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+
+#include "common/errors.h"
+#include "common/progress.h"
+#include "micro/analysis/run_structure.h"
+#include "micro/analysis/shear_modulus.h"
+#include "micro/io/checkpoint_file.h"
+
+namespace softglass::micro {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+RunRecord pack_and_measure(const MicroParameters& prm, std::shared_ptr<const ContactLaw> law,
+                           const std::string& command, bool quiet) {
+  const auto start = Clock::now();
+  RunRecord record;
+  record.command = command;
+  record.contact_law = prm.contact_law;
+  record.parameters = prm.text;
+  record.timings.threads = omp_get_max_threads();
+
+  if (!prm.packing_input.empty()) {
+    StoredPacking stored = read_packing(prm.packing_input);
+    record.packing_particles = std::move(stored.particles);
+    record.packing_box = stored.box;
+    record.packing = stored.report;
+    record.modulus = stored.modulus;
+    if (!quiet) std::fprintf(stderr, "packing read from %s\n", prm.packing_input.c_str());
+    return record;
+  }
+  Progress bar("packing", prm.packing.volume_fraction - prm.packing.initial_volume_fraction, quiet);
+  Packing packing = make_packing(prm.packing, law, [&](double phi) {
+    bar.update(phi - prm.packing.initial_volume_fraction, fmt::format("phi {:.3f}", phi));
+  });
+  bar.finish();
+  record.packing_particles = std::move(packing.particles);
+  record.packing_box = packing.box;
+  record.packing = packing.report;
+  record.timings.packing = seconds_since(start);
+
+  const auto modulus_start = Clock::now();
+  ContactSystem system(record.packing_particles, record.packing_box, law, prm.packing.skin);
+  record.modulus = shear_modulus(system);
+  record.timings.modulus = seconds_since(modulus_start);
+  return record;
+}
+
+void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
+                       std::shared_ptr<const ContactLaw> law,
+                       const std::function<void(double, double)>& progress,
+                       const CheckpointSettings& checkpoints) {
+  const auto start = Clock::now();
+  ContactSystem system(record.packing_particles, record.packing_box, law, prm.packing.skin);
+  OverdampedShear flow(std::move(system), prm.shear_model);
+  const auto integrator = make_integrator(prm.integrator);
+
+  ShearCheckpointing checkpointing;
+  std::optional<ShearCheckpoint> resume;
+  if (!checkpoints.file.empty()) {
+    if (std::filesystem::exists(checkpoints.file)) {
+      try {
+        resume = read_checkpoint(checkpoints.file);
+      } catch (const InputError& e) {
+        throw InputError(fmt::format("{} (delete it to start this run afresh)", e.what()));
+      }
+      checkpointing.resume_from = &*resume;
+    }
+    checkpointing.every_steps = checkpoints.every_steps;
+    checkpointing.save = [&](const ShearCheckpoint& c) { write_checkpoint(checkpoints.file, c); };
+    checkpointing.new_integrator = [&] { return make_integrator(prm.integrator); };
+  }
+  ShearRecord shear;
+  shear.gamma_tilde = prm.shear_model.gamma_tilde;
+  shear.result = run_shear(
+      flow, *integrator, prm.protocol,
+      [&](const ShearProgress& p) {
+        if (progress) progress(p.strain, p.worst_relative_error);
+      },
+      checkpointing);
+  shear.final_particles = flow.system().wrapped_in_label_order();
+  shear.final_box = flow.system().box();
+  record.timings.shear = seconds_since(start);
+  const std::vector<Snapshot> stationary = stationary_snapshots(shear.result);
+  if (stationary.size() >= 2) {
+    record.structure = analyse_snapshots(stationary, shear.final_particles.radius,
+                                         shear.final_box.side(), *law, prm.structure);
+  }
+  record.shear = std::move(shear);
+}
+
+void write_record(AtomicOutput& out, RunRecord& record, double total_seconds) {
+  record.timings.total = total_seconds;
+  write_run_file(out.temporary_path(), record);
+  out.commit();
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,289 @@
+// `micro sweep FILE.prm`: packings, then every (φ, γ̃, seed) case, then the
+// flow-curve table — resumable, shared out over MPI ranks, one case at a time
+// for batch arrays.
+//
+// Resuming is a consequence of how files are written: each packing and each
+// run is written whole under a temporary name and renamed into place, so a
+// file that exists is finished and a rerun skips it. The table is always
+// rebuilt from the run files, so an interrupted and resumed sweep ends with the
+// table of an uninterrupted one.
+#include "micro/app/sweep_command.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <map>
+#include <optional>
+
+#include "common/atomic_output.h"
+#include "common/errors.h"
+#include "common/progress.h"
+#include "common/version.h"
+#include "micro/app/run_steps.h"
+#include "micro/sweep/directory_lock.h"
+#include "micro/sweep/flow_curve_table.h"
+
+namespace softglass::micro {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct Sweep {
+  SweepParameters parameters;
+  SweepPlan plan;
+  std::string command_line;
+};
+
+SweepCaseSettings settings_of(const Sweep& sweep, double phi, unsigned seed, double rate) {
+  const bool preset = sweep.parameters.spec.preset != "custom";
+  return {sweep.plan.particles, phi, rate, seed,
+          preset ? sweep.plan.target_relative_error : 0.0, sweep.plan.max_strain, {}, {}};
+}
+
+// One log line per finished piece of work, on stdout, prefixed by the worker.
+template <class... Args>
+void log(const Workers& workers, fmt::format_string<Args...> format, Args&&... args) {
+  const std::string prefix = workers.size() > 1 ? fmt::format("[rank {}] ", workers.rank()) : "";
+  fmt::print("{}{}\n", prefix, fmt::format(format, std::forward<Args>(args)...));
+  std::fflush(stdout);
+}
+
+void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers, bool quiet) {
+  const auto start = Clock::now();
+  SweepCaseSettings settings = settings_of(sweep, packing.volume_fraction, packing.seed,
+                                           sweep.parameters.base.shear_model.gamma_tilde);
+  settings.output = packing.file;
+  const MicroParameters prm = case_parameters(sweep.parameters.base, settings);
+  std::filesystem::create_directories(packing.file.parent_path());
+  AtomicOutput out(packing.file, false);
+  RunRecord record = pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", quiet);
+  write_record(out, record, seconds_since(start));
+  log(workers, "packing  phi {:.4f} seed {}: Z {:.3f}, G0 {:.4e} E*, {:.1f} s -> {}",
+      packing.volume_fraction, packing.seed, record.packing.coordination, record.modulus.modulus,
+      seconds_since(start), packing.file.string());
+}
+
+// Where a running case keeps its checkpoint: beside its result file.
+std::filesystem::path checkpoint_file(const SweepCase& c) {
+  std::filesystem::path file = c.file;
+  return file.replace_extension(".checkpoint.h5");
+}
+
+// Shears one case; `progress(fraction)` follows it (by strain, an upper bound).
+void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
+              const std::function<void(double)>& progress) {
+  const auto start = Clock::now();
+  SweepCaseSettings settings = settings_of(sweep, c.volume_fraction, c.seed, c.gamma_tilde);
+  settings.packing_input = sweep.plan.packings[c.packing].file;
+  settings.output = c.file;
+  const MicroParameters prm = case_parameters(sweep.parameters.base, settings);
+  std::filesystem::create_directories(c.file.parent_path());
+  AtomicOutput out(c.file, false);
+  const std::shared_ptr<const ContactLaw> law = make_contact_law(prm.contact_law);
+  RunRecord record = pack_and_measure(prm, law, "run", true);
+  const CheckpointSettings checkpoints{checkpoint_file(c), sweep.parameters.spec.checkpoint_steps};
+  const bool resumed = std::filesystem::exists(checkpoints.file);
+  shear_and_analyse(
+      record, prm, law,
+      [&](double strain, double) { progress(std::min(1.0, strain / prm.protocol.max_strain)); },
+      checkpoints);
+  write_record(out, record, seconds_since(start));
+  std::filesystem::remove(checkpoints.file);
+  const ShearResult& r = record.shear->result;
+  log(workers, "run      phi {:.4f} gamma~ {:.2e} seed {}: sigma {:.4e} ± {:.1e} E*, {:.1f} strain, {}{}, {:.1f} s{}",
+      c.volume_fraction, c.gamma_tilde, c.seed, r.summary["sigma"].mean,
+      r.summary["sigma"].standard_error, r.series.strain.back() - r.series.strain.front(),
+      r.converged ? "converged" : "NOT converged", r.summary.layered() ? " (LAYERED)" : "",
+      seconds_since(start), resumed ? ", resumed from its checkpoint" : "");
+}
+
+// Splits `work` (indices with costs) over the workers: longest first, each to
+// the least loaded worker (LPT), the same on every rank.
+std::vector<std::size_t> my_share(const std::vector<std::size_t>& work, const std::vector<double>& cost,
+                                  const Workers& workers) {
+  std::vector<std::size_t> order = work;
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return cost[a] > cost[b]; });
+  std::vector<double> load(static_cast<std::size_t>(workers.size()), 0.0);
+  std::vector<std::size_t> mine;
+  for (std::size_t item : order) {
+    const auto least = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[static_cast<std::size_t>(least)] += cost[item];
+    if (least == workers.rank()) mine.push_back(item);
+  }
+  return mine;
+}
+
+std::vector<std::string> provenance(const Sweep& sweep) {
+  const std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return {fmt::format("softglass micro {} ({}), written {}", kVersion, kGitRevision, date),
+          fmt::format("command: {}", sweep.command_line),
+          fmt::format("preset {}, N = {}, {} packings per volume fraction; stresses in units of E*",
+                      sweep.parameters.spec.preset, sweep.plan.particles, sweep.plan.seeds.size())};
+}
+
+// Reads every finished run and writes the averaged and per-packing tables.
+// Returns the number of missing runs (their state points are left out).
+std::size_t write_tables(const Sweep& sweep, const Workers& workers) {
+  std::map<std::pair<double, double>, std::vector<StoredRunSummary>> points;
+  std::vector<StoredRunSummary> runs;
+  std::vector<unsigned> seeds;
+  std::size_t missing = 0;
+  for (const SweepCase& c : sweep.plan.cases) {
+    if (!std::filesystem::exists(c.file)) {
+      ++missing;
+      continue;
+    }
+    runs.push_back(read_run_summary(c.file));
+    seeds.push_back(c.seed);
+    points[{c.volume_fraction, c.gamma_tilde}].push_back(runs.back());
+  }
+  std::vector<PackingAverage> averages;
+  for (const auto& [point, point_runs] : points) {
+    if (point_runs.size() == sweep.plan.seeds.size()) averages.push_back(average_over_packings(point_runs));
+  }
+  const NumberTable table = flow_curve_table(averages);
+  const NumberTable per_packing = per_packing_table(runs, seeds);
+  const auto lines = provenance(sweep);
+  AtomicOutput csv(sweep.plan.table_csv, true), packings_csv(sweep.plan.packing_table_csv, true),
+      h5(sweep.plan.table_h5, true);
+  write_table_csv(csv.temporary_path(), table, lines);
+  write_table_csv(packings_csv.temporary_path(), per_packing, lines);
+  write_tables_h5(h5.temporary_path(), {{"flow_curve", &table}, {"flow_curve_packings", &per_packing}}, lines);
+  csv.commit();
+  packings_csv.commit();
+  h5.commit();
+  log(workers, "table    {} state points ({} runs) -> {}, {}, {}", averages.size(), runs.size(),
+      sweep.plan.table_csv.string(), sweep.plan.packing_table_csv.string(), sweep.plan.table_h5.string());
+  return missing;
+}
+
+void print_plan(const Sweep& sweep) {
+  const SweepPlan& plan = sweep.plan;
+  fmt::print("sweep    preset {}, N = {}, {} volume fractions x {} rates x {} packings = {} cases\n",
+             sweep.parameters.spec.preset, plan.particles, plan.volume_fractions.size(),
+             plan.gamma_tildes.size(), plan.seeds.size(), plan.cases.size());
+  for (std::size_t k = 0; k < plan.cases.size(); ++k) {
+    const SweepCase& c = plan.cases[k];
+    fmt::print("case {:4d}  phi {:.4f}  gamma~ {:.3e}  seed {:3d}  {}  {}\n", k, c.volume_fraction,
+               c.gamma_tilde, c.seed, std::filesystem::exists(c.file) ? "done   " : "pending",
+               c.file.string());
+  }
+}
+
+}  // namespace
+
+void sweep_command(const SweepOptions& options, const Workers& workers) {
+  Sweep sweep;
+  sweep.parameters = read_sweep_file(options.parameter_file);
+  sweep.plan = make_sweep_plan(sweep.parameters.spec);
+  sweep.command_line = options.command_line;
+  const SweepPlan& plan = sweep.plan;
+
+  if (options.list) {
+    if (workers.leader()) print_plan(sweep);
+    return;
+  }
+  if (options.only_case) {  // one case of a batch array: no lock, other tasks share the folder
+    if (*options.only_case >= plan.cases.size())
+      throw InputError(fmt::format("--case {}: the sweep has cases 0 … {}", *options.only_case,
+                                   plan.cases.size() - 1));
+    const SweepCase& c = plan.cases[*options.only_case];
+    const SweepPacking& packing = plan.packings[c.packing];
+    if (!std::filesystem::exists(packing.file)) make_packing(sweep, packing, workers, options.quiet);
+    if (std::filesystem::exists(c.file)) {
+      log(workers, "case {} is done: {}", *options.only_case, c.file.string());
+      return;
+    }
+    Progress bar("case", 1.0, options.quiet);
+    run_case(sweep, c, workers, [&](double fraction) { bar.update(fraction); });
+    return;
+  }
+
+  // Only one sweep per folder; the ranks of this one agree before going on.
+  std::optional<DirectoryLock> lock;
+  std::string lock_error;
+  if (workers.leader()) {
+    try {
+      lock.emplace(plan.directory);
+    } catch (const InputError& e) {
+      lock_error = e.what();
+    }
+  }
+  if (!workers.all(lock_error.empty())) {
+    if (workers.leader()) throw InputError(lock_error);
+    return;
+  }
+  if (!options.gather_only) {
+    if (workers.leader()) {
+      std::size_t done = 0;
+      for (const auto& c : plan.cases) done += std::filesystem::exists(c.file);
+      log(workers, "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}",
+          sweep.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
+          plan.directory.string());
+    }
+    // The packings first: every case of a (φ, seed) starts from its packing.
+    std::vector<std::size_t> pending;
+    std::vector<double> cost;
+    for (std::size_t k = 0; k < plan.packings.size(); ++k) {
+      cost.push_back(static_cast<double>(plan.particles));
+      if (!std::filesystem::exists(plan.packings[k].file)) pending.push_back(k);
+    }
+    bool ok = true;
+    for (std::size_t k : my_share(pending, cost, workers)) {
+      try {
+        make_packing(sweep, plan.packings[k], workers, true);
+      } catch (const std::exception& e) {
+        log(workers, "FAILED   packing {}: {}", plan.packings[k].file.string(), e.what());
+        ok = false;
+      }
+    }
+    if (!workers.all(ok)) throw NumericalError("some packings failed (see above); rerun to retry");
+
+    pending.clear();
+    cost.clear();
+    for (std::size_t k = 0; k < plan.cases.size(); ++k) {
+      cost.push_back(plan.cases[k].cost);
+      if (!std::filesystem::exists(plan.cases[k].file)) pending.push_back(k);
+    }
+    const std::vector<std::size_t> mine = my_share(pending, cost, workers);
+    double total = 0.0, finished = 0.0;
+    for (std::size_t k : mine) total += cost[k];
+    // Only the leader draws: its share stands for the sweep's time left.
+    Progress bar("sweep", total, options.quiet || !workers.leader());
+    std::size_t failed = 0;
+    for (std::size_t k : mine) {
+      try {
+        run_case(sweep, plan.cases[k], workers,
+                 [&](double fraction) { bar.update(finished + fraction * cost[k]); });
+      } catch (const std::exception& e) {
+        log(workers, "FAILED   case {} ({}): {}", k, plan.cases[k].file.string(), e.what());
+        ++failed;
+      }
+      finished += cost[k];
+      bar.update(finished);
+    }
+    bar.finish();
+    if (!workers.all(failed == 0) && workers.leader())
+      log(workers, "some cases failed; the table holds the others");
+    if (failed > 0 && !workers.leader())
+      throw NumericalError(fmt::format("{} case(s) failed on rank {}", failed, workers.rank()));
+  }
+  if (!workers.leader()) return;
+  const std::size_t missing = write_tables(sweep, workers);
+  if (missing > 0)
+    throw NumericalError(fmt::format(
+        "{} of {} runs are missing; their state points are left out of the table (rerun the "
+        "sweep to complete it)",
+        missing, plan.cases.size()));
+}
+
+}  // namespace softglass::micro

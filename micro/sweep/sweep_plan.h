@@ -1,0 +1,77 @@
+// What a sweep runs: the state points (φ, γ̃) × packings (seeds), the packings
+// they share and where every result goes.
+//
+// A sweep is a list of independent cases. The packing of a (φ, seed) is made
+// once and sheared at every γ̃ (as in the paper), so a sweep has two phases:
+// the packings, then the cases. Every file is written atomically, so a file that
+// exists is complete: a rerun skips it, which makes an interrupted sweep
+// resumable and lets any number of workers (threads, MPI ranks, array jobs)
+// share one output folder as long as they split the work.
+//
+// Fidelity presets fix N, the state points, the number of packings and the
+// accuracy of each run; docs/sweeps.md gives their measured error and cost.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace softglass::micro {
+
+struct SweepPreset {
+  std::string name;
+  std::size_t particles;
+  std::vector<double> volume_fractions;
+  std::vector<double> gamma_tildes;
+  unsigned packings;
+  double target_relative_error;  // of each run (σ, N1, N2)
+  double max_strain;             // of each run
+  std::string description;       // what it is for
+};
+
+/// fast, standard, paper.
+const std::vector<SweepPreset>& sweep_presets();
+const SweepPreset& sweep_preset(const std::string& name);  // InputError if unknown
+
+/// The `sweep` subsection of a sweep file. Empty lists and zero counts take
+/// the preset's values; `custom` has none and needs them all.
+struct SweepSpec {
+  std::string preset = "standard";
+  std::vector<double> volume_fractions;
+  std::vector<double> gamma_tildes;
+  unsigned packings = 0;
+  unsigned first_seed = 1;
+  std::size_t particles = 0;
+  std::filesystem::path directory = "sweep";
+  std::size_t checkpoint_steps = 20000;  // accepted steps between checkpoints (0: none)
+};
+
+struct SweepPacking {
+  double volume_fraction;
+  unsigned seed;
+  std::filesystem::path file;  // `micro pack` record
+};
+
+struct SweepCase {
+  std::size_t packing;  // index into SweepPlan::packings
+  double volume_fraction, gamma_tilde;
+  unsigned seed;
+  std::filesystem::path file;  // `micro run` record
+  double cost;                 // relative estimate, for ordering and the time left
+};
+
+struct SweepPlan {
+  std::size_t particles;
+  double target_relative_error, max_strain;
+  std::vector<double> volume_fractions, gamma_tildes;  // sorted
+  std::vector<unsigned> seeds;
+  std::vector<SweepPacking> packings;
+  std::vector<SweepCase> cases;  // by φ, then γ̃, then seed
+  std::filesystem::path directory, table_csv, packing_table_csv, table_h5;
+};
+
+/// Resolves the preset, checks the lists (φ in [0.64, 0.95], γ̃ in (0, 0.1],
+/// no duplicates) and names every file. Throws InputError naming the entry.
+SweepPlan make_sweep_plan(const SweepSpec& spec);
+
+}  // namespace softglass::micro
