@@ -65,14 +65,18 @@ void declare_scene_file(dealii::ParameterHandler& prm) {
 
 std::string expand_includes(const std::filesystem::path& file) { return expand(file, 0); }
 
-void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
-  const std::string text = expand_includes(file);
+void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
+                      const std::string& source) {
   std::istringstream input(text);
   try {
-    prm.parse_input(input, file.string(), "", false);
+    prm.parse_input(input, source, "", false);
   } catch (const dealii::ExceptionBase& error) {
     throw InputError(io::one_line(error));
   }
+}
+
+void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
+  parse_scene_text(prm, expand_includes(file), file.string());
 }
 
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {

@@ -23,6 +23,10 @@ std::string expand_includes(const std::filesystem::path& file);
 /// line and entry.
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file);
 
+/// The same for text already read (includes expanded); `source` names it.
+void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
+                      const std::string& source);
+
 /// The operating points of `subsection sweep`, validated (> 0, finite).
 std::vector<double> read_sweep(dealii::ParameterHandler& prm);
 

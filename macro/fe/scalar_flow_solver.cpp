@@ -70,6 +70,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 
 #include "common/errors.h"
@@ -84,6 +85,9 @@ namespace {
 // Continuation divides ε by this per stage; 10 keeps each stage within a few
 // Newton iterations of the previous one for n down to 0.3 (measured).
 constexpr double kContinuationFactor = 10.0;
+// A failed continuation stage is retried with the step ε_prev/ε square-rooted
+// while it exceeds this (10 → 3.2 → 1.8 → 1.3: three retries).
+constexpr double kSmallestContinuationStep = 1.2;
 // Regula falsi on φ'(α): stop when |φ'| has dropped to this fraction of φ'(0)
 // (an inexact but sufficient line search), or after this many steps.
 constexpr double kLineSearchReduction = 0.1;
@@ -309,6 +313,9 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
       }
     }
     solution_.add(alpha, update);
+    if (std::getenv("SOFTGLASS_MACRO_DEBUG"))
+      fmt::print(stderr, "newton eps={:.3g} it={} |R|={:.3e} alpha={:.3g} |du|={:.3e}\n",
+                 law.rate_scale(), iteration, residual_norm, alpha, update.linfty_norm());
     const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
     if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
   }
@@ -318,15 +325,30 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
 }
 
 // Newton at ε = start, start/10, ... down to the target; returns the iterations.
-// Leaves the law at the target in regularised_.
+// Leaves the law at the target in regularised_. When a stage fails (large plug
+// regions make Newton's quadratic region narrow at small ε), it is retried from
+// the last converged solution with the step in ε shrunk to its square root.
 template <int dim>
 unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double target_scale,
                                                                         double start_scale) {
   unsigned iterations = 0;
-  double eps = std::max(start_scale, target_scale);
+  double eps = std::max(start_scale, target_scale), converged_eps = 0.0;
+  Vector<double> converged = solution_;
   while (true) {
     regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    iterations += solve_newton(*regularised_);
+    try {
+      iterations += solve_newton(*regularised_);
+    } catch (const NumericalError&) {
+      iterations += settings_.max_newton_iterations;
+      // Retry halfway (in log ε) from the last converged stage, while the step
+      // is still worth shrinking.
+      if (converged_eps == 0.0 || converged_eps / eps < kSmallestContinuationStep) throw;
+      eps = std::sqrt(converged_eps * eps);
+      solution_ = converged;
+      continue;
+    }
+    converged = solution_;
+    converged_eps = eps;
     if (eps <= target_scale * (1.0 + 1e-12)) return iterations;
     eps = std::max(eps / kContinuationFactor, target_scale);
   }
@@ -592,7 +614,15 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
       const double penalty = settings_.al_relative_penalty * law_.viscosity(rate_c);
       result.iterations += solve_augmented_lagrangian(penalty, nullptr);
     } else {
-      result.iterations += solve_newton(*regularised_);
+      // On the refined mesh Newton starts from the interpolated solution; if
+      // that fails, from it again through one stage at 10ε.
+      const Vector<double> transferred = solution_;
+      try {
+        result.iterations += solve_newton(*regularised_);
+      } catch (const NumericalError&) {
+        solution_ = transferred;
+        result.iterations += solve_with_continuation(target, kContinuationFactor * target);
+      }
     }
     value = evaluate(boundary);
     result.discretisation_error = difference(value, coarse_value, 1.0);
