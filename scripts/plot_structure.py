@@ -40,18 +40,20 @@ def main(prefix, files):
     runs = sorted((load(n) for n in files), key=lambda d: d["gamma"])
 
     fig, axes = plt.subplots(1, len(runs), subplot_kw={"projection": "polar"},
-                             figsize=(4.2 * len(runs), 4.2))
+                             figsize=(4.6 * len(runs), 4.4), gridspec_kw={"wspace": 0.45})
     axes = np.atleast_1d(axes)
     vmax = max(d["map"].max() for d in runs)
     for ax, d in zip(axes, runs):
         theta = np.append(d["map_theta"] - 0.5 * (d["map_theta"][1] - d["map_theta"][0]), 2 * np.pi)
         dr = d["map_r"][1] - d["map_r"][0]
         r = np.append(d["map_r"] - 0.5 * dr, d["map_r"][-1] + 0.5 * dr)
+        ax.grid(False)
         mesh = ax.pcolormesh(theta, r, d["map"], cmap="jet", vmin=0, vmax=vmax, shading="flat")
         ax.set_title(rf"$\tilde\gamma$ = {d['gamma']:.0e}", pad=12)
         ax.set_rlim(0, r[-1])
         ax.set_xticks(np.radians([0, 45, 90, 135, 180, 225, 270, 315]))
         ax.set_yticklabels([])
+        ax.tick_params(axis="x", pad=1, labelsize=9)
     fig.colorbar(mesh, ax=list(axes), shrink=0.8, label=r"$g(r,\theta)$")
     fig.suptitle(rf"flow–gradient plane ($|z| < {runs[0]['slab']}R$), $\theta$ from the flow axis")
     fig.savefig(prefix + "_map.png", dpi=110)
