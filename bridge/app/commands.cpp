@@ -46,7 +46,8 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
   AtomicOutput law_out(o.output, o.force), phi_out(beside(o.output, "_phi.csv"), o.force),
       points_out(beside(o.output, "_points.csv"), o.force),
       constants_out(beside(o.output, "_constants.csv"), o.force);
-  const FlowCurveTable table = read_flow_curve_table(CsvTable::read(o.table));
+  FlowCurveTable table = read_flow_curve_table(CsvTable::read(o.table));
+  if (!o.structure.empty()) merge_structure(table, CsvTable::read(o.structure));
   const Sweep sweep = make_sweep(table);
   const std::unique_ptr<Resampler> resampler =
       o.packings.empty()
@@ -62,9 +63,10 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
 
   std::vector<std::string> lines =
       provenance("softglass bridge fit: the flow laws of a particle-engine sweep", command_line);
-  lines.push_back(fmt::format("input:    {} ({} state points, {} volume fractions){}",
+  lines.push_back(fmt::format("input:    {} ({} state points, {} volume fractions){}{}",
                               o.table.string(), sweep.points(), sweep.groups.size(),
-                              o.packings.empty() ? "" : ", runs " + o.packings.string()));
+                              o.packings.empty() ? "" : ", runs " + o.packings.string(),
+                              o.structure.empty() ? "" : ", structure " + o.structure.string()));
   for (const std::string& c : table.comments) lines.push_back("input |   " + c);
   lines.push_back("errors:   " + a.method);
   for (const std::string& w : a.warnings) lines.push_back("WARNING:  " + w);

@@ -13,6 +13,7 @@ namespace softglass::bridge {
 
 struct FitOptions {
   std::filesystem::path table, packings;  // packings: the per-packing companion (optional)
+  std::filesystem::path structure;        // companion structure table with f_m (optional)
   std::filesystem::path output = "law.prm";
   std::size_t replicates = 1000;
   std::uint64_t seed = 1;

@@ -126,6 +126,9 @@ Law read_law_file(const std::filesystem::path& file) {
     for (const char* name : {"yield", "yield error", "consistency", "consistency error", "exponent",
                              "exponent error", "correlation"})
       l.declare(prm, section + "/", name, q == Quantity::sigma);
+    if (q == Quantity::force)
+      for (const char* name : {"f_y", "f_y error", "k_f", "k_f error"})
+        l.declare(prm, section + "/", name, false);
     prm.leave_subsection();
   }
   prm.leave_subsection();
@@ -163,6 +166,12 @@ Law read_law_file(const std::filesystem::path& file) {
     hb.consistency = estimates(l, s + "consistency", law.phi.size(), source);
     hb.exponent = estimates(l, s + "exponent", law.phi.size(), source);
     hb.correlation = l(s + "correlation");
+  }
+  const std::string force = std::string(law_subsection(Quantity::force)) + "/";
+  if (!l(force + "f_y").empty() || !l(force + "k_f").empty()) {
+    law.force.emplace();
+    law.force->yield = estimates(l, force + "f_y", law.phi.size(), source);
+    law.force->slope = estimates(l, force + "k_f", law.phi.size(), source);
   }
   validate(law, source);
   return law;

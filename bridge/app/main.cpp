@@ -1,6 +1,7 @@
 // bridge: from simulated flow curves to the universal law and to materials.
 //
-//   bridge fit TABLE.csv [--packings RUNS.csv]    Herschel-Bulkley and universal-law fits
+//   bridge fit TABLE.csv [--packings RUNS.csv] [--structure STRUCTURE.csv]
+//                                                 Herschel-Bulkley and universal-law fits
 //   bridge material LAW.prm --phi … --modulus … --viscosity …
 //                                                 a material fragment for the continuum
 //   bridge rescale DATA.csv --viscosity … (--yield-strain … | --shear-modulus …)
@@ -59,6 +60,9 @@ int main(int argc, char** argv) {
   fit_cmd->add_option("--packings", fit.packings,
                       "its per-packing companion (CSV): errors from a packing bootstrap; without "
                       "it, a parametric bootstrap from the table's standard errors");
+  fit_cmd->add_option("--structure", fit.structure,
+                      "structure table (CSV: phi, gamma_tilde, f_m, f_m_se) for the force law, "
+                      "when the flow-curve table has no f_m columns");
   fit_cmd->add_option("-o,--output", fit.output, "law file (.prm); tables beside it")
       ->capture_default_str();
   fit_cmd->add_option("--bootstrap", fit.replicates, "bootstrap replicates")

@@ -77,6 +77,21 @@ void print_fit_report(const SweepAnalysis& a, const std::string& source) {
                with_error(v.yield_strain, e.yield_strain));
   }
 
+  if (a.sweep.present[index(Quantity::force)]) {
+    fmt::print(
+        "\nforce law f_m/(E* R^2) = f_y + k_f gamma~^(1/2)   (the paper's Fig. 3c; exponent "
+        "0.50 +- 0.02)\n");
+    fmt::print("  {:<6} {:>24} {:>24} {:>16}\n", "phi", "f_y", "k_f", "free exponent");
+    for (std::size_t j = 0; j < groups.size(); ++j) {
+      const GroupFit &v = a.estimate.fit.groups[j], &e = a.uncertainty.error.groups[j];
+      fmt::print("  {:<6} {:>24} {:>24} {:>16}\n", groups[j].phi,
+                 with_error(*v.force_yield, *e.force_yield),
+                 with_error(*v.force_slope, *e.force_slope),
+                 with_error(v.hb[index(Quantity::force)]->exponent,
+                            e.hb[index(Quantity::force)]->exponent));
+    }
+  }
+
   fmt::print(
       "\nuniversal laws, one constant for every volume fraction   this sweep      the paper\n");
   const std::tuple<Quantity, const char*, Estimate> rows[] = {

@@ -167,6 +167,51 @@ FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
   return table;
 }
 
+void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
+  const std::size_t force = index(Quantity::force);
+  if (table.present[force]) {
+    throw InputError(
+        fmt::format("{}: the flow-curve table {} has f_m columns already; give the "
+                    "structure once",
+                    csv.source(), table.source));
+  }
+  const Columns columns(csv);
+  const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
+                    value = columns.require(column_name(Quantity::force)),
+                    error = columns.require(std::string(column_name(Quantity::force)) + "_se");
+  // Rows are matched to state points as make_sweep groups them: φ and γ̃ equal
+  // to within a relative 1e-9 (both files print them from the same numbers).
+  const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); };
+  std::vector<std::size_t> from_line(table.points.size(), 0);
+  for (std::size_t r = 0; r < csv.rows(); ++r) {
+    const double p = columns.fraction(r, phi), g = columns.positive(r, rate);
+    const auto it =
+        std::find_if(table.points.begin(), table.points.end(),
+                     [&](const StatePoint& s) { return same(p, s.phi) && same(g, s.gamma_tilde); });
+    if (it == table.points.end()) {
+      throw InputError(fmt::format("{}, line {}: phi = {}, gamma~ = {} is not a state point of {}",
+                                   csv.source(), csv.line(r), p, g, table.source));
+    }
+    const auto i = static_cast<std::size_t>(it - table.points.begin());
+    if (from_line[i] != 0) {
+      throw InputError(fmt::format("{}, line {}: phi = {}, gamma~ = {} already on line {}",
+                                   csv.source(), csv.line(r), p, g, from_line[i]));
+    }
+    from_line[i] = csv.line(r);
+    it->values[force] = Estimate{columns.positive(r, value), columns.positive(r, error)};
+  }
+  for (std::size_t i = 0; i < table.points.size(); ++i) {
+    if (from_line[i] == 0) {
+      throw InputError(
+          fmt::format("{}: no row for phi = {}, gamma~ = {} ({}, line {}); the force "
+                      "law needs f_m at every state point",
+                      csv.source(), table.points[i].phi, table.points[i].gamma_tilde, table.source,
+                      table.points[i].line));
+    }
+  }
+  table.present[force] = true;
+}
+
 std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
   const Columns columns(csv);
   const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),

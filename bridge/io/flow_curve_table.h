@@ -9,7 +9,9 @@
 //
 // Beyond the documented columns, the bridge reads the optional structure
 // columns `f_m [E*R^2]` and `f_m_se [E*R^2]`: the elastic force at the radius of
-// maximum accumulation (Fig. 3c of the paper), for the force law.
+// maximum accumulation (Fig. 3c of the paper), for the force law. `micro
+// sweep` writes them into the table when its runs were analysed; structure
+// obtained otherwise comes as a companion structure table (merge_structure).
 #pragma once
 
 #include <array>
@@ -80,6 +82,13 @@ struct PackingRun {
 /// values, φ in (0, 1), γ̃ > 0, σ > 0, standard errors > 0, G0 > 0, whole
 /// packing counts ≥ 1, no state point twice. InputError names file, line, column.
 FlowCurveTable read_flow_curve_table(const CsvTable& csv);
+
+/// Adds the force at maximum accumulation from a structure table: columns
+/// `phi [1]`, `gamma_tilde [1]`, `f_m [E*R^2]`, `f_m_se [E*R^2]` (others, such
+/// as `r_m [R]`, ignored), one row per state point of `table`. InputError when
+/// `table` has f_m already, a row matches no state point, a state point has no
+/// row or two, or a value breaks the table's rules.
+void merge_structure(FlowCurveTable& table, const CsvTable& csv);
 
 /// Reads and checks the per-packing companion (same rules, `seed [1]` instead
 /// of `packings [1]`, no standard errors needed).

@@ -37,6 +37,14 @@ Law make_law(const SweepAnalysis& a, std::vector<std::string> provenance) {
       hb.correlation.push_back(*a.uncertainty.log_consistency_exponent_correlation[j][index(q)]);
     }
   }
+  if (a.sweep.present[index(Quantity::force)]) {
+    ForceLaw& force = law.force.emplace();
+    for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+      const GroupFit &v = value.groups[j], &e = error.groups[j];
+      force.yield.push_back({*v.force_yield, *e.force_yield});
+      force.slope.push_back({*v.force_slope, *e.force_slope});
+    }
+  }
   for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2})
     if (value.k[index(q)]) law.k[index(q)] = Estimate{*value.k[index(q)], *error.k[index(q)]};
   law.mean_exponent = {value.mean_exponent, error.mean_exponent};
@@ -102,6 +110,14 @@ void validate(const Law& law, const std::string& source) {
         throw InputError(fmt::format("{}: {}/correlation = {} outside [-1, 1]", source, name,
                                      hb.correlation[j]));
       }
+    }
+  }
+  if (law.force) {
+    require_size(law.force->yield.size(), n, source, "f_m/f_y");
+    require_size(law.force->slope.size(), n, source, "f_m/k_f");
+    for (std::size_t j = 0; j < n; ++j) {
+      require_finite(law.force->yield[j], source, "f_m/f_y");
+      require_finite(law.force->slope[j], source, "f_m/k_f");
     }
   }
   const HbLaw& sigma = *law.hb[index(Quantity::sigma)];

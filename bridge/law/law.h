@@ -9,10 +9,13 @@
 // consistency is the value at γ̃ = 1, far outside the data, so its error is
 // mostly the exponent's; the correlation lets `material` propagate both into
 // K = E* k (η_s/E*)^m without counting that error twice).
+// With structure data, also the force law f_m = f_y + k_f γ̃^½ per volume
+// fraction (in subsection f_m, beside the free-exponent fit).
 // Over all volume fractions: the universal constants k, k′, k″ and the mean
 // exponent.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,11 +29,17 @@ struct HbLaw {
   std::vector<double> correlation;                     // corr(ln|consistency|, exponent)
 };
 
+/// f_m = f_y + k_f γ̃^½, in E* R², per volume fraction.
+struct ForceLaw {
+  std::vector<Estimate> yield, slope;
+};
+
 struct Law {
   std::vector<double> phi;  // increasing
   double gamma_tilde_min = 0.0, gamma_tilde_max = 0.0;
   std::vector<Estimate> modulus, yield_strain;  // per volume fraction
   PerQuantity<HbLaw> hb;                        // sigma always
+  std::optional<ForceLaw> force;                // with structure data
   PerQuantity<Estimate> k;                      // sigma: k, N1: k′, N2: k″
   Estimate mean_exponent;
   std::vector<std::string> provenance;  // comment lines, without '#'

@@ -83,6 +83,11 @@ std::string law_text(const Law& law) {
     out += "    # correlation of ln|consistency| and exponent over the bootstrap replicates\n";
     set(out, "    ", "correlation",
         list(hb->correlation, [](double r) { return fmt::format("{:.4f}", r); }));
+    if (q == Quantity::force && law.force) {
+      out += "    # the paper's force law f_m = f_y + k_f gamma~^(1/2), exponent fixed at 1/2\n";
+      estimates(out, "    ", "f_y", law.force->yield);
+      estimates(out, "    ", "k_f", law.force->slope);
+    }
     out += "  end\n";
   }
   out += "end\n";

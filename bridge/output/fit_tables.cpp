@@ -45,6 +45,10 @@ std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& co
     header.push_back(column(q, "universal_yield", u));
     header.push_back(column(q, "universal_yield_se", u));
   }
+  if (has(a, Quantity::force)) {
+    for (const char* name : {"f_y [E*R^2]", "f_y_se [E*R^2]", "k_f [E*R^2]", "k_f_se [E*R^2]"})
+      header.push_back(name);
+  }
   CsvWriter w(comments, header);
   for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
     const GroupFit &v = a.estimate.fit.groups[j], &e = a.uncertainty.error.groups[j];
@@ -60,6 +64,8 @@ std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& co
       w << *v.own_k[index(q)] << *e.own_k[index(q)] << *v.universal_yield[index(q)]
         << *e.universal_yield[index(q)];
     }
+    if (has(a, Quantity::force))
+      w << *v.force_yield << *e.force_yield << *v.force_slope << *e.force_slope;
     w.end_row();
   }
   return w.text();

@@ -56,10 +56,14 @@ struct GroupRuns {
   std::vector<double> moduli;  // one per distinct packing
 };
 
+// `redrawn[q]`: the runs hold quantity q (packing redraws); otherwise its values
+// are Gaussian redraws with the smoothed standard errors, as in the parametric
+// bootstrap (f_m from a structure table has no per-run values).
 class PackingResampler : public Resampler {
  public:
-  PackingResampler(const Sweep& sweep, std::vector<GroupRuns> runs)
-      : sweep_(sweep), runs_(std::move(runs)) {}
+  PackingResampler(const Sweep& sweep, std::vector<GroupRuns> runs,
+                   std::array<bool, kQuantities> redrawn)
+      : sweep_(sweep), runs_(std::move(runs)), redrawn_(redrawn) {}
 
   Sweep draw(std::mt19937_64& rng) const override {
     Sweep replicate = sweep_;
@@ -71,19 +75,28 @@ class PackingResampler : public Resampler {
         if (!g.curves[index(q)]) continue;
         Curve& curve = *g.curves[index(q)];
         const Curve& original = *sweep_.groups[j].curves[index(q)];
-        for (std::size_t i = 0; i < curve.size(); ++i)
-          curve.y[i] = redraw_mean(*r.points[i][index(q)], original.y[i], rng);
+        std::normal_distribution<double> normal;
+        for (std::size_t i = 0; i < curve.size(); ++i) {
+          curve.y[i] = redrawn_[index(q)] ? redraw_mean(*r.points[i][index(q)], original.y[i], rng)
+                                          : original.y[i] + original.se[i] * normal(rng);
+        }
       }
     }
     return replicate;
   }
   std::string description() const override {
-    return "packing bootstrap: packings redrawn with replacement at every state point";
+    std::string text = "packing bootstrap: packings redrawn with replacement at every state point";
+    for (Quantity q : kAllQuantities) {
+      if (sweep_.present[index(q)] && !redrawn_[index(q)])
+        text += fmt::format(" ({}: Gaussian redraws, no per-run values)", column_name(q));
+    }
+    return text;
   }
 
  private:
   Sweep sweep_;
   std::vector<GroupRuns> runs_;
+  std::array<bool, kQuantities> redrawn_;
 };
 
 // The index of γ̃ in a group's rates, or size().
@@ -108,6 +121,23 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
   for (std::size_t j = 0; j < sweep.groups.size(); ++j)
     groups[j].points.resize(sweep.groups[j].lines.size());
 
+  // Quantities the runs hold: the same for every run (one header).
+  std::array<bool, kQuantities> redrawn{};
+  for (Quantity q : kAllQuantities) {
+    redrawn[index(q)] = !runs.empty() && runs.front().values[index(q)].has_value();
+    if (redrawn[index(q)] && !sweep.present[index(q)]) {
+      throw InputError(
+          fmt::format("{}: column '{}' is not in the flow-curve table", source, column_name(q)));
+    }
+  }
+  if (!redrawn[index(Quantity::sigma)]) throw InputError(source + ": column 'sigma' is missing");
+  for (Quantity q : {Quantity::N1, Quantity::N2}) {
+    if (sweep.present[index(q)] && !redrawn[index(q)]) {
+      throw InputError(
+          fmt::format("{}: column '{}' is in the flow-curve table only", source, column_name(q)));
+    }
+  }
+
   for (const PackingRun& run : runs) {
     const std::size_t j = find_group(sweep, run.phi);
     const std::size_t i = j < sweep.groups.size() ? find_rate(sweep.groups[j], run.gamma_tilde) : 0;
@@ -118,11 +148,7 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
                       source, run.line, run.phi, run.gamma_tilde));
     }
     for (Quantity q : kAllQuantities) {
-      if (sweep.present[index(q)] != run.values[index(q)].has_value()) {
-        throw InputError(fmt::format("{}: column '{}' is in one of the two tables only", source,
-                                     column_name(q)));
-      }
-      if (!run.values[index(q)]) continue;
+      if (!redrawn[index(q)]) continue;
       auto& samples = groups[j].points[i][index(q)];
       if (!samples) samples.emplace();
       samples->push_back(*run.values[index(q)]);
@@ -142,7 +168,7 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
             source, k, g.phi, g.curves[index(Quantity::sigma)]->x[i], g.lines[i], g.packings[i]));
       }
       for (Quantity q : kAllQuantities) {
-        if (!g.curves[index(q)]) continue;
+        if (!redrawn[index(q)]) continue;
         const Curve& c = *g.curves[index(q)];
         const double m = mean(*groups[j].points[i][index(q)]);
         if (std::abs(m - c.y[i]) > 0.01 * c.se[i]) {
@@ -161,7 +187,7 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
                       source, g.phi, groups[j].moduli.size()));
     }
   }
-  return std::make_unique<PackingResampler>(sweep, std::move(groups));
+  return std::make_unique<PackingResampler>(sweep, std::move(groups), redrawn);
 }
 
 }  // namespace softglass::bridge

@@ -73,6 +73,15 @@ SweepFitOutcome fit_sweep(const Sweep& sweep) {
     }
   }
 
+  if (sweep.present[index(Quantity::force)]) {
+    for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
+      const SquareRootLaw law =
+          fit_square_root_law(*sweep.groups[j].curves[index(Quantity::force)]);
+      fit.groups[j].force_yield = law.intercept;
+      fit.groups[j].force_slope = law.slope;
+    }
+  }
+
   double sum = 0.0;
   for (const GroupFit& f : fit.groups) sum += f.hb[index(Quantity::sigma)]->exponent;
   fit.mean_exponent = sum / static_cast<double>(fit.groups.size());

@@ -5,7 +5,9 @@
 //   - Herschel–Bulkley fits Q = Q_y + k_Q γ̃^m of σ, N1, N2 and f_m (those present);
 //   - the yield strain γ_y = σ_y/G0 from the σ fit;
 //   - the φ's own universal constant from its m = ½ law Q = a + c √γ̃:
-//     c/G0 for σ, c γ_y/a for N1 and N2 (a check of universality, φ by φ).
+//     c/G0 for σ, c γ_y/a for N1 and N2 (a check of universality, φ by φ);
+//   - with structure data, the paper's force law f_m = f_y + k_f γ̃^½ (its
+//     Fig. 3c; exponent fixed at ½, the free exponent being the HB fit's).
 // Over all φ:
 //   - the universal laws (fit/universal_law.h): k for σ, k′ for N1, k″ for N2,
 //     with the yield values they imply per φ;
@@ -16,6 +18,7 @@
 #include <fmt/format.h>
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +38,7 @@ struct GroupFit {
   PerQuantity<double> own_k;             // sigma, N1, N2: this φ's own universal constant
   PerQuantity<double> universal_yield;   // sigma, N1, N2: the yield values of the universal fits
   double universal_yield_strain = kNaN;  // σ_y/G0 with the universal fit's σ_y
+  std::optional<double> force_yield, force_slope;  // f_y and k_f of the m = ½ force law
 };
 
 struct SweepFit {
@@ -74,6 +78,8 @@ void visit_scalars(Fit& fit, F&& f) {
       if (auto& own = g.own_k[index(q)]) f(name + "own k", *own);
       if (auto& yield = g.universal_yield[index(q)]) f(name + "universal yield", *yield);
     }
+    if (auto& y = g.force_yield) f(at + "force law f_y", *y);
+    if (auto& k = g.force_slope) f(at + "force law k_f", *k);
     f(at + "yield strain", g.yield_strain);
     f(at + "universal yield strain", g.universal_yield_strain);
   }

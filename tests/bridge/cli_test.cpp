@@ -141,5 +141,123 @@ TEST_F(BridgeCli, RescaleWritesPointsAndCurves) {
   EXPECT_EQ(mixed.code, 2) << "a reduced table is not a measured curve";
 }
 
+// Bad input to each subcommand: exit code 2, one message naming the problem,
+// and no result file (not even a partial or temporary one).
+TEST_F(BridgeCli, BadInputIsRefusedWithExitCodeTwoAndNoOutput) {
+  const std::string sweep = testing::read_text(work() / "sweep.csv");
+  const auto edited = [&](const std::string& from, const std::string& to) {
+    std::string text = sweep;
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+  };
+  testing::SyntheticTruth few;
+  few.gamma_tilde = {1e-8, 1e-7, 1e-6};
+  testing::SyntheticTruth fluid;
+  fluid.yield_strain[2] = 1e-6;  // φ = 0.80 without yield stress
+  const std::string curve = "Shear rate [1/s],Stress [Pa]\n";
+  const struct {
+    std::string file, text, arguments;
+    std::vector<std::string> message;
+  } cases[] = {
+      {"ragged.csv",
+       edited("\n0.7,1.000000e-09,5,", "\n0.7,1.000000e-09,"),
+       "fit ragged.csv",
+       {"ragged.csv, line 3", "cells where the header has"}},
+      {"nan.csv",
+       edited(",5,1.2868314229e-03", ",5,nan"),
+       "fit nan.csv",
+       {"nan.csv, line 3", "'sigma [E*]'", "not finite"}},
+      {"negative.csv",
+       edited(",5,1.2868314229e-03", ",5,-1.2868314229e-03"),
+       "fit negative.csv",
+       {"line 3", "must be > 0"}},
+      {"pascals.csv",
+       edited("N1 [E*],", "N1 [Pa],"),
+       "fit pascals.csv",
+       {"'N1 [Pa]'", "expected 'E*'"}},
+      {"few.csv",
+       testing::table_csv(testing::make_synthetic_sweep(few, 1)),
+       "fit few.csv",
+       {"phi = 0.7 has 3 shear rate(s)", "at least 4"}},
+      {"fluid.csv",
+       testing::table_csv(testing::make_synthetic_sweep(fluid, 1)),
+       "fit fluid.csv --bootstrap 20",
+       {"phi = 0.8, sigma", "no yield plateau"}},
+      {"", "", "fit absent.csv", {"'absent.csv' does not exist"}},
+      {"structure.csv",
+       "phi [1],gamma_tilde [1],f_m [E*R^2],f_m_se [E*R^2]\n0.7,1e-9,0.01,1e-4\n",
+       "fit sweep.csv --structure structure.csv",
+       {"f_m columns already"}},
+      {"c_nan.csv",
+       curve + "0.01,10\n0.1,nan\n1,12\n10,15\n",
+       "rescale c_nan.csv",
+       {"c_nan.csv, line 3", "not finite"}},
+      {"c_negative.csv",
+       curve + "0.01,10\n0.1,-11\n1,12\n10,15\n",
+       "rescale c_negative.csv",
+       {"line 3", "must be > 0"}},
+      {"c_few.csv",
+       curve + "0.01,10\n0.1,11\n1,12\n",
+       "rescale c_few.csv",
+       {"3 point(s)", "at least 4"}},
+      {"c_fluid.csv",
+       curve + "0.01,0.1\n0.1,1\n1,10\n10,100\n100,1000\n",
+       "rescale c_fluid.csv",
+       {"no yield plateau", "--yield-stress"}},
+      {"c_mixed.csv",
+       "Shear rate [1/s],Stress [E*]\n0.01,10\n0.1,11\n1,12\n10,15\n",
+       "rescale c_mixed.csv",
+       {"'E*' is not a stress unit"}},
+      {"c_ragged.csv",
+       curve + "0.01,10\n0.1\n1,12\n10,15\n",
+       "rescale c_ragged.csv",
+       {"line 3", "1 cells where the header has 2"}},
+      {"", "", "rescale absent.csv", {"'absent.csv' does not exist"}},
+      {"law.prm",
+       "subsection law\n  set colour = red\nend\n",
+       "material law.prm --phi 0.8 --modulus 4e4 --viscosity 1e-3 -o material.prm",
+       {"colour"}},
+  };
+  for (const auto& c : cases) {
+    if (!c.file.empty()) testing::write_text(work() / c.file, c.text);
+    std::string arguments = c.arguments + " --quiet";
+    if (c.arguments.starts_with("rescale"))
+      arguments = c.arguments + " --viscosity 1e-3 --yield-strain 0.03";
+    if (c.arguments.starts_with("material")) arguments = c.arguments;
+    const std::vector<std::string> before = files();
+    const Outcome o = bridge(arguments);
+    EXPECT_EQ(o.code, 2) << arguments << ": " << o.err;
+    for (const std::string& part : c.message) expect_contains(o.err, {part});
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
+    EXPECT_EQ(files(), before) << arguments << " left files behind";
+    if (!c.file.empty()) fs::remove(work() / c.file);
+  }
+}
+
+// Every subcommand refuses to replace its results without --force (exit code
+// 3) and leaves them untouched.
+TEST_F(BridgeCli, ExistingResultsAreKeptWithoutForce) {
+  testing::write_text(work() / "data.csv",
+                      "Shear rate [1/s],Stress [Pa]\n0.001,100.6\n0.01,101.9\n"
+                      "0.1,106.0\n1,118.9\n10,159.6\n100,288.4\n");
+  ASSERT_EQ(bridge(kFit).code, 0);
+  const std::string material = "material law.prm --phi 0.8 --modulus 4e4 --viscosity 1e-3 -o m.prm";
+  const std::string rescale = "rescale data.csv --viscosity 1e-3 --yield-strain 0.03 -o r.csv";
+  ASSERT_EQ(bridge(material).code, 0);
+  ASSERT_EQ(bridge(rescale).code, 0);
+  for (const std::string& command : {material, rescale}) {
+    const std::vector<std::string> before = files();
+    const std::string output = command.ends_with("m.prm") ? "m.prm" : "r.csv";
+    const std::string text = testing::read_text(work() / output);
+    const Outcome o = bridge(command);
+    EXPECT_EQ(o.code, 3) << command;
+    expect_contains(o.err, {output, "--force"});
+    EXPECT_EQ(testing::read_text(work() / output), text);
+    EXPECT_EQ(files(), before);
+    EXPECT_EQ(bridge(command + " --force").code, 0);
+  }
+}
+
 }  // namespace
 }  // namespace softglass::bridge

@@ -60,13 +60,15 @@ TEST(Coverage, ReportedErrorsCoverTheTruthAboutTwoThirdsOfTheTime) {
       stress.add(v.hb[0]->yield, e.hb[0]->yield, t.sigma_yield(j));
       stress.add(v.hb[0]->consistency, e.hb[0]->consistency, t.k * t.modulus[j]);
       stress.add(v.hb[0]->exponent, e.hb[0]->exponent, 0.5);
-      Tally& others = tallies["N1, N2, f_m: yield, exponent"];
+      Tally& others = tallies["N1, N2, f_m: yield, exponent; f_y, k_f"];
       for (Quantity q : {Quantity::N1, Quantity::N2}) {
         others.add(v.hb[index(q)]->yield, e.hb[index(q)]->yield, t.normal_yield(j, q));
         others.add(v.hb[index(q)]->exponent, e.hb[index(q)]->exponent, 0.5);
       }
       others.add(v.hb[3]->yield, e.hb[3]->yield, t.force_yield * t.modulus[j]);
       others.add(v.hb[3]->exponent, e.hb[3]->exponent, 0.5);
+      others.add(*v.force_yield, *e.force_yield, t.force_yield * t.modulus[j]);
+      others.add(*v.force_slope, *e.force_slope, t.force_slope * t.modulus[j]);
       Tally& modulus = tallies["G0, gamma_y (t with 4 dof)"];
       modulus.add(v.modulus, e.modulus, t.modulus[j]);
       modulus.add(v.yield_strain, e.yield_strain, t.yield_strain[j]);
@@ -81,7 +83,8 @@ TEST(Coverage, ReportedErrorsCoverTheTruthAboutTwoThirdsOfTheTime) {
   // the binomial one; the 0.02 margin covers it.
   expect_coverage(tallies["sigma: yield, consistency, exponent"], 0.683,
                   "sigma: yield, consistency, exponent");
-  expect_coverage(tallies["N1, N2, f_m: yield, exponent"], 0.683, "N1, N2, f_m: yield, exponent");
+  expect_coverage(tallies["N1, N2, f_m: yield, exponent; f_y, k_f"], 0.683,
+                  "N1, N2, f_m: yield, exponent; f_y, k_f");
   expect_coverage(tallies["G0, gamma_y (t with 4 dof)"], 0.626, "G0, gamma_y (t with 4 dof)");
   expect_coverage(tallies["k, k', k''"], 0.683, "k, k', k''");
 }

@@ -142,7 +142,7 @@ TEST(FlowCurveTable, RefusesCompanionsThatDoNotMatchTheTable) {
 
   std::vector<PackingRun> no_n1 = s.runs;
   for (PackingRun& r : no_n1) r.values[index(Quantity::N1)].reset();
-  expect_contains(refusal_of(no_n1), {"'N1'", "one of the two tables"});
+  expect_contains(refusal_of(no_n1), {"'N1'", "flow-curve table only"});
 
   // Read from CSV, the companion needs its seed column.
   const std::string text = testing::runs_csv(s);
@@ -158,6 +158,57 @@ TEST(FlowCurveTable, RefusesAPackingBootstrapOverASinglePacking) {
   testing::SyntheticSweep s = testing::make_synthetic_sweep(truth, 1);
   for (PackingRun& r : s.runs) r.seed = 1;  // both runs of every point from one packing
   EXPECT_THROW(make_packing_resampler(make_sweep(s.table), s.runs, "runs.csv"), InputError);
+}
+
+// Structure from a companion table: merged into the state points, refused when
+// it does not match them or when the table has structure columns already.
+TEST(FlowCurveTable, MergesACompanionStructureTable) {
+  const testing::SyntheticSweep with = testing::make_synthetic_sweep({}, 1);
+  const std::string structure = testing::structure_csv(with);
+  const testing::SyntheticSweep without = testing::without_structure(with);
+  // Both tables as read from their files, with the precision the files carry.
+  const FlowCurveTable bare = parse_table(testing::table_csv(without)),
+                       full = parse_table(testing::table_csv(with));
+  const auto merged = [&](const std::string& text) {
+    FlowCurveTable table = bare;
+    merge_structure(table, CsvTable::parse(text, "structure.csv"));
+    return table;
+  };
+  const FlowCurveTable table = merged(structure);
+  ASSERT_TRUE(table.present[index(Quantity::force)]);
+  for (std::size_t i = 0; i < table.points.size(); ++i) {
+    const Estimate &got = *table.points[i].values[index(Quantity::force)],
+                   &want = *full.points[i].values[index(Quantity::force)];
+    EXPECT_NEAR(got.value, want.value, 1e-9 * want.value);
+    EXPECT_NEAR(got.error, want.error, 1e-6 * want.error);
+  }
+  // The packing bootstrap redraws f_m from its standard errors, the rest by packing.
+  const Sweep sweep = make_sweep(table);
+  const auto resampler = make_packing_resampler(
+      sweep, read_packing_runs(CsvTable::parse(testing::runs_csv(without), "runs.csv")),
+      "runs.csv");
+  expect_contains(resampler->description(), {"packing bootstrap", "f_m: Gaussian redraws"});
+
+  const auto refusal_of = [&](const std::string& text, FlowCurveTable target) -> std::string {
+    try {
+      merge_structure(target, CsvTable::parse(text, "structure.csv"));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "structure accepted";
+    return "";
+  };
+  expect_contains(refusal_of(structure, full), {"f_m columns already"});
+  const std::string last_row = structure.substr(structure.rfind('\n', structure.size() - 2) + 1);
+  expect_contains(refusal_of(structure.substr(0, structure.size() - last_row.size()), bare),
+                  {"no row for phi = 0.9", "every state point"});
+  expect_contains(refusal_of(structure + last_row, bare), {"already on line"});
+  std::string stray = structure;
+  stray.replace(stray.find("\n0.7,1.000000e-09"), 17, "\n0.7,2.000000e-09");
+  expect_contains(refusal_of(stray, bare), {"structure.csv, line 3", "not a state point"});
+  std::string pascals = structure;
+  pascals.replace(pascals.find("f_m [E*R^2]"), 11, "f_m [N]");
+  expect_contains(refusal_of(pascals, bare), {"'f_m [N]'", "expected 'E*R^2'"});
 }
 
 }  // namespace

@@ -52,6 +52,9 @@ TEST(SweepAnalysis, RecoversTheSyntheticParametersWithinTheirErrors) {
     }
     expect_within(g.hb[3]->yield, s.hb[3]->yield, t.force_yield * t.modulus[j], at + " f_y");
     expect_within(g.hb[3]->exponent, s.hb[3]->exponent, 0.5, at + " f m");
+    expect_within(*g.force_yield, *s.force_yield, t.force_yield * t.modulus[j],
+                  at + " f_y (m = 1/2)");
+    expect_within(*g.force_slope, *s.force_slope, t.force_slope * t.modulus[j], at + " k_f");
   }
   expect_within(*v.k[0], *e.k[0], t.k, "k");
   expect_within(*v.k[1], *e.k[1], t.k_N1, "k'");

@@ -136,4 +136,22 @@ std::string runs_csv(const SyntheticSweep& s) {
   return text;
 }
 
+std::string structure_csv(const SyntheticSweep& s) {
+  std::string text =
+      "# synthetic structure, one row per state point\nphi [1],gamma_tilde [1],f_m [E*R^2],"
+      "f_m_se [E*R^2]\n";
+  for (const StatePoint& p : s.table.points) {
+    const Estimate& f = *p.values[index(Quantity::force)];
+    text += fmt::format("{},{:.6e},{:.10e},{:.6e}\n", p.phi, p.gamma_tilde, f.value, f.error);
+  }
+  return text;
+}
+
+SyntheticSweep without_structure(SyntheticSweep s) {
+  s.table.present[index(Quantity::force)] = false;
+  for (StatePoint& p : s.table.points) p.values[index(Quantity::force)].reset();
+  for (PackingRun& r : s.runs) r.values[index(Quantity::force)].reset();
+  return s;
+}
+
 }  // namespace softglass::bridge::testing

@@ -51,5 +51,9 @@ SyntheticSweep make_synthetic_sweep(const SyntheticTruth& truth, std::uint64_t s
 /// The sweep as the two CSV files of docs/flow-curve-format.md.
 std::string table_csv(const SyntheticSweep& sweep);
 std::string runs_csv(const SyntheticSweep& sweep);
+/// Its f_m as a companion structure table (phi, gamma_tilde, f_m, f_m_se).
+std::string structure_csv(const SyntheticSweep& sweep);
+/// The sweep with the structure columns taken out of both tables.
+SyntheticSweep without_structure(SyntheticSweep sweep);
 
 }  // namespace softglass::bridge::testing
