@@ -1,0 +1,104 @@
+// `macro run` from the outside: exit codes and messages for bad input and for
+// existing output (common/errors.h), and a complete run of a small scene.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class MacroCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("macro_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    write("material.prm",
+          "subsection material\n set model = herschel-bulkley\n set yield stress = 10\n"
+          " set consistency = 5\n set flow index = 0.5\nend\n");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
+
+  // Runs `macro run <scene> -o <dir>/out -q <extra>`; returns the exit code and
+  // keeps stderr in error_.
+  int run(const std::string& scene_text, const std::string& extra = "") {
+    write("scene.prm", scene_text);
+    const fs::path err = dir_ / "stderr.txt";
+    const std::string command = std::string(MACRO_EXECUTABLE) + " run " + (dir_ / "scene.prm").string() +
+                                " -o " + (dir_ / "out").string() + " -q " + extra + " 2> " + err.string();
+    const int status = std::system(command.c_str());
+    std::stringstream text;
+    text << std::ifstream(err).rdbuf();
+    error_ = text.str();
+    return WEXITSTATUS(status);
+  }
+
+  static std::string couette(const std::string& extra) {
+    return "set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius = 0.02\n"
+           " set outer radius = 0.03\n" + extra + "end\nsubsection sweep\n set values = 0.1, 1\nend\n";
+  }
+
+  fs::path dir_;
+  std::string error_;
+};
+
+TEST_F(MacroCli, RunsAndWritesResults) {
+  ASSERT_EQ(run(couette("")), 0) << error_;
+  std::ifstream csv(dir_ / "out" / "results.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(csv, line))
+    if (!line.empty() && line[0] != '#') ++rows;
+  EXPECT_EQ(rows, 3);  // header + 2 operating points
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.txt"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "solution_001.vtu"));
+}
+
+TEST_F(MacroCli, ExistingOutputNeedsForce) {
+  ASSERT_EQ(run(couette("")), 0) << error_;
+  EXPECT_EQ(run(couette("")), 3);
+  EXPECT_EQ(run(couette(""), "--force"), 0) << error_;
+}
+
+TEST_F(MacroCli, UnknownKeyIsNamed) {
+  EXPECT_EQ(run(couette(" set inner radios = 0.02\n")), 2);
+  EXPECT_NE(error_.find("inner radios"), std::string::npos) << error_;
+}
+
+TEST_F(MacroCli, UnitsAfterNumbersAreRejected) {
+  EXPECT_EQ(run(couette(" set length = 50 mm\n")), 2);
+  EXPECT_NE(error_.find("length"), std::string::npos) << error_;
+}
+
+TEST_F(MacroCli, NonPhysicalValuesAreNamed) {
+  EXPECT_EQ(run(couette(" set length = -1\n")), 2);
+  EXPECT_NE(error_.find("couette: length = -1"), std::string::npos) << error_;
+  EXPECT_EQ(run("set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius = 0.03\n"
+                " set outer radius = 0.02\nend\n"),
+            2);
+  EXPECT_NE(error_.find("outer radius"), std::string::npos) << error_;
+}
+
+TEST_F(MacroCli, UnreadableMeshIsNamed) {
+  write("broken.msh", "this is not a mesh\n");
+  EXPECT_EQ(run("set scene = duct\ninclude material.prm\nsubsection duct\n set section = gmsh\n"
+                " set mesh file = broken.msh\nend\n"),
+            2);
+  EXPECT_NE(error_.find("broken.msh"), std::string::npos) << error_;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "results.csv"));
+}
+
+TEST_F(MacroCli, MissingIncludeIsNamed) {
+  EXPECT_EQ(run("set scene = couette\ninclude nowhere.prm\n"), 2);
+  EXPECT_NE(error_.find("nowhere.prm"), std::string::npos) << error_;
+}
+
+}  // namespace
