@@ -17,13 +17,14 @@ double mean(const std::vector<double>& v) {
 }
 
 // A bias-corrected bootstrap mean of `samples` centred on `centre` (see the header).
-double redraw_mean(const std::vector<double>& samples, double centre, std::mt19937_64& rng) {
+double redraw_mean(const std::vector<double>& samples, double centre, std::mt19937_64& rng,
+                   double scale = 1.0) {
   const std::size_t k = samples.size();
   std::uniform_int_distribution<std::size_t> pick(0, k - 1);
   double sum = 0.0;
   for (std::size_t i = 0; i < k; ++i) sum += samples[pick(rng)];
   const double kd = static_cast<double>(k);
-  return centre + std::sqrt(kd / (kd - 1.0)) * (sum / kd - mean(samples));
+  return centre + scale * std::sqrt(kd / (kd - 1.0)) * (sum / kd - mean(samples));
 }
 
 class ParametricResampler : public Resampler {
@@ -77,8 +78,11 @@ class PackingResampler : public Resampler {
         const Curve& original = *sweep_.groups[j].curves[index(q)];
         std::normal_distribution<double> normal;
         for (std::size_t i = 0; i < curve.size(); ++i) {
-          curve.y[i] = redrawn_[index(q)] ? redraw_mean(*r.points[i][index(q)], original.y[i], rng)
-                                          : original.y[i] + original.se[i] * normal(rng);
+          curve.y[i] =
+              redrawn_[index(q)]
+                  ? redraw_mean(*r.points[i][index(q)], original.y[i], rng,
+                                original.se[i] / (*sweep_.groups[j].table_errors[index(q)])[i])
+                  : original.y[i] + original.se[i] * normal(rng);
         }
       }
     }

@@ -28,10 +28,13 @@ namespace softglass::bridge {
 namespace {
 
 struct Tally {
-  int covered = 0, trials = 0;
+  int covered = 0, trials = 0, beyond_two = 0, beyond_three = 0;
   void add(double estimate, double error, double truth) {
     ++trials;
-    if (std::abs(estimate - truth) <= error) ++covered;
+    const double z = std::abs(estimate - truth) / error;
+    if (z <= 1) ++covered;
+    if (z > 2) ++beyond_two;
+    if (z > 3) ++beyond_three;
   }
   double fraction() const { return double(covered) / trials; }
 };
@@ -39,8 +42,11 @@ struct Tally {
 void expect_coverage(const Tally& t, double expected, const std::string& what) {
   const double sd = std::sqrt(expected * (1 - expected) / t.trials);
   const double band = 4 * sd + 0.02;
-  std::printf("coverage %-40s %.3f over %d trials (expected %.3f ± %.3f)\n", what.c_str(),
-              t.fraction(), t.trials, expected, band);
+  std::printf(
+      "coverage %-40s %.3f over %d trials (expected %.3f ± %.3f); beyond 2 SE %.3f, "
+      "beyond 3 SE %.4f\n",
+      what.c_str(), t.fraction(), t.trials, expected, band, double(t.beyond_two) / t.trials,
+      double(t.beyond_three) / t.trials);
   ::testing::Test::RecordProperty("coverage " + what, std::to_string(t.fraction()));
   EXPECT_NEAR(t.fraction(), expected, band) << what;
 }
