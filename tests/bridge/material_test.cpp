@@ -1,7 +1,6 @@
 // `bridge material`: reduced laws to SI units, interpolation in φ with its
-// error, refusal outside the simulated range, and a fragment that obeys
-// docs/material-format.md (read back with ParameterHandler, as macro will).
-#include <deal.II/base/parameter_handler.h>
+// error, refusal outside the simulated range (the fragment itself is read back
+// in material_fragment_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,38 +16,12 @@ namespace {
 
 using testing::expect_contains;
 
-// The synthetic truth as a law, exactly (no fit), with given errors.
-Law exact_law(const testing::SyntheticTruth& t = {}) {
-  Law law;
-  law.phi = t.phi;
-  law.gamma_tilde_min = t.gamma_tilde.front();
-  law.gamma_tilde_max = t.gamma_tilde.back();
-  for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) law.hb[index(q)].emplace();
-  for (std::size_t j = 0; j < t.phi.size(); ++j) {
-    law.modulus.push_back({t.modulus[j], 0.03 * t.modulus[j]});
-    law.yield_strain.push_back({t.yield_strain[j], 0.03 * t.yield_strain[j]});
-    for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) {
-      const double yield = t.value(j, q, 0.0);
-      const double slope = (t.value(j, q, 1e-4) - yield) / std::sqrt(1e-4);
-      HbLaw& hb = *law.hb[index(q)];
-      hb.yield.push_back({yield, 0.01 * std::abs(yield)});
-      hb.consistency.push_back({slope, 0.1 * std::abs(slope)});
-      hb.exponent.push_back({0.5, 0.01});
-      hb.correlation.push_back(0.99);
-    }
-  }
-  law.k[0] = Estimate{t.k, 1.0};
-  law.mean_exponent = {0.5, 0.001};
-  validate(law, "exact");
-  return law;
-}
-
 // The paper's emulsion: E* = 40 kPa, η_s = 1 mPa s, φ = 0.80.
 constexpr double kModulus = 40e3, kViscosity = 1e-3;
 
 TEST(Material, ConvertsTheLawToSIUnitsAtASimulatedVolumeFraction) {
   const testing::SyntheticTruth t;
-  const Material m = make_material(exact_law(t), {0.80, kModulus, kViscosity, false});
+  const Material m = make_material(testing::exact_law(t), {0.80, kModulus, kViscosity, false});
   const MaterialLaw& shear = *m.laws[index(Quantity::sigma)];
   // τ_y = E* G0 γ_y = 40e3 × 0.085 × 0.029 = 98.6 Pa; K = E* k G0 (η_s/E*)^½ = 43.0 Pa s^½.
   EXPECT_NEAR(shear.yield.value, kModulus * 0.085 * 0.029, 1e-9);
@@ -66,7 +39,7 @@ TEST(Material, ConvertsTheLawToSIUnitsAtASimulatedVolumeFraction) {
 
 // var ln K = (s_k/k)² + L² s_m² + 2 L ρ (s_k/k) s_m with L = ln(η_s/E*).
 TEST(Material, PropagatesTheConsistencyExponentCorrelation) {
-  Law law = exact_law();
+  Law law = testing::exact_law({});
   const double L = std::log(kViscosity / kModulus);
   for (const double rho : {0.99, 0.0, -0.5}) {
     for (double& r : law.hb[0]->correlation) r = rho;
@@ -103,14 +76,14 @@ TEST(Material, InterpolatesBetweenVolumeFractionsInLogarithm) {
     t.modulus[j] = 0.01 * std::exp(10 * (t.phi[j] - 0.7));
     t.yield_strain[j] = 0.03;
   }
-  const Material m = make_material(exact_law(t), {0.78, kModulus, kViscosity, false});
+  const Material m = make_material(testing::exact_law(t), {0.78, kModulus, kViscosity, false});
   EXPECT_NEAR(m.laws[0]->yield.value, kModulus * 0.03 * 0.01 * std::exp(10 * 0.08), 1e-9);
   EXPECT_LT(m.laws[0]->yield.interpolation, 1e-9 * m.laws[0]->yield.value);
   expect_contains(m.placement, {"interpolated between", "0.75", "0.8"});
 }
 
 TEST(Material, RefusesVolumeFractionsOutsideTheSimulatedRange) {
-  const Law law = exact_law();
+  const Law law = testing::exact_law({});
   try {
     make_material(law, {0.95, kModulus, kViscosity, false});
     ADD_FAILURE() << "accepted";
@@ -125,34 +98,6 @@ TEST(Material, RefusesVolumeFractionsOutsideTheSimulatedRange) {
   EXPECT_THROW(make_material(single, {0.81, kModulus, kViscosity, true}), InputError);
   EXPECT_THROW(make_material(law, {0.8, -1.0, kViscosity, false}), InputError);
   EXPECT_THROW(make_material(law, {0.8, kModulus, 0.0, false}), InputError);
-}
-
-// The fragment, read as macro will: docs/material-format.md's entries and rules.
-TEST(Material, WritesTheDocumentedFragment) {
-  const Material m = make_material(exact_law(), {0.78, kModulus, kViscosity, false});
-  const std::string text = material_text(m, {"softglass bridge material (test)"});
-  expect_contains(text, {"# softglass bridge material (test)\n", "subsection material", "tau_y",
-                         "statistical", "interpolation", "valid for shear rates"});
-  dealii::ParameterHandler prm;
-  namespace P = dealii::Patterns;
-  prm.enter_subsection("material");
-  prm.declare_entry("model", "newtonian",
-                    P::Selection("herschel-bulkley|bingham|power-law|newtonian"));
-  for (const char* name :
-       {"yield stress", "consistency", "flow index", "N1 yield", "N1 consistency", "N1 flow index",
-        "N2 yield", "N2 consistency", "N2 flow index"})
-    prm.declare_entry(name, "0", P::Double());
-  prm.leave_subsection();
-  prm.parse_input_from_string(text);
-  prm.enter_subsection("material");
-  EXPECT_EQ(prm.get("model"), "herschel-bulkley");
-  EXPECT_NEAR(prm.get_double("yield stress"), m.laws[0]->yield.value,
-              1e-5 * m.laws[0]->yield.value);
-  EXPECT_GT(prm.get_double("consistency"), 0.0);
-  EXPECT_GT(prm.get_double("flow index"), 0.0);
-  EXPECT_LE(prm.get_double("flow index"), 2.0);
-  EXPECT_LT(prm.get_double("N2 consistency"), 0.0);
-  prm.leave_subsection();
 }
 
 }  // namespace

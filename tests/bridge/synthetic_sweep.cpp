@@ -154,4 +154,29 @@ SyntheticSweep without_structure(SyntheticSweep s) {
   return s;
 }
 
+Law exact_law(const SyntheticTruth& t) {
+  Law law;
+  law.phi = t.phi;
+  law.gamma_tilde_min = t.gamma_tilde.front();
+  law.gamma_tilde_max = t.gamma_tilde.back();
+  for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) law.hb[index(q)].emplace();
+  for (std::size_t j = 0; j < t.phi.size(); ++j) {
+    law.modulus.push_back({t.modulus[j], 0.03 * t.modulus[j]});
+    law.yield_strain.push_back({t.yield_strain[j], 0.03 * t.yield_strain[j]});
+    for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) {
+      const double yield = t.value(j, q, 0.0);
+      const double slope = (t.value(j, q, 1e-4) - yield) / std::sqrt(1e-4);
+      HbLaw& hb = *law.hb[index(q)];
+      hb.yield.push_back({yield, 0.01 * std::abs(yield)});
+      hb.consistency.push_back({slope, 0.1 * std::abs(slope)});
+      hb.exponent.push_back({0.5, 0.01});
+      hb.correlation.push_back(0.99);
+    }
+  }
+  law.k[0] = Estimate{t.k, 1.0};
+  law.mean_exponent = {0.5, 0.001};
+  validate(law, "exact");
+  return law;
+}
+
 }  // namespace softglass::bridge::testing

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bridge/io/flow_curve_table.h"
+#include "bridge/law/law.h"
 
 namespace softglass::bridge::testing {
 
@@ -47,6 +48,10 @@ struct SyntheticSweep {
 };
 
 SyntheticSweep make_synthetic_sweep(const SyntheticTruth& truth, std::uint64_t seed);
+
+/// The truth as a law, exactly (no fit), with fixed relative errors: 3 % on G0
+/// and γ_y, 1 % on yield values, 10 % on consistencies, 0.01 on exponents.
+Law exact_law(const SyntheticTruth& truth);
 
 /// The sweep as the two CSV files of docs/flow-curve-format.md.
 std::string table_csv(const SyntheticSweep& sweep);
