@@ -16,17 +16,10 @@
 #include <vector>
 
 #include "micro/io/run_file.h"
-#include "micro_test_support.h"
+#include "micro_cli_fixture.h"
 
 namespace softglass::micro {
 namespace {
-
-namespace fs = std::filesystem;
-
-struct Outcome {
-  int code;
-  std::string out, err;
-};
 
 // A small, fast packing: N = 200 needs a skin below ~0.6 for the neighbour grid.
 const std::string kTiny =
@@ -40,43 +33,6 @@ const std::string kTiny =
     "subsection output\n"
     "  set file = tiny.h5\n"
     "end\n";
-
-class MicroCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    fs::create_directories(work());
-    fs::create_directories(dir_ / "capture");
-  }
-
-  fs::path work() const { return dir_ / "work"; }
-
-  // Runs `micro <arguments>` in work/ and returns its exit code and output.
-  Outcome micro(const std::string& arguments) const {
-    const fs::path out = dir_ / "capture" / "stdout.txt", err = dir_ / "capture" / "stderr.txt";
-    const std::string command = "cd '" + work().string() +
-                                "' && '" SOFTGLASS_MICRO_EXECUTABLE "' " + arguments + " > '" +
-                                out.string() + "' 2> '" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    EXPECT_TRUE(WIFEXITED(status)) << command;
-    return {WEXITSTATUS(status), testing::read_text(out), testing::read_text(err)};
-  }
-
-  // Writes `text` as work/<name> and returns the file name.
-  std::string parameters(const std::string& name, const std::string& text) const {
-    testing::write_text(work() / name, text);
-    return name;
-  }
-
-  std::vector<std::string> files_in_work() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(work()))
-      names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
-  testing::TemporaryDirectory dir_;
-};
 
 // The tiny parameter file with the entry `name` of `subsection` set to `value`
 // (added if the subsection does not set it yet).

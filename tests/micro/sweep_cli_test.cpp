@@ -1,0 +1,153 @@
+// `micro sweep` driven as a user would: the tables it writes, a rerun that
+// skips finished work, the lock that refuses a second sweep on one folder,
+// batch-array mode, bad sweep files, and the promise that nothing is lost — a
+// sweep killed with SIGKILL in the middle of a case and run again ends with
+// exactly the table of an uninterrupted one.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "micro/sweep/directory_lock.h"
+#include "micro_cli_fixture.h"
+
+namespace softglass::micro {
+namespace {
+
+// N = 200 needs a skin below ~0.6 for the neighbour grid; short runs.
+std::string sweep_file(const std::string& directory, const std::string& sweep_entries,
+                       double max_strain) {
+  std::ostringstream s;
+  s << "subsection sweep\n  set preset = custom\n  set particles = 200\n  set output directory = "
+    << directory << "\n"
+    << sweep_entries << "end\n"
+    << "subsection neighbours\n  set skin = 0.3\nend\n"
+    << "subsection shear\n  set min strain = " << max_strain << "\n  set max strain = " << max_strain
+    << "\n  set min stationary strain = 0.5\n  set snapshot interval = 0\nend\n";
+  return s.str();
+}
+
+// The data lines of a CSV file (provenance comments dropped).
+std::string table_data(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line, data;
+  while (std::getline(in, line))
+    if (!line.starts_with("#")) data += line + '\n';
+  return data;
+}
+
+std::size_t count_lines(const std::string& text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST_F(MicroCli, SweepWritesTheFlowCurveTablesAndSkipsFinishedWorkOnARerun) {
+  const std::string entries =
+      "  set volume fractions = 0.70, 0.80\n  set gamma dot tildes = 1e-4, 3e-5\n  set packings = 1\n";
+  parameters("s.prm", sweep_file("out", entries, 1.0));
+  const Outcome first = micro("--threads 1 sweep s.prm --quiet");
+  ASSERT_EQ(first.code, 0) << first.out << first.err;
+  const std::string table = table_data(work() / "out/flow_curve.csv");
+  EXPECT_EQ(count_lines(table), 1 + 4u) << "a header and one row per (phi, gamma~)";
+  for (const char* column : {"phi [1]", "gamma_tilde [1]", "packings [1]", "sigma [E*]", "sigma_se [E*]",
+                             "N1_viscous [E*]", "N2_elastic_se [E*]", "pressure [E*]", "Z [1]", "G0 [E*]",
+                             "G0_se [E*]", "converged [1]"})
+    EXPECT_NE(table.find(column), std::string::npos) << column;
+  EXPECT_EQ(count_lines(table_data(work() / "out/flow_curve_packings.csv")), 1 + 4u);
+  EXPECT_TRUE(fs::exists(work() / "out/flow_curve.h5"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(work() / "out/packings"), fs::directory_iterator()), 2)
+      << "one packing per (phi, seed), shared by both rates";
+
+  const Outcome again = micro("--threads 1 sweep s.prm --quiet");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.out.find("4 cases (4 done)"), std::string::npos) << again.out;
+  EXPECT_EQ(again.out.find("run      phi"), std::string::npos) << "nothing is run again";
+  EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
+}
+
+TEST_F(MicroCli, SweepRefusesAFolderAnotherSweepHolds) {
+  parameters("s.prm", sweep_file("out", "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4\n"
+                                        "  set packings = 1\n", 1.0));
+  const DirectoryLock held(work() / "out");
+  const Outcome o = micro("sweep s.prm --quiet");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("another sweep is running"), std::string::npos) << o.err;
+}
+
+TEST_F(MicroCli, SweepRefusesBadSweepFiles) {
+  parameters("twice.prm", sweep_file("out", "  set volume fractions = 0.7, 0.70\n  set gamma dot tildes = "
+                                            "1e-4\n  set packings = 1\n", 1.0));
+  Outcome o = micro("sweep twice.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("'volume fractions' lists 0.7 twice"), std::string::npos) << o.err;
+
+  parameters("bare.prm", sweep_file("out", "", 1.0));
+  o = micro("sweep bare.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("preset 'custom' needs"), std::string::npos) << o.err;
+
+  parameters("range.prm", sweep_file("out", "  set volume fractions = 0.5\n", 1.0));
+  o = micro("sweep range.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("volume fractions"), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(work() / "out" / "flow_curve.csv"));
+}
+
+TEST_F(MicroCli, SweepRunsOneCaseOfABatchArray) {
+  parameters("s.prm", sweep_file("out", "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4, 3e-5\n"
+                                        "  set packings = 1\n", 1.0));
+  const Outcome list = micro("sweep s.prm --list");
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_NE(list.out.find("case    1"), std::string::npos) << list.out;
+  const Outcome one = micro("--threads 1 sweep s.prm --case 1 --quiet");
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_EQ(std::distance(fs::directory_iterator(work() / "out/runs"), fs::directory_iterator()), 1);
+  EXPECT_EQ(micro("sweep s.prm --case 2").code, 2) << "there are cases 0 and 1 only";
+  const Outcome gather = micro("sweep s.prm --gather");
+  EXPECT_EQ(gather.code, 1) << "one run is missing: the table holds the other, and says so";
+  EXPECT_NE(gather.err.find("1 of 2 runs are missing"), std::string::npos) << gather.err;
+  EXPECT_EQ(count_lines(table_data(work() / "out/flow_curve.csv")), 1 + 1u);
+}
+
+// The run is checkpointed every 100 accepted steps; the first sweep is killed
+// (SIGKILL: no chance to clean up) once a checkpoint exists, the rerun resumes
+// it, and the tables must be those of the uninterrupted sweep to the last digit.
+TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
+  const std::string entries =
+      "  set volume fractions = 0.8\n  set gamma dot tildes = 3e-5\n  set packings = 1\n"
+      "  set checkpoint steps = 100\n";
+  parameters("reference.prm", sweep_file("reference", entries, 6.0));
+  parameters("killed.prm", sweep_file("killed", entries, 6.0));
+  ASSERT_EQ(micro("--threads 1 sweep reference.prm --quiet").code, 0);
+
+  const fs::path pid_file = work() / "pid";
+  const std::string start = "cd '" + work().string() + "' && ('" SOFTGLASS_MICRO_EXECUTABLE
+                            "' --threads 1 sweep killed.prm --quiet > killed.log 2>&1 & echo $! > '" +
+                            pid_file.string() + "')";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  const fs::path checkpoint = work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.checkpoint.h5";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint within 2 minutes";
+  const pid_t pid = std::stoi(testing::read_text(pid_file));
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  // Gone (or a zombie nobody reaps yet: it runs no more either way).
+  for (int k = 0; k < 100 && ::kill(pid, 0) == 0; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_FALSE(fs::exists(work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.h5"))
+      << "killed too late: the case had finished";
+
+  const Outcome resumed = micro("--threads 1 sweep killed.prm --quiet");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("resumed from its checkpoint"), std::string::npos) << resumed.out;
+  EXPECT_FALSE(fs::exists(checkpoint)) << "a finished case removes its checkpoint";
+  EXPECT_EQ(table_data(work() / "killed/flow_curve.csv"), table_data(work() / "reference/flow_curve.csv"));
+  EXPECT_EQ(table_data(work() / "killed/flow_curve_packings.csv"),
+            table_data(work() / "reference/flow_curve_packings.csv"));
+}
+
+}  // namespace
+}  // namespace softglass::micro
