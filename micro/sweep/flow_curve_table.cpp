@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <utility>
 #include <stdexcept>
 
 #include "common/h5_file.h"
@@ -32,6 +33,14 @@ void add_stress_columns(NumberTable& t) {
   }
 }
 
+// r_m and f_m with their errors, when every row has them (docs/structure.md).
+void add_structure_columns(NumberTable& t) {
+  for (const auto& [name, units] : {std::pair{"r_m", "R"}, std::pair{"f_m", "E*R^2"}}) {
+    add_column(t, name, units);
+    add_column(t, std::string(name) + "_se", units);
+  }
+}
+
 const ObservableEstimate& find(const std::vector<ObservableEstimate>& list, const std::string& name) {
   for (const auto& o : list)
     if (o.name == name) return o;
@@ -52,12 +61,7 @@ NumberTable flow_curve_table(const std::vector<PackingAverage>& points) {
   add_column(t, "G0", "E*");
   add_column(t, "G0_se", "E*");
   add_column(t, "converged", "1");
-  if (structure) {
-    add_column(t, "r_m", "R");
-    add_column(t, "r_m_se", "R");
-    add_column(t, "f_m", "E*R^2");
-    add_column(t, "f_m_se", "E*R^2");
-  }
+  if (structure) add_structure_columns(t);
   for (const auto& p : points) {
     std::vector<double> row = {p.volume_fraction, p.gamma_tilde, static_cast<double>(p.runs)};
     for (const auto& name : stress_columns()) {
@@ -84,12 +88,7 @@ NumberTable per_packing_table(const std::vector<StoredRunSummary>& runs,
   add_stress_columns(t);
   add_column(t, "Z", "1");
   add_column(t, "G0", "E*");
-  if (structure) {
-    add_column(t, "r_m", "R");
-    add_column(t, "r_m_se", "R");
-    add_column(t, "f_m", "E*R^2");
-    add_column(t, "f_m_se", "E*R^2");
-  }
+  if (structure) add_structure_columns(t);
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const StoredRunSummary& r = runs[k];
     std::vector<double> row = {r.volume_fraction, r.gamma_tilde, static_cast<double>(seeds.at(k))};
