@@ -259,5 +259,31 @@ TEST_F(BridgeCli, ExistingResultsAreKeptWithoutForce) {
   }
 }
 
+// scripts/plot_bridge.py draws its figures from the tables `fit` and `rescale`
+// write (skipped where python3 with matplotlib is not installed).
+TEST_F(BridgeCli, PlotScriptDrawsTheFiguresFromTheTables) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "/usr/bin/python3 with matplotlib is not installed";
+  }
+  const std::string script = "/usr/bin/python3 '" SOFTGLASS_SOURCE_DIR "/scripts/plot_bridge.py' ";
+  ASSERT_EQ(bridge(kFit).code, 0);
+  testing::write_text(work() / "data.csv",
+                      "Shear rate [1/s],Stress [Pa]\n0.001,100.6\n0.01,101.9\n"
+                      "0.1,106.0\n1,118.9\n10,159.6\n100,288.4\n");
+  ASSERT_EQ(bridge("rescale data.csv --viscosity 1e-3 --yield-strain 0.03").code, 0);
+  const auto run = [&](const std::string& arguments) {
+    return std::system(
+        ("cd '" + work().string() + "' && " + script + arguments + " > /dev/null").c_str());
+  };
+  ASSERT_EQ(run("fit law.prm -o figures"), 0);
+  ASSERT_EQ(run("rescale rescaled.csv -o figures"), 0);
+  for (const char* name : {"law_flow_curves.png", "law_collapse.png", "law_N1.png", "law_N2.png",
+                           "law_force.png", "rescaled_universal.png"}) {
+    const std::string png = testing::read_text(work() / "figures" / name);
+    EXPECT_TRUE(png.starts_with("\x89PNG")) << name;
+  }
+  EXPECT_NE(run("fit missing.prm 2> /dev/null"), 0) << "a missing table is an error";
+}
+
 }  // namespace
 }  // namespace softglass::bridge
