@@ -9,6 +9,49 @@
 
 namespace softglass::bridge {
 
+namespace {
+
+bool finite(const Estimate& e) {
+  return std::isfinite(e.value) && std::isfinite(e.error);
+}
+bool finite(const std::vector<Estimate>& list) {
+  return std::all_of(list.begin(), list.end(), [](const Estimate& e) { return finite(e); });
+}
+
+// A fit of N1, N2 or f_m that failed (on the sweep or in too many bootstrap
+// replicates) leaves NaN in its numbers, and `fit` has warned about it. Such a
+// part is left out of the law, with a note, so that every law `fit` writes can
+// be read back: the shear law is required (`fit` refuses a sweep without it).
+void leave_out_failures(Law& law) {
+  const auto note = [&](const std::string& what) {
+    law.provenance.push_back(what +
+                             ": left out of the law, its fit or its errors failed (see "
+                             "the warnings)");
+  };
+  for (Quantity q : {Quantity::N1, Quantity::N2, Quantity::force}) {
+    auto& hb = law.hb[index(q)];
+    if (!hb) continue;
+    const bool correlated = std::all_of(hb->correlation.begin(), hb->correlation.end(),
+                                        [](double r) { return std::abs(r) <= 1.0; });
+    if (!finite(hb->yield) || !finite(hb->consistency) || !finite(hb->exponent) || !correlated) {
+      hb.reset();
+      note(std::string(column_name(q)) + " Herschel-Bulkley law");
+    }
+  }
+  for (Quantity q : {Quantity::N1, Quantity::N2}) {
+    if (law.k[index(q)] && !finite(*law.k[index(q)])) {
+      law.k[index(q)].reset();
+      note(std::string("universal constant of ") + column_name(q));
+    }
+  }
+  if (law.force && (!finite(law.force->yield) || !finite(law.force->slope))) {
+    law.force.reset();
+    note("force law f_m = f_y + k_f gamma~^(1/2)");
+  }
+}
+
+}  // namespace
+
 Law make_law(const SweepAnalysis& a, std::vector<std::string> provenance) {
   Law law;
   law.provenance = std::move(provenance);
@@ -48,6 +91,7 @@ Law make_law(const SweepAnalysis& a, std::vector<std::string> provenance) {
   for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2})
     if (value.k[index(q)]) law.k[index(q)] = Estimate{*value.k[index(q)], *error.k[index(q)]};
   law.mean_exponent = {value.mean_exponent, error.mean_exponent};
+  leave_out_failures(law);
   return law;
 }
 

@@ -72,18 +72,20 @@ std::string law_text(const Law& law) {
 
   for (Quantity q : kAllQuantities) {
     const auto& hb = law.hb[index(q)];
-    if (!hb) continue;
-    out += fmt::format(
-        "  subsection {}\n"
-        "    # {}/{} = yield + consistency gamma~^exponent, per volume fraction\n",
-        law_subsection(q), column_name(q), reduced_units(q));
-    estimates(out, "    ", "yield", hb->yield);
-    estimates(out, "    ", "consistency", hb->consistency);
-    estimates(out, "    ", "exponent", hb->exponent);
-    out += "    # correlation of ln|consistency| and exponent over the bootstrap replicates\n";
-    set(out, "    ", "correlation",
-        list(hb->correlation, [](double r) { return fmt::format("{:.4f}", r); }));
-    if (q == Quantity::force && law.force) {
+    const bool force = q == Quantity::force && law.force;
+    if (!hb && !force) continue;
+    out += fmt::format("  subsection {}\n", law_subsection(q));
+    if (hb) {
+      out += fmt::format("    # {}/{} = yield + consistency gamma~^exponent, per volume fraction\n",
+                         column_name(q), reduced_units(q));
+      estimates(out, "    ", "yield", hb->yield);
+      estimates(out, "    ", "consistency", hb->consistency);
+      estimates(out, "    ", "exponent", hb->exponent);
+      out += "    # correlation of ln|consistency| and exponent over the bootstrap replicates\n";
+      set(out, "    ", "correlation",
+          list(hb->correlation, [](double r) { return fmt::format("{:.4f}", r); }));
+    }
+    if (force) {
       out += "    # the paper's force law f_m = f_y + k_f gamma~^(1/2), exponent fixed at 1/2\n";
       estimates(out, "    ", "f_y", law.force->yield);
       estimates(out, "    ", "k_f", law.force->slope);

@@ -2,6 +2,7 @@
 // command line's reader), with every malformed variant refused naming the entry.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <regex>
 
 #include "bridge/app/law_file.h"
@@ -15,14 +16,16 @@ namespace {
 
 using testing::expect_contains;
 
-Law synthetic_law(bool normal = true) {
+SweepAnalysis synthetic_analysis(bool normal = true) {
   testing::SyntheticTruth t;
   t.normal = normal;
   const testing::SyntheticSweep s = testing::make_synthetic_sweep(t, 1);
   const Sweep sweep = make_sweep(s.table);
-  const SweepAnalysis a =
-      analyse_sweep(sweep, *make_packing_resampler(sweep, s.runs, "runs"), {100, 1});
-  return make_law(a, {"test law", "second line"});
+  return analyse_sweep(sweep, *make_packing_resampler(sweep, s.runs, "runs"), {100, 1});
+}
+
+Law synthetic_law(bool normal = true) {
+  return make_law(synthetic_analysis(normal), {"test law", "second line"});
 }
 
 TEST(LawFile, RoundTripsThroughParameterHandler) {
@@ -48,6 +51,30 @@ TEST(LawFile, RoundTripsThroughParameterHandler) {
     EXPECT_NEAR(back.k[0]->value, law.k[0]->value, 1e-8 * law.k[0]->value);
     expect_contains(law_text(law), {"# test law\n", "subsection law", "set k ", "80 +- 3"});
   }
+}
+
+// A failed N1 fit (NaN in its numbers, warned about by `fit`) and a failed
+// force-law error are left out of the law, with a note, and the law file that
+// results reads back.
+TEST(LawFile, LeavesOutFailedPartsSoThatEveryWrittenLawReadsBack) {
+  SweepAnalysis a = synthetic_analysis();
+  a.estimate.fit.groups[2].hb[index(Quantity::N1)]->exponent = std::nan("");
+  a.uncertainty.error.groups[1].force_slope = std::nan("");
+  const Law law = make_law(a, {"test law"});
+  EXPECT_FALSE(law.hb[index(Quantity::N1)].has_value());
+  EXPECT_TRUE(law.hb[index(Quantity::N2)].has_value());
+  EXPECT_TRUE(law.hb[index(Quantity::force)].has_value());
+  EXPECT_FALSE(law.force.has_value());
+  const std::string text = law_text(law);
+  expect_contains(text, {"# N1 Herschel-Bulkley law: left out",
+                         "# force law f_m = f_y + k_f "
+                         "gamma~^(1/2): left out"});
+  testing::TemporaryDirectory dir;
+  testing::write_text(dir / "law.prm", text);
+  const Law back = read_law_file(dir / "law.prm");
+  EXPECT_FALSE(back.hb[index(Quantity::N1)].has_value());
+  EXPECT_TRUE(back.k[index(Quantity::N1)].has_value()) << "k' itself did not fail";
+  EXPECT_FALSE(back.force.has_value());
 }
 
 TEST(LawFile, RefusesMalformedFilesNamingTheEntry) {
