@@ -130,7 +130,10 @@ void declare(ParameterHandler& prm, Entries& e) {
   prm.leave_subsection();
 
   prm.enter_subsection("integrator");
-  entry(prm, "scheme", p.integrator.name, "Time integrator.", Patterns::Selection("euler"));
+  entry(prm, "scheme", p.integrator.name,
+        "Time integrator: euler (explicit, default) or implicit (backward Euler, for low "
+        "gamma~; docs/integrators.md).",
+        Patterns::Selection("euler|implicit"));
   entry(prm, "tolerance", p.integrator.tolerance,
         "Local position error allowed per step, in units of R.", Patterns::Double(1e-12, 0.1));
   entry(prm, "stability fraction", p.integrator.stability_fraction,
@@ -138,6 +141,10 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Double(0.01, 0.99));
   entry(prm, "max step", p.integrator.max_step, "Largest step (strain).",
         Patterns::Double(1e-12, 1.0));
+  entry(prm, "solver tolerance", p.integrator.solver_tolerance,
+        "implicit: residual force of a step's nonlinear solve, relative to the mean contact "
+        "force.",
+        Patterns::Double(1e-15, 1e-3));
   prm.leave_subsection();
 
   prm.enter_subsection("structure");
@@ -362,13 +369,16 @@ MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSett
   return p;
 }
 
-std::string parameter_template() {
+std::string parameter_template(bool sweep) {
   ParameterHandler prm;
   Entries e;
+  SweepEntries s;
   declare(prm, e);
+  if (sweep) declare_sweep(prm, s);
   std::ostringstream text;
-  text << "# softglass micro: parameter file for `micro pack` and `micro run`.\n"
-          "# Reduced units: lengths R (mean radius), stresses E*, time 1/gamma_dot (strain).\n";
+  text << (sweep ? "# softglass micro: sweep file for `micro sweep` (docs/sweeps.md).\n"
+                 : "# softglass micro: parameter file for `micro pack` and `micro run`.\n")
+       << "# Reduced units: lengths R (mean radius), stresses E*, time 1/gamma_dot (strain).\n";
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
   return text.str();
 }

@@ -12,13 +12,15 @@ namespace softglass::micro {
 
 // Each scheme lives in its own file and provides its factory.
 std::unique_ptr<Integrator> make_adaptive_euler(const IntegratorSpec&);
+std::unique_ptr<Integrator> make_backward_euler(const IntegratorSpec&);
 
 namespace {
 struct RegisteredIntegrator {
   const char* name;
   std::unique_ptr<Integrator> (*make)(const IntegratorSpec&);
 };
-constexpr std::array kRegistry{RegisteredIntegrator{"euler", make_adaptive_euler}};
+constexpr std::array kRegistry{RegisteredIntegrator{"euler", make_adaptive_euler},
+                               RegisteredIntegrator{"implicit", make_backward_euler}};
 }  // namespace
 
 void Integrator::record_accepted(double dt) {
@@ -35,6 +37,8 @@ void IntegratorSpec::validate() const {
           fmt::format("stability fraction = {} is outside (0, 1)", stability_fraction));
   require(max_step > 0.0 && max_step <= 1.0,
           fmt::format("maximum step = {} is outside (0, 1] (strain)", max_step));
+  require(solver_tolerance > 0.0 && solver_tolerance <= 1e-3,
+          fmt::format("implicit solver tolerance = {} is outside (0, 1e-3]", solver_tolerance));
 }
 
 std::vector<std::string> integrator_names() {

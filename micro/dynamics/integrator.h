@@ -1,6 +1,11 @@
 // Time integrators for the overdamped shear dynamics: one small interface, one
 // scheme per file, chosen by name (`integrator = euler` in the parameter file).
 //
+// Schemes: `euler` (explicit, adaptive_euler.cpp, the default) and `implicit`
+// (backward Euler as a minimising movement, backward_euler.cpp, for the stiff
+// low-γ̃ regime); docs/integrators.md compares them. The quasi-static limit
+// γ̃ → 0 is not an integrator but a protocol of its own (aqs.h).
+//
 // An integrator advances an OverdampedShear by one accepted step at a time and
 // keeps the flow evaluated at its current state between calls, so the caller
 // can read the stress after every step.
@@ -43,6 +48,9 @@ struct IntegratorSpec {
   double tolerance = 1e-4;          // local position error per step, units of R
   double stability_fraction = 0.8;  // fraction of the explicit stability limit 2/λ
   double max_step = 0.05;           // strain
+  // `implicit` only: the nonlinear solve of a step is converged when the largest
+  // residual force is below this × the mean contact force.
+  double solver_tolerance = 1e-7;
 
   void validate() const;
 };

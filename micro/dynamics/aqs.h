@@ -1,0 +1,63 @@
+// Athermal quasi-static shear (AQS): the γ̃ → 0 limit of the sheared dynamics.
+//
+// Small strain steps Δγ, each an affine shear of the whole configuration
+// followed by a minimisation of the elastic energy at the new strain (Maloney &
+// Lemaître's protocol). Between plastic events the configuration follows a
+// local energy minimum; at an event the minimum disappears and the minimiser
+// finds the next one. The EHD drag and the friction vanish from the stress as
+// γ̃ → 0 (σ^v ∝ γ̃^{2/3}), so the stationary mean of σ^e is the dynamic yield
+// stress σ_y(φ): the low end of every flow curve (spec model.md §8).
+//
+// The minimiser is incremental_minimiser.h with Φ = E (Newton, sparse Cholesky,
+// shifted when indefinite, Armijo line search): the energy falls monotonically
+// within every step. The guess for each step's non-affine displacement is the
+// previous step's (linear response between events), so an elastic step takes
+// one or two Newton iterations.
+//
+// Usage: `aqs_flow_curve_point(packing system, settings)`; the result carries the
+// sampled series and the same steady-state summary (MSER + blocking) as a
+// sheared run (protocol/shear_run.h), with σ^v = 0. Command-line wiring is the
+// sweep's (docs/integrators.md).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "micro/protocol/shear_run.h"
+#include "micro/system/contact_system.h"
+
+namespace softglass::micro {
+
+struct AqsSettings {
+  double strain_step = 2e-4;       // Δγ
+  double strain = 2.0;             // total strain sheared
+  double min_stationary_strain = 0.5;  // for the steady-state analysis
+  double relative_force = 1e-9;    // minimiser: max residual / mean contact force
+  int max_iterations = 2000;       // Newton iterations per strain step
+
+  void validate() const;
+};
+
+struct AqsResult {
+  TimeSeries series;     // one sample per strain step (viscous = 0)
+  ShearSummary summary;  // stationary means: summary["sigma"] is σ_y
+  std::vector<double> energy;  // elastic energy after each step (units E* R³)
+  std::size_t steps = 0, newton_iterations = 0, cg_iterations = 0;
+  std::size_t stress_drops = 0;  // steps where σ fell (plastic events)
+  std::size_t unconverged_steps = 0;
+  double seconds = 0.0;
+};
+
+/// Diagnostics of one AQS step, for tests: the energy after each Newton
+/// iteration (relative to the start of the minimisation).
+using AqsObserver = std::function<void(const std::vector<double>& energies)>;
+
+/// Shears `system` quasi-statically from its current strain (it is moved).
+AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings,
+                  const AqsObserver& observer = {});
+
+/// The quasi-static flow-curve point of a packing: run_aqs on a copy.
+AqsResult aqs_flow_curve_point(ContactSystem system, const AqsSettings& settings);
+
+}  // namespace softglass::micro

@@ -1,0 +1,180 @@
+// `implicit`: backward Euler as a minimising movement, with a local error
+// estimate and step-size control. For the stiff regime (low γ̃).
+//
+// Why this scheme. The explicit step is bounded by the fastest contact
+// relaxation, 2/λ ∝ γ̃ (overdamped_shear.h), whatever the accuracy needed. The
+// motion is a generalised gradient flow (incremental_minimiser.h), and backward
+// Euler for such a flow is the minimisation of energy + dissipation over one
+// step: unconditionally stable and energy-decreasing (L-stable on the linear
+// part: fast modes are damped out, not just bounded), so the step is limited by
+// accuracy only. Between plastic events the motion at low γ̃ is quasi-static —
+// the particles follow a slowly moving energy minimum — and steps are limited by
+// max_step; an event relaxes on the time scale η_s/E*, i.e. a strain ∝ γ̃, and
+// the error control shrinks the step to resolve it in a number of steps that
+// does not depend on γ̃. Variable-step BDF2 fits the same minimisation (with
+// the base point extrapolated from x_{n−1}, x_n and a step 2h/3-like weight),
+// but it is not energy-decreasing, and its extrapolation runs through plastic
+// events; since σ is already within 2 % at loose tolerances (measured:
+// docs/integrators.md), order 1 with a robust nonlinear solver is the chosen
+// trade. Runge–Kutta–Chebyshev (stabilised explicit) would still need
+// ∝ √(λh) stages per step, a cost per strain growing like γ̃^{-1/2}.
+//
+// Step. From x_n with velocities v_n (the last evaluation): x⁰ = x_n sheared
+// affinely by h, plus ½h²v_{n,y} e_x (the affine advection of the particles'
+// own y-motion over the step, to second order); then u = argmin Φ, starting
+// from the guess u = h v_n; x_{n+1} = x⁰ + u, and the flow is evaluated there
+// (forces, EHD velocities, stress), which the caller and the next step read.
+//
+// Error. Backward Euler's local error is −½h² ẍ; with v_{n+1} ≈ u/h (the
+// backward-Euler velocity, the ODE's at x_{n+1}) and v_n the ODE's at x_n,
+// e = ½|u − h v_n| per particle (Milne's device for BDF1: the difference
+// between the implicit step and the explicit predictor x_n + h v_n). Both
+// velocities are on the slow manifold — the backward-Euler point satisfies the
+// equation of motion — so the estimate is not polluted by the stiff modes (the
+// estimate ½h|v(x_{n+1}) − v(x_n)| of an explicit step would be). The step is
+// accepted when max_α e_α ≤ tolerance (units of R); the next step is
+// h · min(2, max(0.2, 0.9 √(tol/e))). A step whose nonlinear solve fails is
+// retried with h/4.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/errors.h"
+
+#include "micro/dynamics/incremental_minimiser.h"
+#include "micro/dynamics/integrator.h"
+
+namespace softglass::micro {
+namespace {
+
+double min_radius(const std::vector<double>& radius) {
+  return *std::min_element(radius.begin(), radius.end());
+}
+
+// Non-affine move per step (units of R) that the neighbour list is made valid
+// for at most (and at most 0.3 skin, leaving room for the strain).
+constexpr double kWidestMargin = 0.2;
+
+class BackwardEuler final : public Integrator {
+ public:
+  explicit BackwardEuler(const IntegratorSpec& spec) : spec_(spec) {
+    IncrementalSettings s;
+    s.relative_force = spec.solver_tolerance;
+    minimiser_.set_settings(s);
+  }
+
+  std::string name() const override { return "implicit"; }
+
+  double step(OverdampedShear& flow, double max_step) override {
+    if (!flow.evaluated()) flow.evaluate();
+    double h = std::min({proposal_, spec_.max_step, max_step});
+    ContactSystem& system = flow.system();
+    const double gamma_tilde = flow.model().gamma_tilde;
+    double list_margin = 0.0;
+    bool rejected = false;
+    const double widest = std::min(kWidestMargin, 0.3 * system.neighbours().skin());
+
+    for (int attempt = 0;; ++attempt) {
+      if (attempt > 200) throw NumericalError("implicit step: no acceptable step size");
+      // List valid for the predicted move (twice the explicit predictor, at
+      // least 0.02 R); a solve that leaves it restarts with a larger margin.
+      const double predicted = std::min(std::max(2.0 * h * flow.max_speed(), 0.02), widest);
+      system.ensure_neighbours(std::max(predicted, list_margin), flow.strain() + h);
+      flow.save(before_);
+      const std::size_t n = system.size();
+      const auto& p = system.particles();
+
+      // Frozen drag from the contacts at x_n (recomputed: a rebuild reorders).
+      FrozenDrag& drag = drag_;
+      drag.clear();
+      if (flow.model().drag.enabled) {
+        const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
+        freeze_drag(field.contacts, gamma_tilde, drag);
+      }
+      const double friction_per_radius =
+          6.0 * std::numbers::pi * gamma_tilde / flow.model().mobility_factor;
+      proximal_.resize(n);
+      velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
+      guess_.resize(n);
+      shift_.resize(n);
+      for (std::size_t a = 0; a < n; ++a) {
+        proximal_[a] = friction_per_radius * p.radius[a] / h;
+        guess_[a] = h * velocity_[a];
+        shift_[a] = Vec3(0.5 * h * velocity_[a].y(), 0.0, 0.0);
+      }
+      // x⁰: affine shear by h plus the second-order advection term.
+      system.move(h, shift_, /*affine=*/true);
+      system.advance_strain(h);
+      // The solve's residual g moves a particle by at most g h/ζ (the proximal
+      // term bounds the Hessian below): 1 % of the step tolerance is enough.
+      IncrementalSettings settings = minimiser_.settings();
+      settings.absolute_force =
+          0.01 * spec_.tolerance * friction_per_radius * min_radius(p.radius) / h;
+      settings.loosen = true;
+      minimiser_.set_settings(settings);
+      const IncrementalResult r = minimiser_.minimise(system, proximal_, drag, h, guess_);
+      if (r.list_invalid) {
+        // The step moves particles further than the list allows: if the list
+        // was made for a small move, a rebuild with a wider margin; otherwise
+        // the step spans a rearrangement, and is shortened.
+        flow.restore(before_);
+        ++stats_.rejected;
+        rejected = true;
+        if (std::max(predicted, list_margin) < 0.5 * widest) {
+          list_margin = widest;
+        } else {
+          h *= 0.25;
+        }
+        continue;
+      }
+      if (!r.converged) {
+        flow.restore(before_);
+        ++stats_.rejected;
+        ++solver_failures_;
+        rejected = true;
+        h *= 0.25;
+        continue;
+      }
+      double worst = 0.0;
+      for (std::size_t a = 0; a < n; ++a)
+        worst = std::max(worst, (guess_[a] - h * velocity_[a]).squaredNorm());
+      const double error = 0.5 * std::sqrt(worst);
+      const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
+      if (error > spec_.tolerance) {
+        flow.restore(before_);
+        ++stats_.rejected;
+        rejected = true;
+        h *= std::max(0.2, factor);
+        continue;
+      }
+      // Accepted: the flow at x_{n+1}, warm-started with the step's velocity.
+      auto& v = system.particles().velocity;
+      for (std::size_t a = 0; a < n; ++a) v[a] = guess_[a] / h;
+      flow.evaluate();
+      record_accepted(h);
+      // No growth right after a rejection (Hairer & Wanner, Solving ODEs II,
+      // IV.8): the rejected size was too large a moment ago.
+      const double growth = rejected ? 1.0 : 2.0;
+      if (h < max_step || factor < 1.0) proposal_ = h * std::clamp(factor, 0.2, growth);
+      return h;
+    }
+  }
+
+ private:
+  IntegratorSpec spec_;
+  IncrementalMinimiser minimiser_;
+  FrozenDrag drag_;
+  std::vector<double> proximal_;
+  std::vector<Vec3> velocity_, guess_, shift_;
+  double proposal_ = 1e300;
+  std::size_t solver_failures_ = 0;
+  OverdampedShear::Snapshot before_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_backward_euler(const IntegratorSpec& spec) {
+  return std::make_unique<BackwardEuler>(spec);
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,334 @@
+#include "micro/dynamics/incremental_minimiser.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace softglass::micro {
+
+namespace {
+constexpr double kArmijo = 1e-4;
+constexpr int kMaxHalvings = 40;
+// Largest move of one particle along a Newton direction (units of R): beyond
+// it the quadratic model says little, and the neighbour list would need a
+// rebuild. The direction is scaled down, not rejected.
+constexpr double kMaxMove = 0.1;
+
+double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
+  double sum = 0.0;
+  for (std::size_t a = 0; a < x.size(); ++a) sum += x[a].dot(y[a]);
+  return sum;
+}
+double max_norm(const std::vector<Vec3>& x) {
+  double worst = 0.0;
+  for (const Vec3& v : x) worst = std::max(worst, v.squaredNorm());
+  return std::sqrt(worst);
+}
+}  // namespace
+
+void FrozenDrag::clear() {
+  i.clear();
+  j.clear();
+  normal.clear();
+  coefficient.clear();
+  affine.clear();
+}
+
+void freeze_drag(const ContactList& c, double gamma_tilde, FrozenDrag& out) {
+  out.clear();
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const Vec3 n = c.separation[k].normalized();
+    Vec3 g = Vec3::Zero();
+    g.x() = c.separation[k].y();  // affine relative velocity d_y e_x (γ̇ = 1)
+    out.i.push_back(c.i[k]);
+    out.j.push_back(c.j[k]);
+    out.normal.push_back(n);
+    out.coefficient.push_back(std::sqrt(0.75 * gamma_tilde * c.contact_radius[k] * c.force[k] *
+                                        std::sqrt(c.deformation[k])));
+    out.affine.push_back(g - n * n.dot(g));
+  }
+}
+
+bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const double> proximal,
+                                       const FrozenDrag& drag, double h,
+                                       const std::vector<Vec3>& u, Value& value,
+                                       std::vector<Vec3>& gradient, std::vector<Vec3>& w) {
+  system.restore_positions(base_, base_strain_);
+  system.restore_tracking(base_tracking_);
+  system.move(1.0, u, /*affine=*/false);
+  if (!system.neighbours().valid_for(system.max_nonaffine_displacement(), base_strain_))
+    return false;
+  const ContactField& field =
+      system.compute_forces({.energy = true, .contacts = true, .virial = false});
+  ++counters_.force_evaluations;
+  const std::size_t n = u.size();
+  value.elastic = field.energy;
+  value.proximal = 0.0;
+  value.dissipation = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    gradient[a] = -field.force[a];
+    if (!proximal.empty()) {
+      gradient[a] += proximal[a] * u[a];
+      value.proximal += 0.5 * proximal[a] * u[a].squaredNorm();
+    }
+  }
+  w.resize(drag.size());
+  for (std::size_t k = 0; k < drag.size(); ++k) {
+    const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
+    const Vec3& nk = drag.normal[k];
+    w[k] = du - nk * nk.dot(du) + drag.affine[k];
+    const double speed = w[k].norm();
+    value.dissipation += h * (2.0 / 3.0) * drag.coefficient[k] * speed * std::sqrt(speed);
+    if (speed > 0.0) {
+      const Vec3 f = w[k] * (drag.coefficient[k] / std::sqrt(speed));  // a |w|^{1/2} ŵ
+      gradient[drag.i[k]] += f;
+      gradient[drag.j[k]] -= f;
+    }
+  }
+  return true;
+}
+
+void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const double> proximal,
+                                    const FrozenDrag& drag, double h, double force_floor) {
+  const std::size_t n = system.size();
+  const ContactList& c = system.forces().contacts;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  diagonal_.resize(n);
+  for (std::size_t a = 0; a < n; ++a)
+    diagonal_[a] = (proximal.empty() ? 0.0 : proximal[a]) * identity;
+  pair_i_.clear();
+  pair_j_.clear();
+  block_.clear();
+  // Elastic contacts at the current point: K_c = k_n nnᵀ − (|f|/r)(I − nnᵀ); the
+  // preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const double r = c.separation[k].norm();
+    const Vec3 nk = c.separation[k] / r;
+    const Eigen::Matrix3d nn = nk * nk.transpose();
+    const double tangential = c.force[k] / r;
+    pair_i_.push_back(c.i[k]);
+    pair_j_.push_back(c.j[k]);
+    block_.push_back(c.stiffness[k] * nn - tangential * (identity - nn));
+    const Eigen::Matrix3d majorant = c.stiffness[k] * nn + tangential * (identity - nn);
+    diagonal_[c.i[k]] += majorant;
+    diagonal_[c.j[k]] += majorant;
+  }
+  // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header).
+  for (std::size_t k = 0; k < drag.size(); ++k) {
+    const double a = drag.coefficient[k];
+    if (a <= 0.0) continue;
+    const double speed = w_[k].norm();
+    const double floor_speed = (force_floor / a) * (force_floor / a);
+    const double s = a / std::sqrt(std::max(speed, floor_speed)) / h;
+    const Vec3 unit = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
+    const Vec3& nk = drag.normal[k];
+    const Eigen::Matrix3d b =
+        s * (identity - nk * nk.transpose() - relief_[k] * unit * unit.transpose());
+    pair_i_.push_back(drag.i[k]);
+    pair_j_.push_back(drag.j[k]);
+    block_.push_back(b);
+    diagonal_[drag.i[k]] += b;
+    diagonal_[drag.j[k]] += b;
+  }
+  // Block-Jacobi preconditioner; a particle without contacts or friction (a
+  // rattler in quasi-static shear) gets a tiny diagonal instead of none.
+  double scale = 0.0;
+  for (const auto& d : diagonal_) scale += d.trace();
+  diagonal_scale_ = scale / (3.0 * double(std::max<std::size_t>(n, 1)));
+  undamped_diagonal_ = diagonal_;
+  invert_diagonal();
+}
+
+void IncrementalMinimiser::invert_diagonal() {
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  const double floor = 1e-12 * std::max(diagonal_scale_, 1e-300);
+  for (std::size_t a = 0; a < diagonal_.size(); ++a)
+    diagonal_[a] = (undamped_diagonal_[a] + (damping_ + floor) * identity).inverse();
+}
+
+void IncrementalMinimiser::hessian_times(std::span<const double> proximal,
+                                         const std::vector<Vec3>& in, std::vector<Vec3>& out) const {
+  const std::size_t n = in.size();
+  for (std::size_t a = 0; a < n; ++a)
+    out[a] = ((proximal.empty() ? 0.0 : proximal[a]) + damping_) * in[a];
+  for (std::size_t k = 0; k < block_.size(); ++k) {
+    const Vec3 y = block_[k] * (in[pair_i_[k]] - in[pair_j_[k]]);
+    out[pair_i_[k]] += y;
+    out[pair_j_[k]] -= y;
+  }
+}
+
+int IncrementalMinimiser::newton_direction(std::span<const double> proximal, double eta) {
+  // Preconditioned CG on H d = −g, stopped at ‖r‖ ≤ η‖g‖ or at the first
+  // direction of non-positive curvature (Steihaug): the iterate so far (or the
+  // preconditioned gradient, on the first iteration) is a descent direction.
+  const std::size_t n = gradient_.size();
+  for (auto* v : {&r_, &z_, &p_, &q_}) v->resize(n);
+  double gnorm2 = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    direction_[a].setZero();
+    r_[a] = -gradient_[a];
+    z_[a] = diagonal_[a] * r_[a];
+    p_[a] = z_[a];
+    gnorm2 += r_[a].squaredNorm();
+  }
+  double rz = dot(r_, z_);
+  negative_curvature_ = false;
+  const double target2 = eta * eta * gnorm2;
+  const int limit = static_cast<int>(std::max<std::size_t>(50, 3 * n));
+  int it = 0;
+  for (; it < limit; ++it) {
+    hessian_times(proximal, p_, q_);
+    const double curvature = dot(p_, q_);
+    if (curvature <= 0.0) {
+      if (it == 0) direction_ = z_;
+      negative_curvature_ = true;
+      break;
+    }
+    const double alpha = rz / curvature;
+    double rr = 0.0;
+    for (std::size_t a = 0; a < n; ++a) {
+      direction_[a] += alpha * p_[a];
+      r_[a] -= alpha * q_[a];
+      rr += r_[a].squaredNorm();
+    }
+    if (rr <= target2) {
+      ++it;
+      break;
+    }
+    for (std::size_t a = 0; a < n; ++a) z_[a] = diagonal_[a] * r_[a];
+    const double rz_next = dot(r_, z_);
+    const double beta = rz_next / rz;
+    rz = rz_next;
+    for (std::size_t a = 0; a < n; ++a) p_[a] = z_[a] + beta * p_[a];
+  }
+  return it;
+}
+
+IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,
+                                                 std::span<const double> proximal,
+                                                 const FrozenDrag& drag, double h,
+                                                 std::vector<Vec3>& u,
+                                                 std::vector<double>* energies,
+                                                 int max_iterations) {
+  if (max_iterations < 0) max_iterations = settings_.max_iterations;
+  const std::size_t n = system.size();
+  IncrementalResult result;
+  ++counters_.solves;
+  base_.assign(system.particles().position.begin(), system.particles().position.end());
+  system.save_tracking(base_tracking_);
+  base_strain_ = system.box().strain();
+  u.resize(n, Vec3::Zero());
+  for (auto* v : {&gradient_, &gradient_trial_, &trial_, &direction_}) v->resize(n);
+  relief_.assign(drag.size(), 0.5);
+  damping_ = 0.0;
+
+  // Φ(0) for the energy change reported at the end.
+  Value start{}, value{}, trial_value{};
+  std::vector<Vec3> zero(n, Vec3::Zero());
+  if (!evaluate_at(system, proximal, drag, h, zero, start, gradient_, w_)) {
+    result.list_invalid = true;
+    return result;
+  }
+  const double phi_start = start.elastic + start.proximal + start.dissipation;
+  if (!evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
+    result.list_invalid = true;
+    return result;
+  }
+  // A guess worse than no move at all is dropped.
+  if (value.elastic + value.proximal + value.dissipation > phi_start) {
+    std::fill(u.begin(), u.end(), Vec3::Zero());
+    evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
+  }
+  if (energies) energies->assign(1, value.elastic + value.proximal + value.dissipation - phi_start);
+  double first_gradient = 1.0;
+
+  for (int it = 0;; ++it) {
+    const ContactField& field = system.forces();
+    const double mean_force =
+        field.contact_count > 0 ? field.force_magnitude_sum / double(field.contact_count) : 1.0;
+    double tolerance = settings_.relative_force * mean_force;
+    if (settings_.absolute_force > 0.0)
+      tolerance = settings_.loosen ? std::max(tolerance, settings_.absolute_force)
+                                   : std::min(tolerance, settings_.absolute_force);
+    result.residual = max_norm(gradient_);
+    if (result.residual <= tolerance) {
+      result.converged = true;
+      break;
+    }
+    if (it >= max_iterations) break;
+    ++result.iterations;
+    ++counters_.iterations;
+
+    // Inexact Newton direction (forcing term → 0 as the gradient falls).
+    assemble(system, proximal, drag, h, tolerance);
+    const double gnorm = std::sqrt(dot(gradient_, gradient_));
+    if (it == 0) first_gradient = gnorm;
+    // Levenberg–Marquardt damping μ: raised while CG meets negative curvature
+    // (a plastic instability, or a contact's tangential softening), lowered
+    // after full Newton steps, so that near a minimum the step is pure Newton.
+    const double eta = std::min(0.1, std::sqrt(gnorm / first_gradient));
+    int cg = newton_direction(proximal, eta);
+    for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
+      damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
+      invert_diagonal();
+      cg += newton_direction(proximal, eta);
+    }
+    counters_.cg_iterations += static_cast<std::size_t>(cg);
+    double longest = max_norm(direction_);
+    if (longest > kMaxMove)
+      for (auto& d : direction_) d *= kMaxMove / longest;
+
+    // Armijo backtracking on Φ. The change is the sum of the parts' changes;
+    // near the minimum it can fall below their rounding, and then the step is
+    // judged by the gradient.
+    const double slope = dot(gradient_, direction_);
+    const double gnorm2 = dot(gradient_, gradient_);
+    bool accepted = false;
+    double t = 1.0;
+    for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
+      for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
+      if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
+        // Back to the last accepted point, where the list is valid.
+        evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
+        result.list_invalid = true;
+        result.energy_change = value.elastic - start.elastic;
+        result.max_displacement = max_norm(u);
+        return result;
+      }
+      const double change = (trial_value.elastic - value.elastic) +
+                            (trial_value.proximal - value.proximal) +
+                            (trial_value.dissipation - value.dissipation);
+      const double rounding = 64.0 * std::numeric_limits<double>::epsilon() *
+                              (std::abs(value.elastic) + std::abs(trial_value.elastic) +
+                               value.proximal + trial_value.proximal + value.dissipation +
+                               trial_value.dissipation);
+      if (change <= kArmijo * t * slope ||
+          (std::abs(change) <= rounding && dot(gradient_trial_, gradient_trial_) < gnorm2)) {
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) {
+      // Leave the system at the last accepted point.
+      evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
+      break;
+    }
+    // Majoriser for contacts whose |w| shrinks fast (see the header).
+    for (std::size_t k = 0; k < drag.size(); ++k) {
+      relief_[k] = w_trial_[k].norm() >= 0.9 * w_[k].norm() ? 0.5 : 0.0;
+    }
+    if (t == 1.0) damping_ = damping_ < 1e-8 * diagonal_scale_ ? 0.0 : 0.1 * damping_;
+    u.swap(trial_);
+    gradient_.swap(gradient_trial_);
+    w_.swap(w_trial_);
+    value = trial_value;
+    if (energies) energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
+  }
+  result.energy_change = value.elastic - start.elastic;
+  result.max_displacement = max_norm(u);
+  return result;
+}
+
+}  // namespace softglass::micro

@@ -1,0 +1,147 @@
+// The incremental (minimising-movement) problem behind the implicit integrator
+// and the quasi-static shear: one backward-Euler step of the overdamped motion
+// is the minimiser of a potential.
+//
+// The motion is a generalised gradient flow with a dissipation potential
+// (spec model.md §4; Ortiz & Stainier's "variational constitutive updates",
+// Mielke's doubly nonlinear flows): ζ_α v_α + ∂Ψ_EHD/∂v_α = F^e_α = −∂E/∂x_α,
+// with Ψ_EHD(v) = Σ_c ⅔ a_c |P_c(v_i − v_j) + w⁰_c|^{3/2} the drag potential of
+// ehd_drag.h (w⁰_c the affine tangential relative velocity). Backward Euler over
+// a strain step h from the affinely sheared configuration x⁰, with non-affine
+// displacement u = h v, is the stationarity condition of
+//     Φ(u) = E(x⁰ + u) + Σ_α ζ_α |u_α|² / (2h) + h Ψ_EHD(u / h),
+// which is why the scheme is unconditionally energy-stable: Φ(u) ≤ Φ(0) means
+// E(x_{n+1}) + (dissipation) ≤ E(x⁰). The drag's geometry (contacts, normals,
+// a_c, w⁰) is frozen at the start of the step; this is a first-order splitting
+// whose effect is in the integrator's error estimate (backward_euler.cpp).
+// With ζ = 0 and no drag, Φ = E: plain energy minimisation (quasi-static shear,
+// aqs.h).
+//
+// Solver: inexact Newton with an Armijo backtracking line search on Φ
+// (Nocedal & Wright, Numerical Optimization, ch. 3 and 7). Each Newton system
+// is solved matrix-free by conjugate gradients with a 3×3 block-Jacobi
+// preconditioner, to a relative residual η = min(0.1, √(‖g‖/‖g₀‖)) (Eisenstat–
+// Walker-type forcing: superlinear convergence without oversolving). The
+// elastic Hessian of a contact, K_c = k_n n nᵀ − (|f|/r)(I − n nᵀ), is
+// indefinite across the contact, and the total one loses definiteness at a
+// plastic instability: CG stops at the first direction of non-positive
+// curvature and returns the iterate so far (Steihaug's truncated CG), which is
+// a descent direction; the Hessian model is then damped, H + μI (Levenberg–
+// Marquardt), μ raised tenfold until CG sees none, and lowered tenfold after
+// each full Newton step. So Φ decreases monotonically, at every iteration. (A
+// sparse Cholesky factorisation was tried first: the fill-in of a periodic 3D
+// contact network made it 10× slower than CG already at N = 256.)
+
+// The √|w| law: the curvature of ⅔ a |w|^{3/2} is a |w|^{−1/2}(P − θ ŵŵᵀ),
+// unbounded as w → 0. Exactly as in the velocity solve (ehd_drag.h): θ = ½ is
+// Newton, θ = 0 the tangent majoriser (a reweighted step), used for a contact
+// while its |w| shrinks by more than 10 % per iteration; and |w| in the model
+// is floored where the contact's drag falls below the force tolerance. The
+// convergence test uses the exact gradient, so neither choice changes the
+// answer, only the path to it.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "micro/system/contact_system.h"
+
+namespace softglass::micro {
+
+struct IncrementalSettings {
+  /// Converged when max_α |∂Φ/∂u_α| ≤ this × the mean contact force, and ≤
+  /// `absolute_force` if that is set (> 0) — or, with `loosen`, ≤ the larger
+  /// of the two (the caller knows that `absolute_force` is accurate enough).
+  double relative_force = 1e-9;
+  double absolute_force = 0.0;
+  bool loosen = false;
+  int max_iterations = 60;
+};
+
+/// The frozen drag of one step (from the contacts at the step's start).
+struct FrozenDrag {
+  std::vector<std::uint32_t> i, j;
+  std::vector<Vec3> normal;       // n_c
+  std::vector<double> coefficient;  // a_c
+  std::vector<Vec3> affine;         // w⁰_c = P_c (d_y e_x)
+  void clear();
+  std::size_t size() const { return i.size(); }
+};
+
+/// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} for every contact of `contacts` (ehd_drag.h).
+void freeze_drag(const ContactList& contacts, double gamma_tilde, FrozenDrag& out);
+
+struct IncrementalResult {
+  bool converged = false;
+  // A trial point left the neighbour list's validity: the system is back at the
+  // last accepted point x⁰ + u (valid), and the caller rebuilds the list and
+  // goes on (or restarts).
+  bool list_invalid = false;
+  int iterations = 0;
+  double residual = 0.0;  // max |∂Φ/∂u| at the end (units E* R²)
+  double energy_change = 0.0;  // E(x⁰ + u) − E(x⁰)
+  double max_displacement = 0.0;  // max |u_α|
+};
+
+/// Counters over the lifetime of a minimiser.
+struct IncrementalCounters {
+  std::size_t solves = 0, iterations = 0, cg_iterations = 0, force_evaluations = 0;
+};
+
+class IncrementalMinimiser {
+ public:
+  explicit IncrementalMinimiser(IncrementalSettings settings = {}) : settings_(settings) {}
+  const IncrementalSettings& settings() const { return settings_; }
+  void set_settings(const IncrementalSettings& s) { settings_ = s; }
+
+  /// Minimises Φ from the configuration `system` is in (x⁰), starting at `u`
+  /// (the guess on entry, the minimiser on return). `proximal` is ζ_α/h per
+  /// particle (empty: none), `drag` the frozen drag (may be empty) and `h` the
+  /// step. On return the system is at x⁰ + u with its forces computed there
+  /// (also when `list_invalid`). If `energies` is given, Φ after each iteration is
+  /// appended (relative to Φ at the start). `max_iterations` ≥ 0 overrides the
+  /// settings' limit for this call.
+  IncrementalResult minimise(ContactSystem& system, std::span<const double> proximal,
+                             const FrozenDrag& drag, double h, std::vector<Vec3>& u,
+                             std::vector<double>* energies = nullptr, int max_iterations = -1);
+
+  const IncrementalCounters& counters() const { return counters_; }
+
+ private:
+  struct Value {
+    double elastic;     // E
+    double proximal;    // Σ ζ|u|²/2h
+    double dissipation; // h Ψ(u/h)
+  };
+  /// Moves the system to x⁰ + u and evaluates forces, Φ's parts and ∇Φ.
+  bool evaluate_at(ContactSystem& system, std::span<const double> proximal,
+                   const FrozenDrag& drag, double h, const std::vector<Vec3>& u, Value& value,
+                   std::vector<Vec3>& gradient, std::vector<Vec3>& w);
+  /// The Hessian model's pair blocks and the inverted diagonal blocks.
+  void assemble(const ContactSystem& system, std::span<const double> proximal,
+                const FrozenDrag& drag, double h, double force_floor);
+  void hessian_times(std::span<const double> proximal, const std::vector<Vec3>& in,
+                     std::vector<Vec3>& out) const;
+  /// Leaves the direction in direction_; returns the CG iterations.
+  int newton_direction(std::span<const double> proximal, double eta);
+
+  IncrementalSettings settings_;
+  IncrementalCounters counters_;
+  // The configuration x⁰ and its list bookkeeping.
+  std::vector<Vec3> base_;
+  ContactSystem::Tracking base_tracking_;
+  double base_strain_ = 0.0;
+  std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_, w_, w_trial_;
+  std::vector<double> relief_;  // θ_c
+  std::vector<std::uint32_t> pair_i_, pair_j_;
+  std::vector<Eigen::Matrix3d> block_, diagonal_, undamped_diagonal_;
+  double damping_ = 0.0;         // μ
+  double diagonal_scale_ = 1.0;  // mean diagonal entry of the Hessian model
+  bool negative_curvature_ = false;
+  void invert_diagonal();
+  std::vector<Vec3> r_, z_, p_, q_;
+};
+
+}  // namespace softglass::micro
