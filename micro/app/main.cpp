@@ -58,6 +58,8 @@ int main(int argc, char** argv) {
   add_run_options(run);
   CLI::App* tmpl =
       app.add_subcommand("template", "print a documented parameter file with all defaults");
+  bool sweep_template = false;
+  tmpl->add_flag("--sweep", sweep_template, "the template of a sweep file (micro sweep)");
   CLI::App* analyze = app.add_subcommand(
       "analyze", "structure of a run's stationary part: g(r, theta), g_lm(r), r_m, f_m Sigma_m");
   micro::AnalyzeOptions analyze_options;
@@ -106,7 +108,7 @@ int main(int argc, char** argv) {
   const micro::Workers workers;
 
   try {
-    if (*tmpl) std::fputs(micro::parameter_template().c_str(), stdout);
+    if (*tmpl) std::fputs(micro::parameter_template(sweep_template).c_str(), stdout);
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
     if (*summary) micro::summary_command(run_files, csv, options.force);

@@ -56,7 +56,8 @@ struct SweepCaseSettings {
 /// `micro run` file) updated.
 MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSettings& settings);
 
-/// The documented template with all defaults.
-std::string parameter_template();
+/// The documented template with all defaults; with `sweep`, that of a sweep
+/// file (the same plus subsection `sweep`).
+std::string parameter_template(bool sweep = false);
 
 }  // namespace softglass::micro
