@@ -134,6 +134,7 @@ FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
   const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
                     packings = columns.require("packings"), g0 = columns.require("G0"),
                     g0_se = columns.require("G0_se");
+  const auto converged = columns.find("converged");
   const auto quantities = value_columns(columns, csv, true);
 
   FlowCurveTable table;
@@ -147,6 +148,14 @@ FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
     p.phi = columns.fraction(r, phi);
     p.gamma_tilde = columns.positive(r, rate);
     p.packings = static_cast<std::size_t>(columns.count(r, packings, 1));
+    if (converged) {
+      const double n = columns.count(r, *converged, 0);
+      if (n > static_cast<double>(p.packings)) {
+        throw InputError(fmt::format("{}: {} (must be at most packings = {})",
+                                     csv.where(r, *converged), n, p.packings));
+      }
+      p.converged = static_cast<std::size_t>(n);
+    }
     p.modulus = {columns.positive(r, g0), columns.value(
                                               r, g0_se, [](double v) { return v >= 0; }, ">= 0")};
     for (Quantity q : kAllQuantities) {

@@ -57,9 +57,10 @@ inline bool may_be_negative(Quantity q) {
 struct StatePoint {
   double phi = 0.0, gamma_tilde = 0.0;
   std::size_t packings = 0;
-  Estimate modulus;              // G0/E*: mean and standard error over packings
-  PerQuantity<Estimate> values;  // sigma always present
-  std::size_t line = 0;          // in the file, for messages
+  std::optional<std::size_t> converged;  // runs that met their stopping rule (`converged [1]`)
+  Estimate modulus;                      // G0/E*: mean and standard error over packings
+  PerQuantity<Estimate> values;          // sigma always present
+  std::size_t line = 0;                  // in the file, for messages
 };
 
 struct FlowCurveTable {
@@ -80,7 +81,8 @@ struct PackingRun {
 
 /// Reads and checks the flow-curve table: required columns, units, finite
 /// values, φ in (0, 1), γ̃ > 0, σ > 0, standard errors > 0, G0 > 0, whole
-/// packing counts ≥ 1, no state point twice. InputError names file, line, column.
+/// packing counts ≥ 1, converged counts (optional column) within 0 … packings,
+/// no state point twice. InputError names file, line, column.
 FlowCurveTable read_flow_curve_table(const CsvTable& csv);
 
 /// Adds the force at maximum accumulation from a structure table: columns

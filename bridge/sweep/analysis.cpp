@@ -140,6 +140,14 @@ SweepAnalysis analyse_sweep(const Sweep& sweep, const Resampler& resampler,
     for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2})
       if (a.sweep.present[index(q)]) a.collapse[index(q)] = homogeneity(a, q);
   }
+  if (!sweep.unconverged.empty()) {
+    std::string points;
+    for (const std::string& u : sweep.unconverged) points += (points.empty() ? "" : "; ") + u;
+    a.warnings.push_back(fmt::format(
+        "{} state point(s) average runs that did not meet their stopping rule (not stationary: "
+        "their values and errors are less reliable): {}",
+        sweep.unconverged.size(), points));
+  }
   warn_about_fits(a, a.warnings);
   warn_about_collapse(a, a.warnings);
   for (const auto& [name, fraction] : a.uncertainty.failures) {

@@ -6,6 +6,8 @@
 // built on them would be extrapolations. Failed (NumericalError): the
 // Herschel–Bulkley fit of σ or the universal stress fit does not converge.
 // Everything else that is doubtful becomes a warning:
+//   - state points averaging runs that did not meet their stopping rule
+//     (`converged` < `packings` in the table);
 //   - a law that misses its data: p-value of χ² below 0.001 (with about 15 fits
 //     per sweep this flags a correct law in about 1.5 % of sweeps);
 //   - volume fractions that do not collapse: each φ's own constant (sweep_fit.h)

@@ -80,6 +80,10 @@ Sweep make_sweep(const FlowCurveTable& table) {
         if (table.present[index(q)]) g.curves[index(q)].emplace();
     }
     PhiGroup& g = sweep.groups.back();
+    if (p->converged && *p->converged < p->packings) {
+      sweep.unconverged.push_back(fmt::format("phi = {}, gamma~ = {:.3g}: {} of {}", p->phi,
+                                              p->gamma_tilde, *p->converged, p->packings));
+    }
     g.lines.push_back(p->line);
     g.packings.push_back(p->packings);
     moduli.push_back(p->modulus);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "bridge/fit/curve.h"
@@ -22,6 +23,9 @@ struct PhiGroup {
 struct Sweep {
   std::vector<PhiGroup> groups;  // increasing φ
   std::array<bool, kQuantities> present{};
+  /// State points averaging runs that did not meet their stopping rule
+  /// (`converged` < `packings`), as "phi = 0.8, gamma~ = 1e-09: 3 of 5".
+  std::vector<std::string> unconverged;
   std::size_t points() const;
 };
 

@@ -2,6 +2,7 @@
 // back exactly, and degenerate input — missing columns and values, NaN,
 // negative values, mixed units, too few points, mismatched companions —
 // refused with a message naming what is wrong.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -209,6 +210,44 @@ TEST(FlowCurveTable, MergesACompanionStructureTable) {
   std::string pascals = structure;
   pascals.replace(pascals.find("f_m [E*R^2]"), 11, "f_m [N]");
   expect_contains(refusal_of(pascals, bare), {"'f_m [N]'", "expected 'E*R^2'"});
+}
+
+// The columns `micro sweep` writes (micro/sweep/flow_curve_table.cpp): the
+// documented ones in its order, with the elastic/viscous parts, pressure, Z,
+// converged, and the structure columns r_m (ignored) and f_m (the force law).
+TEST(FlowCurveTable, ReadsTheTableMicroSweepWrites) {
+  const testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 3);
+  std::string text =
+      "# softglass micro 0.1.0, written 2026-11-21T09:02:15Z\nphi [1],gamma_tilde [1],packings [1]";
+  for (const char* q : {"sigma", "N1", "N2"})
+    for (const char* part : {"", "_elastic", "_viscous"})
+      text += fmt::format(",{0}{1} [E*],{0}{1}_se [E*]", q, part);
+  text +=
+      ",pressure [E*],pressure_se [E*],Z [1],G0 [E*],G0_se [E*],converged [1],r_m [R],"
+      "r_m_se [R],f_m [E*R^2],f_m_se [E*R^2]\n";
+  for (const StatePoint& p : s.table.points) {
+    text += fmt::format("{},{:.10g},{}", p.phi, p.gamma_tilde, p.packings);
+    for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) {
+      const Estimate& e = *p.values[index(q)];
+      // The elastic part carries nearly all of the stress (σ^e ≥ 100 σ^v).
+      text += fmt::format(",{:.10g},{:.6g},{:.10g},{:.6g},{:.10g},{:.6g}", e.value, e.error,
+                          0.99 * e.value, e.error, 0.01 * e.value, 0.01 * e.error);
+    }
+    const Estimate& f = *p.values[index(Quantity::force)];
+    text += fmt::format(",0.05,0.001,8.1,{:.10g},{:.6g},{},1.76,0.008,{:.10g},{:.6g}\n",
+                        p.modulus.value, p.modulus.error, p.packings, f.value, f.error);
+  }
+  const FlowCurveTable table = parse_table(text);
+  EXPECT_EQ(table.points.size(), s.table.points.size());
+  for (Quantity q : kAllQuantities) EXPECT_TRUE(table.present[index(q)]) << column_name(q);
+  EXPECT_NEAR(table.points[7].values[index(Quantity::force)]->value,
+              s.table.points[7].values[index(Quantity::force)]->value,
+              1e-9 * s.table.points[7].values[index(Quantity::force)]->value);
+  EXPECT_EQ(make_sweep(table).groups.size(), 5u);
+  EXPECT_EQ(table.points[0].converged, 5u);
+  std::string too_many = text;
+  too_many.replace(too_many.find(",5,1.76,"), 8, ",6,1.76,");
+  expect_contains(refusal(too_many), {"'converged [1]'", "at most packings = 5"});
 }
 
 }  // namespace

@@ -145,5 +145,21 @@ TEST(SweepAnalysis, WarnsAboutPoorlyDeterminedNormalStresses) {
   EXPECT_TRUE(warned);
 }
 
+// Runs that did not meet their stopping rule (`converged` < `packings`) are named.
+TEST(SweepAnalysis, WarnsAboutStatePointsWithUnconvergedRuns) {
+  testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 2);
+  for (StatePoint& p : s.table.points) p.converged = p.packings;
+  const auto warnings = [&] {
+    const Sweep sweep = make_sweep(s.table);
+    return analyse_sweep(sweep, *make_packing_resampler(sweep, s.runs, "runs"), {50, 1}).warnings;
+  };
+  EXPECT_TRUE(warnings().empty());
+  s.table.points[13].converged = 3;  // φ = 0.75, the third rate
+  const std::vector<std::string> w = warnings();
+  ASSERT_EQ(w.size(), 1u);
+  expect_contains(w[0],
+                  {"1 state point(s)", "stopping rule", "phi = 0.75, gamma~ = 1e-08: 3 of 5"});
+}
+
 }  // namespace
 }  // namespace softglass::bridge
