@@ -26,17 +26,20 @@ int fail(int code, const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace softglass;
-  CLI::App app{"softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
-               "channels, pipes and ducts (deal.II finite elements)",
-               "macro"};
+  CLI::App app{
+      "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
+      "channels, pipes and ducts (deal.II finite elements)",
+      "macro"};
   app.set_version_flag("--version", fmt::format("softglass macro {} ({})", kVersion, kGitRevision));
   app.require_subcommand(1);
   macro::app::RunOptions options;
-  CLI::App* run = app.add_subcommand("run", "solve a scene file over its sweep of operating points");
+  CLI::App* run =
+      app.add_subcommand("run", "solve a scene file over its sweep of operating points");
   run->add_option("scene", options.scene_file, "scene file (.prm)")->required();
   run->add_option("-o,--output", options.output,
                   "output directory (default: <scene stem>_results)");
-  run->add_option("--preset", options.preset, "override the file's solver preset: fast | standard | accurate");
+  run->add_option("--preset", options.preset,
+                  "override the file's solver preset: fast | standard | accurate");
   run->add_flag("-f,--force", options.force, "overwrite existing results");
   run->add_flag("-q,--quiet", options.quiet, "no progress display");
   app.add_subcommand("template", "print a documented scene file with every entry");

@@ -19,7 +19,9 @@ namespace softglass::macro::app {
 
 namespace {
 
-std::string header(const Column& c) { return fmt::format("{} [{}]", c.name, c.unit); }
+std::string header(const Column& c) {
+  return fmt::format("{} [{}]", c.name, c.unit);
+}
 
 }  // namespace
 
@@ -33,7 +35,8 @@ int run(const RunOptions& options) {
     try {
       prm.set("preset", options.preset);
     } catch (const dealii::ExceptionBase&) {
-      throw InputError(fmt::format("--preset {} is unknown; allowed: fast, standard, accurate", options.preset));
+      throw InputError(
+          fmt::format("--preset {} is unknown; allowed: fast, standard, accurate", options.preset));
     }
     prm.leave_subsection();
   }
@@ -45,8 +48,9 @@ int run(const RunOptions& options) {
   prm.leave_subsection();
 
   const std::filesystem::path directory =
-      options.output.empty() ? std::filesystem::path(options.scene_file.stem().string() + "_results")
-                             : options.output;
+      options.output.empty()
+          ? std::filesystem::path(options.scene_file.stem().string() + "_results")
+          : options.output;
   std::filesystem::create_directories(directory);
   // Both results are claimed before any work, so that a refusal costs nothing.
   AtomicOutput csv_file(directory / "results.csv", options.force);
@@ -62,8 +66,9 @@ int run(const RunOptions& options) {
   csv << fmt::format("# material: tau_y = {} Pa, K = {} Pa s^n, n = {}; solver: preset {}, {}",
                      material.shear.yield_stress, material.shear.consistency,
                      material.shear.flow_index, settings.preset,
-                     settings.method == fe::Method::regularised ? settings.regularisation + " regularisation"
-                                                                : std::string("augmented Lagrangian"))
+                     settings.method == fe::Method::regularised
+                         ? settings.regularisation + " regularisation"
+                         : std::string("augmented Lagrangian"))
       << "\n";
   csv << header(drive);
   for (const Column& c : columns) csv << "," << header(c);
@@ -89,7 +94,8 @@ int run(const RunOptions& options) {
   csv.close();
   if (!csv) throw NumericalError(fmt::format("cannot write {}", csv_file.final_path().string()));
 
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ofstream summary(summary_file.temporary_path());
   summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
   summary << "scene file: " << options.scene_file.string() << "\n";
@@ -102,16 +108,17 @@ int run(const RunOptions& options) {
     disc = std::max(disc, std::abs(row[1] / row[0]));
     reg = std::max(reg, std::abs(row[2] / row[0]));
   }
-  summary << fmt::format("largest estimated relative {} error: discretisation {:.2e}, regularisation {:.2e}\n",
-                         columns[0].name, disc, reg);
+  summary << fmt::format(
+      "largest estimated relative {} error: discretisation {:.2e}, regularisation {:.2e}\n",
+      columns[0].name, disc, reg);
   summary << "\nfull parameter set:\n";
   prm.print_parameters(summary, dealii::ParameterHandler::Text);
   summary.close();
   csv_file.commit();
   summary_file.commit();
   if (!options.quiet) {
-    std::cout << fmt::format("{} operating points in {:.2f} s; results in {}\n", points.size(), wall,
-                             directory.string());
+    std::cout << fmt::format("{} operating points in {:.2f} s; results in {}\n", points.size(),
+                             wall, directory.string());
   }
   return kExitOk;
 }

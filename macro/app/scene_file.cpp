@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "common/errors.h"
-#include "macro/io/deal_ii_errors.h"
 #include "macro/fe/solver_settings.h"
+#include "macro/io/deal_ii_errors.h"
 #include "macro/material/material_parameters.h"
 #include "macro/scenes/scene.h"
 
@@ -63,7 +63,9 @@ void declare_scene_file(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-std::string expand_includes(const std::filesystem::path& file) { return expand(file, 0); }
+std::string expand_includes(const std::filesystem::path& file) {
+  return expand(file, 0);
+}
 
 void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
                       const std::string& source) {

@@ -93,7 +93,9 @@ constexpr double kSmallestContinuationStep = 1.2;
 constexpr double kLineSearchReduction = 0.1;
 constexpr int kLineSearchSteps = 12;
 
-double power(double r, int k) { return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k)); }
+double power(double r, int k) {
+  return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k));
+}
 
 Outputs difference(const Outputs& a, const Outputs& b, double divisor) {
   return {.flow = std::abs(a.flow - b.flow) / divisor,
@@ -146,7 +148,9 @@ class ScalarFlowSolver<dim>::Implementation {
 
   /// The stress of the current solution at a shear rate: the regularised law
   /// while regularising, the rate field of ALG2 otherwise.
-  double stress(double rate) const { return regularised_ ? regularised_->stress(rate) : law_.stress(rate); }
+  double stress(double rate) const {
+    return regularised_ ? regularised_->stress(rate) : law_.stress(rate);
+  }
 
   double rho(const Point<dim>& x) const { return power(x[0], weights_.radial_weight); }
   double s(const Point<dim>& x) const { return power(x[0], weights_.rate_radius_power); }
@@ -199,9 +203,9 @@ void ScalarFlowSolver<dim>::Implementation::make_constraints() {
     constraints->clear();
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, value] : drive_.boundary_values) {
-      VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id,
-                                               Functions::ConstantFunction<dim>(homogeneous ? 0.0 : value),
-                                               *constraints);
+      VectorTools::interpolate_boundary_values(
+          mapping_, dof_handler_, id, Functions::ConstantFunction<dim>(homogeneous ? 0.0 : value),
+          *constraints);
     }
     constraints->close();
   }
@@ -222,9 +226,9 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
   if (with_matrix) system_matrix_ = 0.0;
   residual_ = 0.0;
   const QGauss<dim> quadrature(fe_.degree + 1);
-  FEValues<dim> fe_values(mapping_, fe_, quadrature,
-                          update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
+  FEValues<dim> fe_values(
+      mapping_, fe_, quadrature,
+      update_values | update_gradients | update_quadrature_points | update_JxW_values);
   const unsigned n = fe_.n_dofs_per_cell();
   FullMatrix<double> cell_matrix(n, n);
   Vector<double> cell_residual(n);
@@ -247,12 +251,14 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
       const double f = drive_.source * rho(x) * fe_values.JxW(q);
       for (unsigned i = 0; i < n; ++i) {
         const Tensor<1, dim> grad_i = fe_values.shape_grad(i, q);
-        cell_residual(i) += weight * eta.value * (gradients[q] * grad_i) - f * fe_values.shape_value(i, q);
+        cell_residual(i) +=
+            weight * eta.value * (gradients[q] * grad_i) - f * fe_values.shape_value(i, q);
         if (!with_matrix) continue;
         const double n_i = direction * grad_i;
         for (unsigned j = 0; j < n; ++j) {
           const Tensor<1, dim> grad_j = fe_values.shape_grad(j, q);
-          cell_matrix(i, j) += weight * (eta.value * (grad_i * grad_j) + anisotropy * n_i * (direction * grad_j));
+          cell_matrix(i, j) +=
+              weight * (eta.value * (grad_i * grad_j) + anisotropy * n_i * (direction * grad_j));
         }
       }
     }
@@ -268,9 +274,8 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
 
 // φ'(α) = R(u + αδ)(δ) for the trial u + αδ.
 template <int dim>
-double ScalarFlowSolver<dim>::Implementation::directional_derivative(const RegularisedLaw& law,
-                                                                     const Vector<double>& trial,
-                                                                     const Vector<double>& direction) {
+double ScalarFlowSolver<dim>::Implementation::directional_derivative(
+    const RegularisedLaw& law, const Vector<double>& trial, const Vector<double>& direction) {
   const Vector<double> saved = solution_;
   solution_ = trial;
   assemble_system(law, false);
@@ -314,6 +319,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
       }
     }
     solution_.add(alpha, update);
+    // SOFTGLASS_MACRO_DEBUG=1 traces every Newton step (convergence problems).
     if (std::getenv("SOFTGLASS_MACRO_DEBUG"))
       fmt::print(stderr, "newton eps={:.3g} it={} |R|={:.3e} alpha={:.3g} |du|={:.3e}\n",
                  law.rate_scale(), iteration, residual_norm, alpha, update.linfty_norm());
@@ -362,9 +368,9 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
     double penalty, Outputs* previous_outputs) {
   const std::unique_ptr<RegularisedLaw> start_law = std::move(regularised_);
   const QGauss<dim> quadrature(fe_.degree + 1);
-  FEValues<dim> fe_values(mapping_, fe_, quadrature,
-                          update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
+  FEValues<dim> fe_values(
+      mapping_, fe_, quadrature,
+      update_values | update_gradients | update_quadrature_points | update_JxW_values);
   const unsigned n = fe_.n_dofs_per_cell(), nq = quadrature.size();
   const std::size_t points = triangulation_.n_active_cells() * nq;
   std::vector<Tensor<1, dim>> rate(points), multiplier(points), gradients(nq);
@@ -389,9 +395,12 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
         const double sq = s(x), jxw = rho(x) * fe_values.JxW(q);
         const Tensor<1, dim> load = sq * (multiplier[k + q] - penalty * rate[k + q]);
         for (unsigned i = 0; i < n; ++i) {
-          cell_rhs(i) += (drive_.source * fe_values.shape_value(i, q) - load * fe_values.shape_grad(i, q)) * jxw;
+          cell_rhs(i) +=
+              (drive_.source * fe_values.shape_value(i, q) - load * fe_values.shape_grad(i, q)) *
+              jxw;
           for (unsigned j = 0; j < n; ++j)
-            cell_matrix(i, j) += penalty * sq * sq * (fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q)) * jxw;
+            cell_matrix(i, j) +=
+                penalty * sq * sq * (fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q)) * jxw;
         }
       }
       cell->get_dof_indices(dofs);
@@ -479,9 +488,9 @@ template <int dim>
 Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional& boundary) const {
   Outputs out;
   const QGauss<dim> quadrature(fe_.degree + 1);
-  FEValues<dim> fe_values(mapping_, fe_, quadrature,
-                          update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
+  FEValues<dim> fe_values(
+      mapping_, fe_, quadrature,
+      update_values | update_gradients | update_quadrature_points | update_JxW_values);
   std::vector<double> values(quadrature.size());
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   double volume = 0.0, yielded = 0.0;
@@ -506,14 +515,16 @@ Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional
       for (const unsigned f : cell->face_indices()) {
         if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != boundary.id) continue;
         const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
-        FEFaceValues<dim> face_values(mapping_, fe_, face_quadrature,
-                                      update_gradients | update_quadrature_points | update_JxW_values);
+        FEFaceValues<dim> face_values(
+            mapping_, fe_, face_quadrature,
+            update_gradients | update_quadrature_points | update_JxW_values);
         face_values.reinit(cell, f);
         std::vector<Tensor<1, dim>> face_gradients(face_quadrature.size());
         face_values.get_function_gradients(solution_, face_gradients);
         for (const unsigned q : face_values.quadrature_point_indices()) {
           const Point<dim>& x = face_values.quadrature_point(q);
-          out.boundary += boundary.integrand(s(x) * face_gradients[q].norm()) * rho(x) * face_values.JxW(q);
+          out.boundary +=
+              boundary.integrand(s(x) * face_gradients[q].norm()) * rho(x) * face_values.JxW(q);
         }
       }
     }
@@ -545,7 +556,8 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
     fe_values.get_function_gradients(solution_, gradients);
     bool above = false, below = false;
     for (const unsigned q : fe_values.quadrature_point_indices()) {
-      const double rate = regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
+      const double rate =
+          regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
       const bool yielded = regularised_ ? stress(rate) > law_.yield_stress : rate > 0.0;
       (yielded ? above : below) = true;
       ++k;
@@ -598,8 +610,8 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
     // to 10ε, falling back to the full continuation if Newton fails.
     const double coarse = kContinuationFactor * target;
     try {
-      result.iterations += warm ? solve_with_continuation(coarse, coarse)
-                                : solve_with_continuation(coarse, rate_c);
+      result.iterations +=
+          warm ? solve_with_continuation(coarse, coarse) : solve_with_continuation(coarse, rate_c);
     } catch (const NumericalError&) {
       if (!warm) throw;
       solution_ = 0.0;
@@ -621,9 +633,9 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
       al_iterations_ > al_record_iteration_
           ? double(al_iterations_ - al_record_iteration_) / std::max(1u, al_record_iteration_)
           : 1.0;
-  result.regularisation_error =
-      settings_.method == Method::regularised ? difference(value, before, kContinuationFactor - 1.0)
-                                              : difference(value, before, al_factor);
+  result.regularisation_error = settings_.method == Method::regularised
+                                    ? difference(value, before, kContinuationFactor - 1.0)
+                                    : difference(value, before, al_factor);
 
   for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
     refine_mesh();
@@ -648,12 +660,14 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
   result.value = value;
   result.cells = triangulation_.n_active_cells();
   result.dofs = dof_handler_.n_dofs();
-  result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
 template <int dim>
-void ScalarFlowSolver<dim>::Implementation::output_results(const std::filesystem::path& file) const {
+void ScalarFlowSolver<dim>::Implementation::output_results(
+    const std::filesystem::path& file) const {
   // Cell averages of the derived fields (one value per cell keeps the file
   // small and shows the yield surface as the set of partly yielded cells).
   const unsigned n_cells = triangulation_.n_active_cells();
@@ -667,18 +681,21 @@ void ScalarFlowSolver<dim>::Implementation::output_results(const std::filesystem
     fe_values.get_function_gradients(solution_, gradients);
     const unsigned c = cell->active_cell_index();
     for (const unsigned q : fe_values.quadrature_point_indices()) {
-      const double g = regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
+      const double g =
+          regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
       const double t = stress(g);
       rate(c) += g / quadrature.size();
       tau(c) += t / quadrature.size();
-      yielded(c) += (regularised_ ? t > law_.yield_stress : g > 0.0) ? 1.0 / quadrature.size() : 0.0;
+      yielded(c) +=
+          (regularised_ ? t > law_.yield_stress : g > 0.0) ? 1.0 / quadrature.size() : 0.0;
       ++k;
     }
     eta(c) = rate(c) > 0.0 ? tau(c) / rate(c) : std::numeric_limits<double>::infinity();
   }
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler_);
-  data_out.add_data_vector(solution_, weights_.rate_radius_power == 1 ? "angular_velocity" : "velocity");
+  data_out.add_data_vector(solution_,
+                           weights_.rate_radius_power == 1 ? "angular_velocity" : "velocity");
   data_out.add_data_vector(rate, "shear_rate");
   data_out.add_data_vector(tau, "stress");
   data_out.add_data_vector(eta, "viscosity");
@@ -692,9 +709,9 @@ void ScalarFlowSolver<dim>::Implementation::output_results(const std::filesystem
 // --- the public face -------------------------------------------------------------
 
 template <int dim>
-ScalarFlowSolver<dim>::ScalarFlowSolver(const Triangulation<dim>& base_mesh, unsigned mapping_degree,
-                                        const SectionWeights& weights, const HerschelBulkley& law,
-                                        const SolverSettings& settings)
+ScalarFlowSolver<dim>::ScalarFlowSolver(const Triangulation<dim>& base_mesh,
+                                        unsigned mapping_degree, const SectionWeights& weights,
+                                        const HerschelBulkley& law, const SolverSettings& settings)
     : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, law, settings)) {}
 
 template <int dim>

@@ -41,18 +41,22 @@ SolverSettings preset(const std::string& name) {
   return s;
 }
 
-std::vector<std::string> preset_names() { return {"fast", "standard", "accurate"}; }
+std::vector<std::string> preset_names() {
+  return {"fast", "standard", "accurate"};
+}
 
 void declare_solver_settings(dealii::ParameterHandler& prm) {
   using dealii::Patterns::Anything;
   using dealii::Patterns::Selection;
   prm.enter_subsection("solver");
-  prm.declare_entry("preset", "standard", Selection("fast|standard|accurate"),
-                    "fast | standard | accurate: regularisation, mesh and adaptive cycles together");
+  prm.declare_entry(
+      "preset", "standard", Selection("fast|standard|accurate"),
+      "fast | standard | accurate: regularisation, mesh and adaptive cycles together");
   prm.declare_entry("method", "regularised", Selection("regularised|augmented-lagrangian"),
                     "regularised (Newton, continuation in eps) | augmented-lagrangian (ALG2, exact "
                     "yield surfaces, slower)");
-  prm.declare_entry("regularisation", "papanastasiou", Selection("papanastasiou|bercovier-engelman"),
+  prm.declare_entry("regularisation", "papanastasiou",
+                    Selection("papanastasiou|bercovier-engelman"),
                     "the regularised viscosity of the regularised method");
   // Overrides: empty keeps the preset's value.
   prm.declare_entry("relative rate scale", "", Anything(),
@@ -76,8 +80,8 @@ double number(const std::string& entry, const std::string& text, double lo, doub
     used = 0;
   }
   require(used == text.size() && value >= lo && value <= hi,
-          fmt::format("solver: {} = '{}' is not allowed; allowed: a number in [{}, {}]", entry, text,
-                      lo, hi));
+          fmt::format("solver: {} = '{}' is not allowed; allowed: a number in [{}, {}]", entry,
+                      text, lo, hi));
   return value;
 }
 

@@ -43,13 +43,15 @@ std::unique_ptr<Scene> make_channel(ParameterHandler& prm, const Material& mater
   meshes::interval(mesh, 0.0, H, cells);
   const HerschelBulkley law = material.shear;
   ReducedSceneSpec<1> spec;
-  spec.description = fmt::format("plane channel, half height {} m: u_x(y) on [0, H], symmetry at y = 0, "
-                                 "no slip at y = H",
-                                 H);
+  spec.description = fmt::format(
+      "plane channel, half height {} m: u_x(y) on [0, H], symmetry at y = 0, "
+      "no slip at y = H",
+      H);
   spec.weights = {.radial_weight = 0, .rate_radius_power = 0, .measure_factor = 2.0};
   spec.flow_unit = "m^2/s";
   spec.drive = [law, H](double G) {
-    return fe::Drive{.source = G, .boundary_values = {{1, 0.0}},
+    return fe::Drive{.source = G,
+                     .boundary_values = {{1, 0.0}},
                      .characteristic_rate = pressure_rate_scale(law, G * H)};
   };
   spec.reference = [law, H](double G) {
@@ -70,9 +72,11 @@ std::unique_ptr<Scene> make_pipe(ParameterHandler& prm, const Material& material
   ReducedSceneSpec<1> spec;
   spec.description =
       fmt::format("pipe, radius {} m: u_z(r) on [0, R] (axisymmetric), no slip at r = R", R);
-  spec.weights = {.radial_weight = 1, .rate_radius_power = 0, .measure_factor = 2.0 * std::numbers::pi};
+  spec.weights = {
+      .radial_weight = 1, .rate_radius_power = 0, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = [law, R](double G) {
-    return fe::Drive{.source = G, .boundary_values = {{1, 0.0}},
+    return fe::Drive{.source = G,
+                     .boundary_values = {{1, 0.0}},
                      .characteristic_rate = pressure_rate_scale(law, 0.5 * G * R)};
   };
   spec.reference = [law, R](double G) {

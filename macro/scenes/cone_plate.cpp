@@ -34,8 +34,9 @@ void declare_cone_plate(ParameterHandler& prm) {
   prm.declare_entry("angle", "2", Patterns::Double(), "beta [deg], the cone angle, 0 < beta < 30");
   prm.declare_entry("truncation", "48e-6", Patterns::Double(),
                     "h_t [m], the gap at the axis (cone tip removed), >= 0 and < R tan(beta)/2");
-  prm.declare_entry("rim", "spherical", Patterns::Selection("spherical|cylindrical"),
-                    "spherical (about the cone's apex, the closed form's rim) | cylindrical (r = R)");
+  prm.declare_entry(
+      "rim", "spherical", Patterns::Selection("spherical|cylindrical"),
+      "spherical (about the cone's apex, the closed form's rim) | cylindrical (r = R)");
   prm.declare_entry("radial cells", "24", Patterns::Integer(2, 10000), "cells along the radius");
   prm.declare_entry("gap cells", "2", Patterns::Integer(1, 1000), "cells across the gap");
   prm.leave_subsection();
@@ -45,13 +46,16 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
                                        const fe::SolverSettings& settings) {
   prm.enter_subsection("cone-plate");
   const double R = entries::positive(prm, "cone-plate", "radius", "m");
-  const double beta = entries::between(prm, "cone-plate", "angle", "deg", 0.0, 30.0) * std::numbers::pi / 180.0;
+  const double beta =
+      entries::between(prm, "cone-plate", "angle", "deg", 0.0, 30.0) * std::numbers::pi / 180.0;
   const double h_t = entries::non_negative(prm, "cone-plate", "truncation", "m");
   require(h_t < 0.5 * R * std::tan(beta),
-          fmt::format("cone-plate: truncation = {} [m] is not allowed; allowed: < R tan(beta)/2 = {} [m]",
-                      h_t, 0.5 * R * std::tan(beta)));
-  require(h_t > 0.0, "cone-plate: truncation = 0 [m] is not allowed (the apex would be a degenerate "
-                     "cell); allowed: > 0 [m], e.g. 1e-6 R for an ideal cone");
+          fmt::format(
+              "cone-plate: truncation = {} [m] is not allowed; allowed: < R tan(beta)/2 = {} [m]",
+              h_t, 0.5 * R * std::tan(beta)));
+  require(h_t > 0.0,
+          "cone-plate: truncation = 0 [m] is not allowed (the apex would be a degenerate "
+          "cell); allowed: > 0 [m], e.g. 1e-6 R for an ideal cone");
   const bool spherical = prm.get("rim") == "spherical";
   const unsigned radial = prm.get_integer("radial cells"), gap = prm.get_integer("gap cells");
   prm.leave_subsection();
@@ -63,14 +67,17 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
   const exact::ConePlate cone{.radius = R, .angle = beta};
   ReducedSceneSpec<2> spec;
   spec.description = fmt::format(
-      "cone and plate R = {} m, beta = {} deg, truncation {} m, {} rim: omega(r, z) in the meridian "
+      "cone and plate R = {} m, beta = {} deg, truncation {} m, {} rim: omega(r, z) in the "
+      "meridian "
       "plane, cone at Omega, plate fixed",
       R, beta * 180.0 / std::numbers::pi, h_t, spherical ? "spherical" : "cylindrical");
   spec.kind = DriveKind::rotation;
   spec.mapping_degree = spherical ? 2 : 1;  // curved cells at the spherical rim
-  spec.weights = {.radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
+  spec.weights = {
+      .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = [beta](double omega) {
-    return fe::Drive{.source = 0.0, .boundary_values = {{3, omega}, {2, 0.0}},
+    return fe::Drive{.source = 0.0,
+                     .boundary_values = {{3, omega}, {2, 0.0}},
                      .characteristic_rate = omega / std::tan(beta)};
   };
   if (n1.consistency != 0.0 || n1.yield != 0.0) {

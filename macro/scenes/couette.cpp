@@ -42,7 +42,8 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   const double R1 = entries::positive(prm, "couette", "inner radius", "m");
   const double R2 = entries::positive(prm, "couette", "outer radius", "m");
   require(R2 > R1, fmt::format("couette: outer radius = {} [m] is not allowed; allowed: > inner "
-                               "radius = {} [m]", R2, R1));
+                               "radius = {} [m]",
+                               R2, R1));
   const double L = entries::positive(prm, "couette", "length", "m");
   const bool ends = prm.get_bool("end effects");
   const double h_b = entries::positive(prm, "couette", "bottom gap", "m");
@@ -55,7 +56,8 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   const double rate_factor = 2.0 * R2 * R2 / (R2 * R2 - R1 * R1);
   const auto reference = [law, cell](double omega) { return exact::torque(law, cell, omega); };
   const auto drive = [rate_factor](double omega) {
-    return fe::Drive{.source = 0.0, .boundary_values = {{0, omega}, {1, 0.0}},
+    return fe::Drive{.source = 0.0,
+                     .boundary_values = {{0, omega}, {1, 0.0}},
                      .characteristic_rate = rate_factor * omega};
   };
   if (!ends) {
@@ -63,10 +65,12 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
     meshes::interval(mesh, R1, R2, cells);
     ReducedSceneSpec<1> spec;
     spec.description = fmt::format(
-        "Couette cell R1 = {} m, R2 = {} m, L = {} m without end effects: omega(r), bob at Omega, cup fixed",
+        "Couette cell R1 = {} m, R2 = {} m, L = {} m without end effects: omega(r), bob at Omega, "
+        "cup fixed",
         R1, R2, L);
     spec.kind = DriveKind::rotation;
-    spec.weights = {.radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi * L};
+    spec.weights = {
+        .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi * L};
     spec.drive = drive;
     spec.reference = reference;
     return make_reduced_scene(mesh, std::move(spec), law, settings);
@@ -79,7 +83,8 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
       "omega(r, z) in the meridian plane",
       R1, R2, L, h_b);
   spec.kind = DriveKind::rotation;
-  spec.weights = {.radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
+  spec.weights = {
+      .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = drive;
   spec.reference = reference;
   return make_reduced_scene(mesh, std::move(spec), law, settings);

@@ -3,8 +3,8 @@
 // closed form, the pipe's, is reported beside the result) or a Gmsh mesh; every
 // boundary of a Gmsh mesh is wall.
 #include <deal.II/base/parameter_handler.h>
-#include <fmt/format.h>
 #include <deal.II/grid/grid_tools.h>
+#include <fmt/format.h>
 
 #include <numbers>
 
@@ -26,8 +26,9 @@ void declare_duct(ParameterHandler& prm) {
   prm.declare_entry("width", "0.01", Patterns::Double(), "rectangle: width [m], > 0");
   prm.declare_entry("height", "0.01", Patterns::Double(), "rectangle: height [m], > 0");
   prm.declare_entry("radius", "0.005", Patterns::Double(), "circle: radius [m], > 0");
-  prm.declare_entry("mesh file", "", Patterns::Anything(),
-                    "gmsh: a 2D quadrilateral .msh file, lengths in m (relative to the scene file)");
+  prm.declare_entry(
+      "mesh file", "", Patterns::Anything(),
+      "gmsh: a 2D quadrilateral .msh file, lengths in m (relative to the scene file)");
   prm.declare_entry("cells", "8", Patterns::Integer(1, 1000),
                     "rectangle: cells along the longer side");
   prm.leave_subsection();
@@ -59,7 +60,8 @@ std::unique_ptr<Scene> make_duct(ParameterHandler& prm, const Material& material
     };
   } else {
     std::filesystem::path file = prm.get("mesh file");
-    require(!file.empty(), "duct: mesh file = '' is not allowed with section = gmsh; allowed: a .msh file");
+    require(!file.empty(),
+            "duct: mesh file = '' is not allowed with section = gmsh; allowed: a .msh file");
     if (file.is_relative()) file = scene_directory / file;
     meshes::gmsh(mesh, file);
     spec.description = fmt::format("duct, section from {} (Mosolov problem)", file.string());
@@ -75,7 +77,8 @@ std::unique_ptr<Scene> make_duct(ParameterHandler& prm, const Material& material
   const double hydraulic = dealii::GridTools::volume(mesh) / perimeter;
   spec.weights = {.radial_weight = 0, .rate_radius_power = 0, .measure_factor = 1.0};
   spec.drive = [law, hydraulic](double G) {
-    return fe::Drive{.source = G, .boundary_values = {{0, 0.0}},
+    return fe::Drive{.source = G,
+                     .boundary_values = {{0, 0.0}},
                      .characteristic_rate = pressure_rate_scale(law, G * hydraulic)};
   };
   return make_reduced_scene(mesh, std::move(spec), law, settings);

@@ -11,9 +11,9 @@ namespace softglass::macro::entries {
 
 namespace {
 
-double checked(const dealii::ParameterHandler& prm, const std::string& scene, const std::string& entry,
-               const std::string& unit, bool ok(double, double, double), double lo, double hi,
-               const std::string& allowed) {
+double checked(const dealii::ParameterHandler& prm, const std::string& scene,
+               const std::string& entry, const std::string& unit, bool ok(double, double, double),
+               double lo, double hi, const std::string& allowed) {
   const double value = prm.get_double(entry);
   require(std::isfinite(value) && ok(value, lo, hi),
           fmt::format("{}: {} = {} [{}] is not allowed; allowed: {} [{}]", scene, entry,
@@ -25,20 +25,21 @@ double checked(const dealii::ParameterHandler& prm, const std::string& scene, co
 
 double positive(const dealii::ParameterHandler& prm, const std::string& scene,
                 const std::string& entry, const std::string& unit) {
-  return checked(prm, scene, entry, unit, [](double v, double, double) { return v > 0.0; }, 0, 0,
-                 "> 0");
+  return checked(
+      prm, scene, entry, unit, [](double v, double, double) { return v > 0.0; }, 0, 0, "> 0");
 }
 
 double non_negative(const dealii::ParameterHandler& prm, const std::string& scene,
                     const std::string& entry, const std::string& unit) {
-  return checked(prm, scene, entry, unit, [](double v, double, double) { return v >= 0.0; }, 0, 0,
-                 ">= 0");
+  return checked(
+      prm, scene, entry, unit, [](double v, double, double) { return v >= 0.0; }, 0, 0, ">= 0");
 }
 
 double between(const dealii::ParameterHandler& prm, const std::string& scene,
                const std::string& entry, const std::string& unit, double lo, double hi) {
-  return checked(prm, scene, entry, unit, [](double v, double a, double b) { return v > a && v < b; },
-                 lo, hi, fmt::format("between {} and {} (exclusive)", lo, hi));
+  return checked(
+      prm, scene, entry, unit, [](double v, double a, double b) { return v > a && v < b; }, lo, hi,
+      fmt::format("between {} and {} (exclusive)", lo, hi));
 }
 
 }  // namespace softglass::macro::entries

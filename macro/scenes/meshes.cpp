@@ -37,7 +37,8 @@ void interval(Triangulation<1>& mesh, double a, double b, unsigned cells) {
 
 void rectangle(Triangulation<2>& mesh, double x0, double x1, double y0, double y1, unsigned nx,
                unsigned ny) {
-  GridGenerator::subdivided_hyper_rectangle(mesh, {nx, ny}, Point<2>(x0, y0), Point<2>(x1, y1), true);
+  GridGenerator::subdivided_hyper_rectangle(mesh, {nx, ny}, Point<2>(x0, y0), Point<2>(x1, y1),
+                                            true);
 }
 
 void disc(Triangulation<2>& mesh, double radius) {
@@ -60,7 +61,8 @@ void gmsh(Triangulation<2>& mesh, const std::filesystem::path& file) {
         fmt::format("duct: mesh file = '{}' is not a readable 2D Gmsh mesh of quadrilaterals: {}",
                     file.string(), error.what()));
   }
-  require(mesh.n_active_cells() > 0, fmt::format("duct: mesh file = '{}' has no cells", file.string()));
+  require(mesh.n_active_cells() > 0,
+          fmt::format("duct: mesh file = '{}' has no cells", file.string()));
 }
 
 void cone_plate(Triangulation<2>& mesh, double radius, double angle, double truncation,
@@ -107,7 +109,9 @@ void cone_plate(Triangulation<2>& mesh, double radius, double angle, double trun
 void couette_with_bottom(Triangulation<2>& mesh, double inner_radius, double outer_radius,
                          double length, double bottom_gap, unsigned gap_cells) {
   const double gap = outer_radius - inner_radius, cell = gap / gap_cells;
-  const auto count = [&](double extent) { return std::max(1u, unsigned(std::lround(extent / cell))); };
+  const auto count = [&](double extent) {
+    return std::max(1u, unsigned(std::lround(extent / cell)));
+  };
   std::vector<double> r_steps = steps(inner_radius, count(inner_radius));
   for (double h : steps(gap, gap_cells)) r_steps.push_back(h);
   std::vector<double> z_steps = steps(bottom_gap, count(bottom_gap));

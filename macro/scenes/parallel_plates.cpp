@@ -39,11 +39,14 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Materia
   const exact::ParallelPlates plates{.radius = R, .gap = h};
   ReducedSceneSpec<2> spec;
   spec.description = fmt::format(
-      "parallel plates R = {} m, gap {} m: omega(r, z) in the meridian plane, upper plate at Omega", R, h);
+      "parallel plates R = {} m, gap {} m: omega(r, z) in the meridian plane, upper plate at Omega",
+      R, h);
   spec.kind = DriveKind::rotation;
-  spec.weights = {.radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
+  spec.weights = {
+      .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = [R, h](double omega) {
-    return fe::Drive{.source = 0.0, .boundary_values = {{3, omega}, {2, 0.0}},
+    return fe::Drive{.source = 0.0,
+                     .boundary_values = {{3, omega}, {2, 0.0}},
                      .characteristic_rate = omega * R / h};
   };
   spec.reference = [law, plates](double omega) { return exact::torque(law, plates, omega); };

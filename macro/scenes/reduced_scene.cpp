@@ -25,7 +25,8 @@ class ReducedScene final : public Scene {
     const bool rotation = spec_.kind == DriveKind::rotation;
     const std::string name = rotation ? "torque" : "flow_rate";
     const std::string unit = rotation ? "N m" : spec_.flow_unit;
-    std::vector<Column> c{{name, unit}, {name + "_discretisation_error", unit},
+    std::vector<Column> c{{name, unit},
+                          {name + "_discretisation_error", unit},
                           {name + "_regularisation_error", unit}};
     if (spec_.reference) {
       c.push_back({name + "_ideal_geometry", unit});
@@ -48,9 +49,12 @@ class ReducedScene final : public Scene {
     // Torque from the dissipation: T Ω = ∫ τ γ̇ dV (the discrete reaction of
     // the rotor with the test function ω_h/Ω, which is 1 there and 0 on the
     // stator); flow rate c∫ρu directly.
-    const auto primary = [&](const fe::Outputs& o) { return rotation ? o.dissipation / drive : o.flow; };
+    const auto primary = [&](const fe::Outputs& o) {
+      return rotation ? o.dissipation / drive : o.flow;
+    };
     const double value = primary(r.value);
-    std::vector<double> row{value, primary(r.discretisation_error), primary(r.regularisation_error)};
+    std::vector<double> row{value, primary(r.discretisation_error),
+                            primary(r.regularisation_error)};
     if (spec_.reference) {
       const double ideal = spec_.reference(drive);
       row.push_back(ideal);

@@ -21,7 +21,8 @@ std::unique_ptr<Scene> make_pipe(ParameterHandler&, const Material&, const fe::S
 std::unique_ptr<Scene> make_duct(ParameterHandler&, const Material&, const fe::SolverSettings&,
                                  const std::filesystem::path&);
 std::unique_ptr<Scene> make_couette(ParameterHandler&, const Material&, const fe::SolverSettings&);
-std::unique_ptr<Scene> make_cone_plate(ParameterHandler&, const Material&, const fe::SolverSettings&);
+std::unique_ptr<Scene> make_cone_plate(ParameterHandler&, const Material&,
+                                       const fe::SolverSettings&);
 std::unique_ptr<Scene> make_parallel_plates(ParameterHandler&, const Material&,
                                             const fe::SolverSettings&);
 
@@ -50,7 +51,8 @@ std::unique_ptr<Scene> make_scene(ParameterHandler& prm, const Material& materia
   if (name == "couette") return make_couette(prm, material, settings);
   if (name == "cone-plate") return make_cone_plate(prm, material, settings);
   if (name == "parallel-plates") return make_parallel_plates(prm, material, settings);
-  throw InputError(fmt::format("scene = '{}' is unknown; allowed: {}", name, fmt::join(scene_names(), ", ")));
+  throw InputError(
+      fmt::format("scene = '{}' is unknown; allowed: {}", name, fmt::join(scene_names(), ", ")));
 }
 
 }  // namespace softglass::macro

@@ -16,7 +16,8 @@ class MacroCli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("macro_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("macro_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     write("material.prm",
@@ -25,15 +26,18 @@ class MacroCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
 
   // Runs `macro run <scene> -o <dir>/out -q <extra>`; returns the exit code and
   // keeps stderr in error_.
   int run(const std::string& scene_text, const std::string& extra = "") {
     write("scene.prm", scene_text);
     const fs::path err = dir_ / "stderr.txt";
-    const std::string command = std::string(MACRO_EXECUTABLE) + " run " + (dir_ / "scene.prm").string() +
-                                " -o " + (dir_ / "out").string() + " -q " + extra + " 2> " + err.string();
+    const std::string command = std::string(MACRO_EXECUTABLE) + " run " +
+                                (dir_ / "scene.prm").string() + " -o " + (dir_ / "out").string() +
+                                " -q " + extra + " 2> " + err.string();
     const int status = std::system(command.c_str());
     std::stringstream text;
     text << std::ifstream(err).rdbuf();
@@ -42,8 +46,10 @@ class MacroCli : public ::testing::Test {
   }
 
   static std::string couette(const std::string& extra) {
-    return "set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius = 0.02\n"
-           " set outer radius = 0.03\n" + extra + "end\nsubsection sweep\n set values = 0.1, 1\nend\n";
+    return "set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius = "
+           "0.02\n"
+           " set outer radius = 0.03\n" +
+           extra + "end\nsubsection sweep\n set values = 0.1, 1\nend\n";
   }
 
   fs::path dir_;
@@ -81,7 +87,8 @@ TEST_F(MacroCli, UnitsAfterNumbersAreRejected) {
 TEST_F(MacroCli, NonPhysicalValuesAreNamed) {
   EXPECT_EQ(run(couette(" set length = -1\n")), 2);
   EXPECT_NE(error_.find("couette: length = -1"), std::string::npos) << error_;
-  EXPECT_EQ(run("set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius = 0.03\n"
+  EXPECT_EQ(run("set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius "
+                "= 0.03\n"
                 " set outer radius = 0.02\nend\n"),
             2);
   EXPECT_NE(error_.find("outer radius"), std::string::npos) << error_;

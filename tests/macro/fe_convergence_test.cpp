@@ -21,7 +21,8 @@ namespace {
 double newtonian_couette_error(int degree, int refinements) {
   const double R1 = 0.02, R2 = 0.03, mu = 3.0, omega = 2.0;
   const std::string text =
-      "set scene = couette\nsubsection couette\n set inner radius = 0.02\n set outer radius = 0.03\n"
+      "set scene = couette\nsubsection couette\n set inner radius = 0.02\n set outer radius = "
+      "0.03\n"
       " set length = 1\n set gap cells = 1\nend\nsubsection solver\n set degree = " +
       std::to_string(degree) + "\n set global refinements = " + std::to_string(refinements) +
       "\n set adaptive cycles = 1\nend\n" + material(0.0, mu, 1.0);
@@ -51,9 +52,9 @@ struct Regularised {
 Regularised channel_with(const std::string& regularisation, double relative_rate_scale) {
   const std::string text =
       "set scene = channel\nsubsection channel\n set half height = 0.01\nend\n"
-      "subsection solver\n set preset = accurate\n set regularisation = " + regularisation +
-      "\n set relative rate scale = " + std::to_string(relative_rate_scale) + "\nend\n" +
-      material(5.0, 2.0, 0.5);
+      "subsection solver\n set preset = accurate\n set regularisation = " +
+      regularisation + "\n set relative rate scale = " + std::to_string(relative_rate_scale) +
+      "\nend\n" + material(5.0, 2.0, 0.5);
   const auto row = run_scene(text, {2000.0})[0];
   return {std::abs(row[kDeviation]), row[kRegularisation] / row[kValue]};
 }

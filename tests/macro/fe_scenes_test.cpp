@@ -21,22 +21,24 @@ struct Law {
 // Newtonian, power law (shear thinning), Bingham, and a soft-glass HB law.
 const Law kLaws[] = {{0.0, 2.0, 1.0}, {0.0, 2.0, 0.5}, {5.0, 2.0, 1.0}, {5.0, 2.0, 0.5}};
 
-std::string law_text(const Law& l) { return material(l.tau_y, l.K, l.n); }
+std::string law_text(const Law& l) {
+  return material(l.tau_y, l.K, l.n);
+}
 
 TEST(FeChannel, MatchesTheClosedFormForEveryLaw) {
   for (const Law& l : kLaws) {
     // τ_w = G H = 20 Pa: φ = 0.25 for the yield-stress laws.
-    const auto rows = run_scene("set scene = channel\nsubsection channel\n set half height = 0.01\nend\n" +
-                                    law_text(l),
-                                {2000.0});
+    const auto rows = run_scene(
+        "set scene = channel\nsubsection channel\n set half height = 0.01\nend\n" + law_text(l),
+        {2000.0});
     EXPECT_LT(std::abs(rows[0][kDeviation]), kRequired) << l.tau_y << " " << l.n;
   }
 }
 
 TEST(FePipe, MatchesTheClosedFormForEveryLaw) {
   for (const Law& l : kLaws) {
-    const auto rows =
-        run_scene("set scene = pipe\nsubsection pipe\n set radius = 0.01\nend\n" + law_text(l), {4000.0});
+    const auto rows = run_scene(
+        "set scene = pipe\nsubsection pipe\n set radius = 0.01\nend\n" + law_text(l), {4000.0});
     EXPECT_LT(std::abs(rows[0][kDeviation]), kRequired) << l.tau_y << " " << l.n;
   }
 }
@@ -45,8 +47,10 @@ TEST(FePipe, MatchesTheClosedFormForEveryLaw) {
 // R2 = 30 mm, L = 1 m. The FE torque at each Ω must be the stated torque.
 TEST(FeCouette, MatchesTheCheckValuesPartlyAndFullyYielded) {
   const std::string text =
-      "set scene = couette\nsubsection couette\n set inner radius = 0.02\n set outer radius = 0.03\n"
-      " set length = 1\nend\n" + material(10.0, 5.0, 0.5);
+      "set scene = couette\nsubsection couette\n set inner radius = 0.02\n set outer radius = "
+      "0.03\n"
+      " set length = 1\nend\n" +
+      material(10.0, 5.0, 0.5);
   const auto rows = run_scene(text, {4.23276e-3, 0.890221, 34.7549});
   const double torques[] = {0.03, 0.06, 0.2};  // partly yielded (R_c = 21.85 mm), then fully
   for (int k = 0; k < 3; ++k) {
@@ -62,9 +66,11 @@ TEST(FeConePlate, MatchesTheFiniteAngleSolution) {
   for (const Law& l : kLaws) {
     const auto rows = run_scene(
         "set scene = cone-plate\nsubsection cone-plate\n set radius = 0.025\n set angle = 4\n"
-        " set truncation = 2.5e-9\nend\n" + law_text(l),
+        " set truncation = 2.5e-9\nend\n" +
+            law_text(l),
         {0.05, 5.0});
-    for (const auto& row : rows) EXPECT_LT(std::abs(row[kDeviation]), kRequired) << l.tau_y << " " << l.n;
+    for (const auto& row : rows)
+      EXPECT_LT(std::abs(row[kDeviation]), kRequired) << l.tau_y << " " << l.n;
   }
 }
 
@@ -73,7 +79,8 @@ TEST(FeConePlate, NewtonianFiniteAngleRatio) {
   const double R = 0.025, beta = 2.0 * std::numbers::pi / 180.0, mu = 2.0, omega = 1.0;
   const auto rows = run_scene(
       "set scene = cone-plate\nsubsection cone-plate\n set radius = 0.025\n set angle = 2\n"
-      " set truncation = 1e-9\nend\n" + material(0.0, mu, 1.0),
+      " set truncation = 1e-9\nend\n" +
+          material(0.0, mu, 1.0),
       {omega});
   const double small_angle = 2.0 * std::numbers::pi * R * R * R * mu * omega / (3.0 * beta);
   EXPECT_NEAR(rows[0][kValue] / small_angle, 0.999391, 2e-6);
@@ -82,10 +89,12 @@ TEST(FeConePlate, NewtonianFiniteAngleRatio) {
 TEST(FeParallelPlates, MatchesTheClosedForm) {
   for (const Law& l : kLaws) {
     const auto rows = run_scene(
-        "set scene = parallel-plates\nsubsection parallel-plates\n set radius = 0.02\n set gap = 0.001\nend\n" +
+        "set scene = parallel-plates\nsubsection parallel-plates\n set radius = 0.02\n set gap = "
+        "0.001\nend\n" +
             law_text(l),
         {0.1, 10.0});
-    for (const auto& row : rows) EXPECT_LT(std::abs(row[kDeviation]), kRequired) << l.tau_y << " " << l.n;
+    for (const auto& row : rows)
+      EXPECT_LT(std::abs(row[kDeviation]), kRequired) << l.tau_y << " " << l.n;
   }
 }
 
@@ -93,7 +102,8 @@ TEST(FeParallelPlates, MatchesTheClosedForm) {
 TEST(FeDuct, CircleIsThePipe) {
   for (const Law& l : {kLaws[1], kLaws[3]}) {
     const auto rows = run_scene(
-        "set scene = duct\nsubsection duct\n set section = circle\n set radius = 0.01\nend\n" + law_text(l),
+        "set scene = duct\nsubsection duct\n set section = circle\n set radius = 0.01\nend\n" +
+            law_text(l),
         {4000.0});
     EXPECT_LT(std::abs(rows[0][kDeviation]), kRequired) << l.tau_y << " " << l.n;
   }
@@ -103,7 +113,8 @@ TEST(FeDuct, CircleIsThePipe) {
 // Bi = 0.5, n = 1: u_max = 0.169865455242435.
 TEST(FeDuct, RheolefSquareDuctMaximum) {
   const auto rows = run_scene(
-      "set scene = duct\nsubsection duct\n set section = rectangle\n set width = 2\n set height = 2\nend\n" +
+      "set scene = duct\nsubsection duct\n set section = rectangle\n set width = 2\n set height = "
+      "2\nend\n" +
           material(0.5, 1.0, 1.0),
       {2.0});
   constexpr int kMaxVelocity = 3;  // flow rate, 2 errors, then max velocity (no closed form)

@@ -30,8 +30,9 @@ inline std::string material(double tau_y, double K, double n) {
   const char* model = tau_y == 0.0 ? (n == 1.0 ? "newtonian" : "power-law")
                                    : (n == 1.0 ? "bingham" : "herschel-bulkley");
   return "subsection material\n set model = " + std::string(model) +
-         "\n set yield stress = " + std::to_string(tau_y) + "\n set consistency = " +
-         std::to_string(K) + "\n set flow index = " + std::to_string(n) + "\nend\n";
+         "\n set yield stress = " + std::to_string(tau_y) +
+         "\n set consistency = " + std::to_string(K) + "\n set flow index = " + std::to_string(n) +
+         "\nend\n";
 }
 
 // Columns of the rows (reduced_scene.cpp): the primary output, its two error
