@@ -112,8 +112,13 @@ int main(int argc, char** argv) {
   rescale_cmd->add_option("--viscosity", s.viscosity, "solvent viscosity eta_s [Pa s]")
       ->required()
       ->check(positive);
-  rescale_cmd->add_option("--modulus", s.modulus, "contact modulus E* [Pa]; fitted when absent")
-      ->check(positive);
+  auto* rescale_modulus =
+      rescale_cmd->add_option("--modulus", s.modulus, "contact modulus E* [Pa]; fitted when absent")
+          ->check(positive);
+  rescale_cmd
+      ->add_flag("--shared-modulus", s.shared_modulus,
+                 "fit one E* for all curves (the same particles at several phi or temperatures)")
+      ->excludes(rescale_modulus);
   auto* strain = rescale_cmd
                      ->add_option("--yield-strain", s.yield_strain,
                                   "yield strain gamma_y: one value, or one per curve")

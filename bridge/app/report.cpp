@@ -150,7 +150,10 @@ void print_rescale_report(const std::vector<RescaledCurve>& rescaled, const Resc
     fmt::print("  universal law     tau_y = {} Pa ({}), E* = {} Pa ({}), gamma_y = {}\n",
                with_error(r.yield_stress.value, r.yield_stress.error),
                r.yield_stress_fitted ? "fitted" : "given",
-               with_error(r.modulus.value, r.modulus.error), r.modulus_fitted ? "fitted" : "given",
+               with_error(r.modulus.value, r.modulus.error),
+               r.modulus_shared   ? "fitted, shared by all curves"
+               : r.modulus_fitted ? "fitted"
+                                  : "given",
                with_error(r.yield_strain.value, r.yield_strain.error));
     fmt::print("                    rms relative residual {:.1f} %\n", 100.0 * r.rms_residual);
     if (r.rms_residual > kPoorCollapse) {

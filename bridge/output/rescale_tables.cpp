@@ -38,18 +38,20 @@ std::string rescaled_points_table(const std::vector<MeasuredCurve>& curves,
 std::string rescaled_curves_table(const std::vector<RescaledCurve>& rescaled,
                                   const RescaleSettings& settings,
                                   const std::vector<std::string>& comments) {
-  CsvWriter w(comments, {"curve", "tau_y [Pa]", "tau_y_se [Pa]", "E* [Pa]", "E*_se [Pa]",
-                         "gamma_y [1]", "gamma_y_se [1]", "k [1]", "k_N1 [1]", "N1_y [Pa]",
-                         "N1_y_se [Pa]", "rms_residual [1]", "hb_tau_y [Pa]", "hb_tau_y_se [Pa]",
-                         "hb_K [Pa s^n]", "hb_K_se [Pa s^n]", "hb_n [1]", "hb_n_se [1]"});
+  CsvWriter w(comments,
+              {"curve", "tau_y [Pa]", "tau_y_se [Pa]", "E* [Pa]", "E*_se [Pa]", "E*_shared [1]",
+               "gamma_y [1]", "gamma_y_se [1]", "k [1]", "k_N1 [1]", "N1_y [Pa]", "N1_y_se [Pa]",
+               "rms_residual [1]", "hb_tau_y [Pa]", "hb_tau_y_se [Pa]", "hb_K [Pa s^n]",
+               "hb_K_se [Pa s^n]", "hb_n [1]", "hb_n_se [1]"});
   for (const RescaledCurve& r : rescaled) {
     const HerschelBulkleyFit& hb = r.herschel_bulkley;
     const Estimate n1 = r.N1_yield.value_or(Estimate{0.0, 0.0});
     w << r.label << r.yield_stress.value << r.yield_stress.error << r.modulus.value
-      << r.modulus.error << r.yield_strain.value << r.yield_strain.error << settings.k
-      << settings.k_N1 << n1.value << n1.error << r.rms_residual << hb.parameters.yield
-      << std::sqrt(hb.covariance(0, 0)) << hb.parameters.consistency
-      << std::sqrt(hb.covariance(1, 1)) << hb.parameters.exponent << std::sqrt(hb.covariance(2, 2));
+      << r.modulus.error << (r.modulus_shared ? 1.0 : 0.0) << r.yield_strain.value
+      << r.yield_strain.error << settings.k << settings.k_N1 << n1.value << n1.error
+      << r.rms_residual << hb.parameters.yield << std::sqrt(hb.covariance(0, 0))
+      << hb.parameters.consistency << std::sqrt(hb.covariance(1, 1)) << hb.parameters.exponent
+      << std::sqrt(hb.covariance(2, 2));
     w.end_row();
   }
   return w.text();

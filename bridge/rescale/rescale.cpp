@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <boost/math/tools/minima.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -180,6 +182,7 @@ RescaledCurve place(const MeasuredCurve& c, std::size_t j, const RescaleSettings
     out.collapse_rate.push_back(x);
     out.stress_ratio.push_back(c.stress[i] / tau_y);
     out.residual.push_back(out.stress_ratio.back() / model - 1.0);
+    if (out.used[i]) out.chi2 += std::pow(1.0 - tau_y * model / c.stress[i], 2);
   }
   out.rms_residual = rms(out.residual, out.used);
 
@@ -219,12 +222,72 @@ RescaledCurve place(const MeasuredCurve& c, std::size_t j, const RescaleSettings
 
 }  // namespace
 
-std::vector<RescaledCurve> rescale(const std::vector<MeasuredCurve>& curves,
-                                   const RescaleSettings& settings) {
-  check(settings, curves.size());
+namespace {
+
+std::vector<RescaledCurve> place_all(const std::vector<MeasuredCurve>& curves,
+                                     const RescaleSettings& settings) {
   std::vector<RescaledCurve> out;
   for (std::size_t j = 0; j < curves.size(); ++j) out.push_back(place(curves[j], j, settings));
   return out;
+}
+
+double total_chi2(const std::vector<RescaledCurve>& placed) {
+  double sum = 0.0;
+  for (const RescaledCurve& r : placed) sum += r.chi2;
+  return sum;
+}
+
+// One E* for all curves, by the profile of Σ χ²_j over ln E* (rescale.h).
+std::vector<RescaledCurve> place_with_shared_modulus(const std::vector<MeasuredCurve>& curves,
+                                                     RescaleSettings settings) {
+  settings.shared_modulus = false;
+  const std::vector<RescaledCurve> own = place_all(curves, settings);
+  double low = INFINITY, high = 0.0;
+  for (const RescaledCurve& r : own) {
+    low = std::min(low, r.modulus.value);
+    high = std::max(high, r.modulus.value);
+  }
+  const auto profile = [&](double log_modulus) {
+    RescaleSettings at = settings;
+    at.modulus = std::exp(log_modulus);
+    return total_chi2(place_all(curves, at));
+  };
+  // The joint minimum lies between the curves' own E*; a factor 2 of margin
+  // each side lets Brent's method find it when one curve dominates.
+  const auto [log_modulus, minimum] =
+      boost::math::tools::brent_find_minima(profile, std::log(low / 2.0), std::log(high * 2.0), 30);
+  const double h = 0.01;  // in ln E*: a 1 % step, far above the minimiser's resolution
+  const double curvature =
+      (profile(log_modulus + h) - 2.0 * minimum + profile(log_modulus - h)) / (h * h);
+
+  settings.modulus = std::exp(log_modulus);
+  std::vector<RescaledCurve> out = place_all(curves, settings);
+  double points = 0.0, parameters = 1.0;
+  for (const RescaledCurve& r : out) {
+    points += static_cast<double>(std::count(r.used.begin(), r.used.end(), true));
+    parameters += r.yield_stress_fitted ? 1.0 : 0.0;
+  }
+  const double variance = minimum / (points - parameters);
+  const double error = std::sqrt(2.0 * variance / curvature) * *settings.modulus;
+  if (!(curvature > 0.0) || !std::isfinite(error)) {
+    throw NumericalError("the shared E* is not determined: the profile of chi2 has no minimum");
+  }
+  for (RescaledCurve& r : out) {
+    r.modulus = {*settings.modulus, error};
+    r.modulus_fitted = r.modulus_shared = true;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<RescaledCurve> rescale(const std::vector<MeasuredCurve>& curves,
+                                   const RescaleSettings& settings) {
+  check(settings, curves.size());
+  require(!(settings.shared_modulus && settings.modulus),
+          "a shared E* is fitted: give --modulus or --shared-modulus, not both");
+  if (settings.shared_modulus) return place_with_shared_modulus(curves, settings);
+  return place_all(curves, settings);
 }
 
 }  // namespace softglass::bridge

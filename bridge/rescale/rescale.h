@@ -16,6 +16,15 @@
 // fixes N1_y (points with N1 ≤ 0 left out). Every curve also gets its own
 // Herschel–Bulkley fit τ = τ_y + K γ̇^n with the same weights; a curve whose τ_y
 // is to be fitted must show its yield plateau (fit/herschel_bulkley.h).
+//
+// One E* for several curves (`shared_modulus`): the same particles measured at
+// several φ or temperatures have one contact modulus. E* is then the minimum of
+// the profile S(E*) = Σ_curves χ²_j(E*), each curve's τ_y refitted at every trial
+// E* (Brent's method on ln E*, bracketed by the curves' own E* fits), and its
+// error is var ln E* = 2 s² / S″ with s² = S/(points − fitted parameters): the
+// curvature of the profile is that of the joint χ², so the error includes the
+// curves' τ_y uncertainties. The curves' τ_y errors are then those at the
+// fitted E* (conditional on it).
 #pragma once
 
 #include <limits>
@@ -38,6 +47,7 @@ struct RescaleSettings {
   std::vector<double> yield_stress;   // τ_y [Pa]: fitted when empty; one, or one per curve
   double k = PaperValues::k.value, k_N1 = PaperValues::k_N1.value;
   double min_rate = 0.0, max_rate = std::numeric_limits<double>::infinity();  // [1/s]
+  bool shared_modulus = false;  // one fitted E* for all curves
 };
 
 struct RescaledCurve {
@@ -45,6 +55,7 @@ struct RescaledCurve {
   HerschelBulkleyFit herschel_bulkley;  // of the measured curve; covariance scaled by χ²/dof
   Estimate yield_stress, modulus, yield_strain;  // error 0 when given
   bool yield_stress_fitted = false, modulus_fitted = false;
+  bool modulus_shared = false;  // E* fitted once for all curves
   std::optional<Estimate> N1_yield;
   // Per point, all points (used[i]: inside the rate window, in the fits):
   std::vector<double> collapse_rate;                         // γ̇ η_s / (E* γ_y²)
@@ -53,6 +64,7 @@ struct RescaledCurve {
   std::optional<std::vector<double>> N1_ratio, N1_residual;  // N1/N1_y, (N1 − model)/N1
   std::vector<bool> used;
   double rms_residual = 0.0;  // over the used points
+  double chi2 = 0.0;  // Σ ((τ − model)/τ)² over the used points: what the fit minimises
   std::optional<double> N1_rms_residual;
 };
 

@@ -72,6 +72,11 @@ TEST_F(BridgeCli, HelpAndBadCommandLines) {
       << "E* twice";
   EXPECT_EQ(
       bridge("rescale data.csv --viscosity 1e-3 --yield-strain 0.03 --shear-modulus 100").code, 2);
+  EXPECT_EQ(bridge("rescale data.csv --viscosity 1e-3 --yield-strain 0.03 --modulus 4e4 "
+                   "--shared-modulus")
+                .code,
+            2)
+      << "E* both given and fitted";
 }
 
 TEST_F(BridgeCli, FitWritesTheLawAndItsTablesAndRefusesToOverwrite) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "bridge/rescale/rescale.h"
@@ -142,6 +143,49 @@ TEST(Rescale, RefusesInconsistentSettingsAndCurvesWithoutPlateau) {
   for (std::size_t i = 0; i < fluid.stress.size(); ++i)
     fluid.stress[i] = 50 * std::sqrt(fluid.shear_rate[i]);
   expect_contains(refusal(settings_for(s), fluid), {"yield", "--yield-stress"});
+}
+
+// One E* for three curves of the same particles (τ_y and γ_y differ): it comes
+// back within its error, that error is the scatter of the estimate over
+// repeated draws, and it is smaller than the curves' own E* errors.
+TEST(Rescale, FitsOneModulusSharedByAllCurves) {
+  const Sample samples[] = {{50.0, 0.04}, {100.0, 0.03}, {200.0, 0.02}};
+  RescaleSettings settings = settings_for(samples[0]);
+  settings.yield_strain = {0.04, 0.03, 0.02};
+  settings.shared_modulus = true;
+  const int draws = 200;
+  double sum = 0.0, sum2 = 0.0, reported = 0.0;
+  for (int d = 0; d < draws; ++d) {
+    const std::vector<MeasuredCurve> curves = {measured(samples[0], 100 + 3 * d),
+                                               measured(samples[1], 101 + 3 * d),
+                                               measured(samples[2], 102 + 3 * d)};
+    const auto out = rescale(curves, settings);
+    ASSERT_TRUE(out[0].modulus_shared);
+    EXPECT_EQ(out[1].modulus.value, out[0].modulus.value);
+    sum += out[0].modulus.value;
+    sum2 += out[0].modulus.value * out[0].modulus.value;
+    reported += out[0].modulus.error;
+    if (d == 0) {
+      expect_within(out[0].modulus, samples[0].modulus, "shared E*");
+      for (std::size_t j = 0; j < 3; ++j)
+        expect_within(out[j].yield_stress, samples[j].tau_y, "tau_y");
+      RescaleSettings own = settings;
+      own.shared_modulus = false;
+      for (const RescaledCurve& r : rescale(curves, own))
+        EXPECT_LT(out[0].modulus.error, r.modulus.error);
+    }
+  }
+  const double mean = sum / draws,
+               sd = std::sqrt((sum2 / draws - mean * mean) * draws / (draws - 1));
+  std::printf(
+      "shared E* over %d draws: mean %.0f Pa, scatter %.0f Pa, mean reported error %.0f Pa\n",
+      draws, mean, sd, reported / draws);
+  // 200 draws: the mean is known to sd/√200 ≈ 0.07 sd, the sd itself to 5 %.
+  EXPECT_NEAR(mean, samples[0].modulus, 4 * sd / std::sqrt(draws));
+  EXPECT_NEAR(reported / draws / sd, 1.0, 0.2)
+      << "reported " << reported / draws << ", scatter " << sd;
+  settings.modulus = 40e3;
+  EXPECT_THROW(rescale({measured(samples[0], 1), measured(samples[1], 2)}, settings), InputError);
 }
 
 }  // namespace
