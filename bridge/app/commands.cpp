@@ -11,6 +11,7 @@
 #include "bridge/law/law.h"
 #include "bridge/material/material.h"
 #include "bridge/output/tables.h"
+#include "bridge/rescale/law_yield_strain.h"
 #include "bridge/sweep/analysis.h"
 #include "common/atomic_output.h"
 #include "common/errors.h"
@@ -117,11 +118,29 @@ void rescale_command(const RescaleOptions& o, const std::string& command_line) {
   const std::vector<MeasuredCurve> curves = read_measured_curves(csv, o.units);
   RescaleSettings settings = o.settings;
   std::string constants = "the paper's values";
+  std::optional<Law> law;
   if (!o.law.empty()) {
-    const Law law = read_law_file(o.law);
-    settings.k = law.k[index(Quantity::sigma)]->value;
-    if (law.k[index(Quantity::N1)]) settings.k_N1 = law.k[index(Quantity::N1)]->value;
+    law = read_law_file(o.law);
+    settings.k = law->k[index(Quantity::sigma)]->value;
+    if (law->k[index(Quantity::N1)]) settings.k_N1 = law->k[index(Quantity::N1)]->value;
     constants = "from " + o.law.string();
+  }
+  if (!o.phi.empty() || o.phi_from_labels) {
+    require(law.has_value(), "yield strains from a law (--phi, --phi-from-labels) need --law");
+    require(settings.yield_strain.empty() && settings.shear_modulus.empty(),
+            "the yield strains come from the law (--phi, --phi-from-labels): give neither "
+            "--yield-strain nor --shear-modulus");
+    std::vector<double> phi = o.phi;
+    if (o.phi_from_labels) {
+      std::vector<std::string> labels;
+      for (const MeasuredCurve& c : curves) labels.push_back(c.label);
+      phi = phi_from_labels(labels);
+    }
+    require(phi.size() == curves.size(),
+            fmt::format("--phi has {} values for {} curves: give one per curve", phi.size(),
+                        curves.size()));
+    settings.yield_strain = law_yield_strains(*law, phi, o.extrapolate, o.law.string());
+    constants += fmt::format("; yield strains from the law at phi = {}", fmt::join(phi, ", "));
   }
   const std::vector<RescaledCurve> rescaled = rescale(curves, settings);
   print_rescale_report(rescaled, settings, constants);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bridge/io/measured_curves.h"
 #include "bridge/rescale/rescale.h"
@@ -40,6 +41,9 @@ struct RescaleOptions {
   std::filesystem::path output = "rescaled.csv";
   RescaleSettings settings;
   FallbackUnits units;
+  // γ_y of each curve from the law file at its φ (given, or from the labels).
+  std::vector<double> phi;
+  bool phi_from_labels = false, extrapolate = false;
   bool force = false;
 };
 

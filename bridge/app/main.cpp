@@ -4,7 +4,8 @@
 //                                                 Herschel-Bulkley and universal-law fits
 //   bridge material LAW.prm --phi … --modulus … --viscosity …
 //                                                 a material fragment for the continuum
-//   bridge rescale DATA.csv --viscosity … (--yield-strain … | --shear-modulus …)
+//   bridge rescale DATA.csv --viscosity … (--yield-strain … | --shear-modulus … |
+//                  --law LAW.prm --phi …)
 //                                                 measured curves on the universal curve
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
@@ -135,6 +136,20 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   rescale_cmd->add_option("--law", rescale.law,
                           "law file of `bridge fit` for k and k' (default: the paper's 80 and 20)");
+  auto* phi_list = rescale_cmd
+                       ->add_option("--phi", rescale.phi,
+                                    "volume fraction of each curve: gamma_y from the law (--law)")
+                       ->delimiter(',');
+  auto* phi_labels = rescale_cmd->add_flag("--phi-from-labels", rescale.phi_from_labels,
+                                           "the curve labels are their volume fractions: gamma_y "
+                                           "from the law (--law)");
+  phi_list->excludes(phi_labels);
+  phi_list->excludes(strain);
+  phi_list->excludes(shear);
+  phi_labels->excludes(strain);
+  phi_labels->excludes(shear);
+  rescale_cmd->add_flag("--extrapolate", rescale.extrapolate,
+                        "allow --phi outside the law's simulated range");
   rescale_cmd->add_option("--min-rate", s.min_rate, "fit only rates from here [1/s]");
   rescale_cmd->add_option("--max-rate", s.max_rate, "fit only rates up to here [1/s]");
   rescale_cmd->add_option("--rate-unit", rescale.units.rate,

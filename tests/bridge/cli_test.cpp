@@ -144,6 +144,9 @@ TEST_F(BridgeCli, RescaleWritesPointsAndCurves) {
   expect_contains(testing::read_text(work() / "rescaled_curves.csv"), {"tau_y [Pa]", "data,"});
   const Outcome mixed = bridge("rescale sweep.csv --viscosity 1e-3 --yield-strain 0.03 -o r2.csv");
   EXPECT_EQ(mixed.code, 2) << "a reduced table is not a measured curve";
+  const Outcome no_law = bridge("rescale data.csv --viscosity 1e-3 --phi 0.8 -o r3.csv");
+  EXPECT_EQ(no_law.code, 2);
+  expect_contains(no_law.err, {"--phi", "need --law"});
 }
 
 // Bad input to each subcommand: exit code 2, one message naming the problem,

@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <random>
 
+#include "bridge/rescale/law_yield_strain.h"
 #include "bridge/rescale/rescale.h"
 #include "bridge_test_support.h"
 #include "common/errors.h"
+#include "synthetic_sweep.h"
 
 namespace softglass::bridge {
 namespace {
@@ -186,6 +188,27 @@ TEST(Rescale, FitsOneModulusSharedByAllCurves) {
       << "reported " << reported / draws << ", scatter " << sd;
   settings.modulus = 40e3;
   EXPECT_THROW(rescale({measured(samples[0], 1), measured(samples[1], 2)}, settings), InputError);
+}
+
+// Yield strains from a law: exact at simulated φ, interpolated between them,
+// refused outside the range unless extrapolation is asked for; φ from labels.
+TEST(Rescale, TakesTheYieldStrainsFromALaw) {
+  const testing::SyntheticTruth t;
+  const Law law = testing::exact_law(t);
+  const std::vector<double> at_simulated = law_yield_strains(law, {0.75, 0.9}, false, "law.prm");
+  EXPECT_DOUBLE_EQ(at_simulated[0], t.yield_strain[1]);
+  EXPECT_DOUBLE_EQ(at_simulated[1], t.yield_strain[4]);
+  // Linear between 0.75 (0.034) and 0.80 (0.029).
+  EXPECT_NEAR(law_yield_strains(law, {0.78}, false, "law.prm")[0], 0.031, 1e-12);
+  try {
+    law_yield_strains(law, {0.68}, false, "law.prm");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    expect_contains(e.what(), {"phi = 0.68", "0.7 ... 0.9", "law.prm", "--extrapolate"});
+  }
+  EXPECT_NEAR(law_yield_strains(law, {0.68}, true, "law.prm")[0], 0.0424, 1e-12);
+  EXPECT_EQ(phi_from_labels({"0.68", "0.7"}), (std::vector<double>{0.68, 0.7}));
+  EXPECT_THROW(phi_from_labels({"T_20"}), InputError);
 }
 
 }  // namespace
