@@ -105,8 +105,9 @@ def flow_curves(points, phis, quantity, units, directory, name, title):
 
 def collapse(points, constants, directory, name):
     """Figs. 4a-c: Q/Q_y against gamma~/gamma_y^2, all phi, on 1 + k x^(1/2)."""
+    # A quantity whose universal fit failed has no constant (and NaN ratios): no panel.
     panels = [(q, c) for q, c in (("sigma", "k"), ("N1", "k_N1"), ("N2", "k_N2"))
-              if has(points, f"{q}_ratio [1]")]
+              if has(points, f"{q}_ratio [1]") and constant(constants, c) is not None]
     fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels), 4), squeeze=False)
     groups = by_phi(points)
     x_all = [number(r, "collapse_rate [1]") for r in points]
