@@ -79,7 +79,8 @@ def save(fig, directory, name):
 
 
 def flow_curves(points, phis, quantity, units, directory, name, title):
-    """Fig. 2a: |Q|/E* against gamma~ per phi, with the Herschel-Bulkley fit of each."""
+    """Fig. 2a: |Q|/E* against gamma~ per phi, with the Herschel-Bulkley fit of each
+    (for f_m the force law with exponent 1/2 when the table has it)."""
     groups = by_phi(points)
     fig, ax = plt.subplots(figsize=(5.5, 4.2))
     for colour, (phi, rows) in zip(colours(len(groups)), groups.items()):
@@ -88,9 +89,13 @@ def flow_curves(points, phis, quantity, units, directory, name, title):
         e = [number(r, f"{quantity}_se [{units}]") for r in rows]
         ax.errorbar(x, y, yerr=e, fmt="o", ms=4, color=colour, label=f"φ = {phi:g}")
         fit = next(p for p in phis if number(p, "phi [1]") == phi)
-        yield_ = number(fit, f"{quantity}_yield [{units}]")
-        k = number(fit, f"{quantity}_consistency [{units}]")
-        m = number(fit, f"{quantity}_exponent [1]")
+        if quantity == "f_m" and "f_y [E*R^2]" in fit:
+            # The paper's force law, exponent fixed at 1/2 (Fig. 3c).
+            yield_, k, m = number(fit, "f_y [E*R^2]"), number(fit, "k_f [E*R^2]"), 0.5
+        else:
+            yield_ = number(fit, f"{quantity}_yield [{units}]")
+            k = number(fit, f"{quantity}_consistency [{units}]")
+            m = number(fit, f"{quantity}_exponent [1]")
         grid = log_grid(min(x), max(x))
         ax.plot(grid, [abs(yield_ + k * g**m) for g in grid], "-", color=colour, lw=1)
     ax.set_xscale("log")
@@ -145,7 +150,7 @@ def fit_figures(law, directory):
                         f"{quantity} and its Herschel–Bulkley fits")
     if has(points, "f_m [E*R^2]"):
         flow_curves(points, phis, "f_m", "E*R^2", directory, f"{base}_force.png",
-                    "force at maximum accumulation (cf. Fig. 3c)")
+                    "force at maximum accumulation and f_y + k_f γ̃^½ (cf. Fig. 3c)")
 
 
 def rescale_figure(table, directory):
