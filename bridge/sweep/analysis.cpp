@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/errors.h"
@@ -141,8 +142,14 @@ SweepAnalysis analyse_sweep(const Sweep& sweep, const Resampler& resampler,
       if (a.sweep.present[index(q)]) a.collapse[index(q)] = homogeneity(a, q);
   }
   if (!sweep.unconverged.empty()) {
+    // The first few by name; a sweep that missed its stopping rule everywhere
+    // would otherwise bury the other warnings.
+    constexpr std::size_t kNamed = 5;
     std::string points;
-    for (const std::string& u : sweep.unconverged) points += (points.empty() ? "" : "; ") + u;
+    for (std::size_t i = 0; i < std::min(kNamed, sweep.unconverged.size()); ++i)
+      points += (points.empty() ? "" : "; ") + sweep.unconverged[i];
+    if (sweep.unconverged.size() > kNamed)
+      points += fmt::format("; and {} more", sweep.unconverged.size() - kNamed);
     a.warnings.push_back(fmt::format(
         "{} state point(s) average runs that did not meet their stopping rule (not stationary: "
         "their values and errors are less reliable): {}",

@@ -159,6 +159,8 @@ TEST(SweepAnalysis, WarnsAboutStatePointsWithUnconvergedRuns) {
   ASSERT_EQ(w.size(), 1u);
   expect_contains(w[0],
                   {"1 state point(s)", "stopping rule", "phi = 0.75, gamma~ = 1e-08: 3 of 5"});
+  for (StatePoint& p : s.table.points) p.converged = 0;  // nothing stationary
+  expect_contains(warnings().front(), {"55 state point(s)", "0 of 5", "and 50 more"});
 }
 
 }  // namespace
