@@ -72,6 +72,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <string>
 
 #include "common/errors.h"
 #include "macro/material/regularised_law.h"
@@ -92,6 +93,10 @@ constexpr double kSmallestContinuationStep = 1.2;
 // (an inexact but sufficient line search), or after this many steps.
 constexpr double kLineSearchReduction = 0.1;
 constexpr int kLineSearchSteps = 12;
+// Modified Newton (solve_newton): τ' ≥ kTangentFloor·η after a step shorter
+// than kFullStep.
+constexpr double kTangentFloor = 0.1;
+constexpr double kFullStep = 0.5;
 
 double power(double r, int k) {
   return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k));
@@ -133,10 +138,10 @@ class ScalarFlowSolver<dim>::Implementation {
   void impose_boundary_values();
 
   // --- regularised method --------------------------------------------------
-  void assemble_system(const RegularisedLaw& law, bool with_matrix);
+  void assemble_system(const RegularisedLaw& law, bool with_matrix, double tangent_floor = 0.0);
   double directional_derivative(const RegularisedLaw& law, const Vector<double>& trial,
                                 const Vector<double>& direction);
-  unsigned solve_newton(const RegularisedLaw& law);
+  unsigned solve_newton(const RegularisedLaw& law, bool allow_damping = false);
   unsigned solve_with_continuation(double target_scale, double start_scale);
 
   // --- augmented Lagrangian -------------------------------------------------
@@ -222,7 +227,8 @@ void ScalarFlowSolver<dim>::Implementation::impose_boundary_values() {
 // homogeneous constraints (the update vanishes on Dirichlet boundaries).
 template <int dim>
 void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw& law,
-                                                            bool with_matrix) {
+                                                            bool with_matrix,
+                                                            double tangent_floor) {
   if (with_matrix) system_matrix_ = 0.0;
   residual_ = 0.0;
   const QGauss<dim> quadrature(fe_.degree + 1);
@@ -247,7 +253,8 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
       const Viscosity eta = law.viscosity(rate);
       // n = ∇u/|∇u|; at rest the anisotropic part vanishes (γ̇ dη/dγ̇ = 0).
       const Tensor<1, dim> direction = g > 0.0 ? gradients[q] / g : Tensor<1, dim>();
-      const double anisotropy = eta.derivative * rate;  // τ' − η
+      // τ' − η, with τ' raised to tangent_floor·η if it is smaller (see solve_newton).
+      const double anisotropy = std::max(eta.derivative * rate, (tangent_floor - 1.0) * eta.value);
       const double f = drive_.source * rho(x) * fe_values.JxW(q);
       for (unsigned i = 0; i < n; ++i) {
         const Tensor<1, dim> grad_i = fe_values.shape_grad(i, q);
@@ -284,10 +291,21 @@ double ScalarFlowSolver<dim>::Implementation::directional_derivative(
 }
 
 template <int dim>
-unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law) {
+unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law,
+                                                           bool allow_damping) {
   Vector<double> update(dof_handler_.n_dofs()), trial(dof_handler_.n_dofs());
+  // After a step the line search had to cut short, the next one uses a
+  // modified tangent. Where the material has just yielded, τ' = dτ/dγ̇ is
+  // orders of magnitude below η = τ/γ̇ (n < 1, small ε), so the Newton step
+  // along the flow direction is huge and its region of validity tiny. Raising
+  // τ' to a fraction of η keeps the matrix symmetric positive definite (the
+  // step stays a descent direction of J) and the step moderate; full Newton
+  // resumes, with its quadratic convergence, once steps are accepted whole.
+  // It is the fallback of a failed stage (solve_with_continuation): where pure
+  // Newton converges it is faster.
+  bool damped = false;
   for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
-    assemble_system(law, true);
+    assemble_system(law, true, damped ? kTangentFloor : 0.0);
     const double residual_norm = residual_.l2_norm();
     SparseDirectUMFPACK direct;
     direct.initialize(system_matrix_);
@@ -319,6 +337,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
       }
     }
     solution_.add(alpha, update);
+    damped = allow_damping && alpha < kFullStep;
     // SOFTGLASS_MACRO_DEBUG=1 traces every Newton step (convergence problems).
     if (std::getenv("SOFTGLASS_MACRO_DEBUG"))
       fmt::print(stderr, "newton eps={:.3g} it={} |R|={:.3e} alpha={:.3g} |du|={:.3e}\n",
@@ -333,23 +352,38 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
 
 // Newton at ε = start, start/10, ... down to the target; returns the iterations.
 // Leaves the law at the target in regularised_. When a stage fails (large plug
-// regions make Newton's quadratic region narrow at small ε), it is retried from
-// the last converged solution with the step in ε shrunk to its square root.
+// regions make Newton's quadratic region narrow at small ε), it is retried
+// with the modified tangent of solve_newton, and then from the last converged
+// solution with the step in ε shrunk to its square root.
 template <int dim>
 unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double target_scale,
                                                                         double start_scale) {
   unsigned iterations = 0;
   double eps = std::max(start_scale, target_scale), converged_eps = 0.0;
   Vector<double> converged = solution_;
+  std::string failure;
+  // One Newton solve at the current ε from `start`; false (and the solution
+  // back at `start`) if it does not converge.
+  const auto attempt = [&](const Vector<double>& start, bool damping) {
+    solution_ = start;
+    try {
+      iterations += solve_newton(*regularised_, damping);
+      return true;
+    } catch (const NumericalError& error) {
+      iterations += settings_.max_newton_iterations;
+      failure = error.what();
+      solution_ = start;
+      return false;
+    }
+  };
   while (true) {
     regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    try {
-      iterations += solve_newton(*regularised_);
-    } catch (const NumericalError&) {
-      iterations += settings_.max_newton_iterations;
-      // Retry halfway (in log ε) from the last converged stage, while the step
-      // is still worth shrinking.
-      if (converged_eps == 0.0 || converged_eps / eps < kSmallestContinuationStep) throw;
+    const Vector<double> start = solution_;
+    if (!attempt(start, false) && !attempt(start, true)) {
+      // Retry halfway (in log ε) from the last converged stage, while the
+      // step is still worth shrinking.
+      if (converged_eps == 0.0 || converged_eps / eps < kSmallestContinuationStep)
+        throw NumericalError(failure);
       eps = std::sqrt(converged_eps * eps);
       solution_ = converged;
       continue;
