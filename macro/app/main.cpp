@@ -2,10 +2,12 @@
 //
 //   macro run FILE.prm [-o DIR] [--preset fast|standard|accurate] [--force] [--quiet]
 //   macro template          a documented scene file with every entry and default
+//   mpirun -n N macro run ...  the sweep's operating points split over N ranks
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -26,6 +28,8 @@ int fail(int code, const std::string& message) {
 
 int main(int argc, char** argv) {
   using namespace softglass;
+  // MPI (a no-op without mpirun): sweeps are split over the ranks (run.cpp).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   CLI::App app{
       "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
       "channels, pipes and ducts (deal.II finite elements)",

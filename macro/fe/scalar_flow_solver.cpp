@@ -292,7 +292,7 @@ double ScalarFlowSolver<dim>::Implementation::directional_derivative(
 
 template <int dim>
 unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law,
-                                                           bool allow_damping) {
+                                                             bool allow_damping) {
   Vector<double> update(dof_handler_.n_dofs()), trial(dof_handler_.n_dofs());
   // After a step the line search had to cut short, the next one uses a
   // modified tangent. Where the material has just yielded, τ' = dτ/dγ̇ is
