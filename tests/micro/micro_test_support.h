@@ -33,6 +33,8 @@
 #include "micro/system/lees_edwards_box.h"
 #include "micro/system/particles.h"
 
+#include "tests/common/test_files.h"
+
 namespace softglass::micro::testing {
 
 /// A short sheared run of `packing` at γ̃ = 1e-4 with the engine's defaults
@@ -139,39 +141,8 @@ inline std::pair<std::uint32_t, std::uint32_t> ordered(std::uint32_t a, std::uin
   return a < b ? std::pair{a, b} : std::pair{b, a};
 }
 
-/// A fresh directory per test, removed afterwards.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string name =
-        test ? std::string(test->test_suite_name()) + "-" + test->name() : std::string("micro");
-    path_ = std::filesystem::temp_directory_path() /
-            ("softglass-" + name + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using softglass::testing::read_text;
+using softglass::testing::TemporaryDirectory;
+using softglass::testing::write_text;
 
 }  // namespace softglass::micro::testing
