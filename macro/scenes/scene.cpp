@@ -16,6 +16,7 @@ void declare_duct(ParameterHandler&);
 void declare_couette(ParameterHandler&);
 void declare_cone_plate(ParameterHandler&);
 void declare_parallel_plates(ParameterHandler&);
+void declare_stokes_scenes(ParameterHandler&);
 std::unique_ptr<Scene> make_channel(ParameterHandler&, const Material&, const fe::SolverSettings&);
 std::unique_ptr<Scene> make_pipe(ParameterHandler&, const Material&, const fe::SolverSettings&);
 std::unique_ptr<Scene> make_duct(ParameterHandler&, const Material&, const fe::SolverSettings&,
@@ -25,9 +26,11 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler&, const Material&,
                                        const fe::SolverSettings&);
 std::unique_ptr<Scene> make_parallel_plates(ParameterHandler&, const Material&,
                                             const fe::SolverSettings&);
+std::unique_ptr<Scene> make_cavity(ParameterHandler&, const Material&, const fe::SolverSettings&);
+std::unique_ptr<Scene> make_obstacle(ParameterHandler&, const Material&, const fe::SolverSettings&);
 
 std::vector<std::string> scene_names() {
-  return {"channel", "pipe", "duct", "couette", "cone-plate", "parallel-plates"};
+  return {"channel", "pipe", "duct", "couette", "cone-plate", "parallel-plates", "cavity", "obstacle"};
 }
 
 void declare_scenes(ParameterHandler& prm) {
@@ -39,6 +42,7 @@ void declare_scenes(ParameterHandler& prm) {
   declare_couette(prm);
   declare_cone_plate(prm);
   declare_parallel_plates(prm);
+  declare_stokes_scenes(prm);
 }
 
 std::unique_ptr<Scene> make_scene(ParameterHandler& prm, const Material& material,
@@ -51,6 +55,8 @@ std::unique_ptr<Scene> make_scene(ParameterHandler& prm, const Material& materia
   if (name == "couette") return make_couette(prm, material, settings);
   if (name == "cone-plate") return make_cone_plate(prm, material, settings);
   if (name == "parallel-plates") return make_parallel_plates(prm, material, settings);
+  if (name == "cavity") return make_cavity(prm, material, settings);
+  if (name == "obstacle") return make_obstacle(prm, material, settings);
   throw InputError(
       fmt::format("scene = '{}' is unknown; allowed: {}", name, fmt::join(scene_names(), ", ")));
 }

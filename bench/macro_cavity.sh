@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# The Bingham lid-driven cavity benchmark of macro.md (Bleyer et al. 2015):
+# unit square, lid speed 1, mu = 1, Bi = tau_y. Prints, for each Bi, the
+# minimum of u_x on the vertical centreline and its height against the
+# published values.
+#   usage: bench/macro_cavity.sh [BUILD_DIR] [PRESET] [CELLS]
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+build=${1:-$here/../build}; preset=${2:-fast}; cells=${3:-16}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# Bi, published u_min, published y
+while read -r bi u_ref y_ref; do
+  model=bingham; [ "$bi" = 0 ] && model=newtonian
+  cat > "$work/cavity.prm" <<PRM
+set scene = cavity
+subsection material
+  set model = $model
+  set yield stress = $bi
+  set consistency = 1
+  set flow index = 1
+end
+subsection cavity
+  set side = 1
+  set cells = $cells
+end
+subsection solver
+  set preset = $preset
+end
+subsection sweep
+  set values = 1
+end
+subsection output
+  set vtu = none
+end
+PRM
+  "$build/macro/macro" run "$work/cavity.prm" -o "$work/out_$bi" -q --force
+  tail -1 "$work/out_$bi/results.csv" | awk -F, -v bi="$bi" -v u="$u_ref" -v y="$y_ref" \
+    '{printf "cavity Bi=%s u_min=%.4f (published %s, rel. diff %+.3f) y=%.3f (published %s) dofs=%d seconds=%.1f\n", bi, $2, u, ($2-u)/(-u), $5, y, $8, $10}'
+done <<'REF'
+0 -0.2007 0.53
+2 -0.1955 0.57
+5 -0.1714 0.57
+20 -0.1131 0.57
+REF

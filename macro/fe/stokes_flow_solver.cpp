@@ -1,0 +1,426 @@
+// The Taylor–Hood Stokes solver (stokes_flow_solver.h); the second heavy
+// deal.II translation unit.
+//
+// Newton's method. With τ = 2η_ε(γ̇)D, N = √2 D/γ̇ and τ' = η + γ̇ dη/dγ̇,
+//
+//     ∂τ/∂D = 2[η 𝕀 + (τ' − η) N⊗N],   so   J(δu)(v) = ∫ 2η D(δu):D(v)
+//             + 4 η'(γ̇)/γ̇ (D:D(δu))(D:D(v)) − ∫ δp ∇·v − ∫ q ∇·δu,
+//
+// a symmetric saddle-point matrix, factorised by UMFPACK (the problems here
+// have ≲ 10⁵ unknowns). τ' is floored at 0.1η after a step the line search cut
+// (as in the scalar solver), which keeps the velocity block positive definite
+// when the material has just yielded. The step length halves until the
+// residual decreases. When every boundary carries a velocity the pressure is
+// fixed up to a constant: one pressure unknown is pinned to zero.
+#include "macro/fe/stokes_flow_solver.h"
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/solution_transfer.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include "common/errors.h"
+#include "macro/material/regularised_law.h"
+
+namespace softglass::macro::fe {
+
+using namespace dealii;
+
+namespace {
+
+constexpr double kContinuationFactor = 10.0;
+constexpr double kTangentFloor = 0.1;
+constexpr int kHalvings = 12;
+
+// The boundary velocity as a deal.II function of the 3 components (u, v, p).
+class BoundaryVelocity : public Function<2> {
+ public:
+  explicit BoundaryVelocity(std::function<Tensor<1, 2>(const Point<2>&)> f)
+      : Function<2>(3), f_(std::move(f)) {}
+  void vector_value(const Point<2>& p, Vector<double>& values) const override {
+    const Tensor<1, 2> u = f_(p);
+    values(0) = u[0];
+    values(1) = u[1];
+    values(2) = 0.0;
+  }
+
+ private:
+  std::function<Tensor<1, 2>(const Point<2>&)> f_;
+};
+
+}  // namespace
+
+class StokesFlowSolver::Implementation {
+ public:
+  Implementation(const Triangulation<2>& base, const HerschelBulkley& law,
+                 const SolverSettings& settings)
+      : law_(law),
+        settings_(settings),
+        mapping_(2),
+        fe_(FE_Q<2>(2), 2, FE_Q<2>(1), 1),
+        dof_handler_(triangulation_) {
+    base_.copy_triangulation(base);
+    base_.refine_global(settings.global_refinements);
+  }
+
+  StokesResult run(const VelocityBoundaryValues& boundary, double rate_c,
+                   types::boundary_id force_id, types::boundary_id pressure_id);
+  std::vector<Tensor<1, 2>> velocity_at(const std::vector<Point<2>>& points) const;
+  void output_results(const std::filesystem::path& file) const;
+
+ private:
+  void setup_system();
+  void assemble_system(const RegularisedLaw& law, bool with_matrix, bool damped);
+  unsigned solve_newton(const RegularisedLaw& law, bool allow_damping);
+  unsigned solve_with_continuation(double target, double start);
+  StokesOutputs evaluate(types::boundary_id force_id, types::boundary_id pressure_id) const;
+
+  HerschelBulkley law_;
+  SolverSettings settings_;
+  VelocityBoundaryValues boundary_;
+  Triangulation<2> base_, triangulation_;
+  MappingQ<2> mapping_;
+  FESystem<2> fe_;
+  DoFHandler<2> dof_handler_;
+  AffineConstraints<double> constraints_, zero_constraints_;
+  SparsityPattern sparsity_;
+  SparseMatrix<double> matrix_;
+  Vector<double> solution_, residual_;
+  std::unique_ptr<RegularisedLaw> regularised_;
+  Vector<double> previous_coarse_;
+  double previous_rate_ = 0.0;
+};
+
+void StokesFlowSolver::Implementation::setup_system() {
+  dof_handler_.distribute_dofs(fe_);
+  DoFRenumbering::Cuthill_McKee(dof_handler_);
+  const FEValuesExtractors::Vector velocities(0);
+  const FEValuesExtractors::Scalar pressure(2);
+  // Pin one pressure unknown when no boundary is free (closed domain).
+  std::set<types::boundary_id> ids;
+  for (const auto& face : triangulation_.active_face_iterators())
+    if (face->at_boundary()) ids.insert(face->boundary_id());
+  bool closed = true;
+  for (auto id : ids) closed = closed && boundary_.count(id) > 0;
+  const IndexSet pressure_dofs = DoFTools::extract_dofs(dof_handler_, fe_.component_mask(pressure));
+  for (auto [constraints, homogeneous] :
+       {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
+    constraints->clear();
+    for (const auto& [id, f] : boundary_) {
+      if (homogeneous) {
+        VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id,
+                                                 Functions::ZeroFunction<2>(3), *constraints,
+                                                 fe_.component_mask(velocities));
+      } else {
+        VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id, BoundaryVelocity(f),
+                                                 *constraints, fe_.component_mask(velocities));
+      }
+    }
+    if (closed) constraints->add_line(pressure_dofs.nth_index_in_set(0));
+    constraints->close();
+  }
+  DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+  DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints_, false);
+  sparsity_.copy_from(dsp);
+  matrix_.reinit(sparsity_);
+  residual_.reinit(dof_handler_.n_dofs());
+}
+
+void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law, bool with_matrix,
+                                                       bool damped) {
+  if (with_matrix) matrix_ = 0.0;
+  residual_ = 0.0;
+  const QGauss<2> quadrature(3);
+  FEValues<2> fe_values(mapping_, fe_, quadrature,
+                        update_values | update_gradients | update_JxW_values);
+  const FEValuesExtractors::Vector velocities(0);
+  const FEValuesExtractors::Scalar pressure(2);
+  const unsigned n = fe_.n_dofs_per_cell();
+  FullMatrix<double> cell_matrix(n, n);
+  Vector<double> cell_residual(n);
+  std::vector<SymmetricTensor<2, 2>> strain(quadrature.size()), phi_d(n);
+  std::vector<double> p(quadrature.size()), div_u(quadrature.size()), phi_div(n), phi_p(n);
+  std::vector<types::global_dof_index> dofs(n);
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+    fe_values[velocities].get_function_divergences(solution_, div_u);
+    fe_values[pressure].get_function_values(solution_, p);
+    cell_matrix = 0.0;
+    cell_residual = 0.0;
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
+      const Viscosity eta = law.viscosity(rate);
+      const double floor = damped ? kTangentFloor : 0.0;
+      // 4η'/γ̇ (D:D(δu))(D:D(v)) = 2(τ' − η) (N:D(δu))(N:D(v)), τ' floored.
+      const double anisotropy =
+          rate > 0.0 ? 2.0 * std::max(eta.derivative * rate, (floor - 1.0) * eta.value) * 2.0 /
+                           (rate * rate)
+                     : 0.0;
+      const double jxw = fe_values.JxW(q);
+      for (unsigned k = 0; k < n; ++k) {
+        phi_d[k] = fe_values[velocities].symmetric_gradient(k, q);
+        phi_div[k] = fe_values[velocities].divergence(k, q);
+        phi_p[k] = fe_values[pressure].value(k, q);
+      }
+      for (unsigned i = 0; i < n; ++i) {
+        cell_residual(i) += (2.0 * eta.value * (strain[q] * phi_d[i]) - p[q] * phi_div[i] -
+                             phi_p[i] * div_u[q]) *
+                            jxw;
+        if (!with_matrix) continue;
+        const double n_i = strain[q] * phi_d[i];
+        for (unsigned j = 0; j < n; ++j) {
+          cell_matrix(i, j) += (2.0 * eta.value * (phi_d[j] * phi_d[i]) +
+                                anisotropy * n_i * (strain[q] * phi_d[j]) -
+                                phi_p[j] * phi_div[i] - phi_p[i] * phi_div[j]) *
+                               jxw;
+        }
+      }
+    }
+    cell->get_dof_indices(dofs);
+    if (with_matrix) {
+      zero_constraints_.distribute_local_to_global(cell_matrix, cell_residual, dofs, matrix_,
+                                                   residual_);
+    } else {
+      zero_constraints_.distribute_local_to_global(cell_residual, dofs, residual_);
+    }
+  }
+}
+
+unsigned StokesFlowSolver::Implementation::solve_newton(const RegularisedLaw& law,
+                                                        bool allow_damping) {
+  Vector<double> update(dof_handler_.n_dofs());
+  bool damped = false;
+  for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
+    assemble_system(law, true, damped);
+    const double r0 = residual_.l2_norm();
+    SparseDirectUMFPACK direct;
+    direct.initialize(matrix_);
+    update = residual_;
+    direct.solve(update);
+    update *= -1.0;
+    zero_constraints_.distribute(update);
+    double alpha = 1.0;
+    for (int k = 0; k < kHalvings; ++k, alpha *= 0.5) {
+      solution_.add(alpha, update);
+      assemble_system(law, false, false);
+      solution_.add(-alpha, update);
+      if (residual_.l2_norm() < r0) break;
+    }
+    solution_.add(alpha, update);
+    damped = allow_damping && alpha < 0.5;
+    const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
+    if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
+  }
+  throw NumericalError(fmt::format("Stokes Newton did not converge in {} iterations (eps = {:.3g} 1/s, {} dofs)",
+                                   settings_.max_newton_iterations, law.rate_scale(),
+                                   dof_handler_.n_dofs()));
+}
+
+unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target, double start) {
+  unsigned iterations = 0;
+  double eps = std::max(start, target);
+  while (true) {
+    regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
+    const Vector<double> begin = solution_;
+    try {
+      iterations += solve_newton(*regularised_, false);
+    } catch (const NumericalError&) {
+      solution_ = begin;
+      iterations += settings_.max_newton_iterations + solve_newton(*regularised_, true);
+    }
+    if (eps <= target * (1.0 + 1e-12)) return iterations;
+    eps = std::max(eps / kContinuationFactor, target);
+  }
+}
+
+StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id force_id,
+                                                         types::boundary_id pressure_id) const {
+  StokesOutputs out;
+  const QGauss<2> quadrature(3);
+  FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
+  const QGauss<1> face_quadrature(3);
+  FEFaceValues<2> face_values(mapping_, fe_, face_quadrature,
+                              update_values | update_gradients | update_normal_vectors |
+                                  update_JxW_values);
+  const FEValuesExtractors::Vector velocities(0);
+  const FEValuesExtractors::Scalar pressure(2);
+  std::vector<SymmetricTensor<2, 2>> strain(quadrature.size()), face_strain(face_quadrature.size());
+  std::vector<double> face_p(face_quadrature.size());
+  double area = 0.0, yielded = 0.0, pressure_length = 0.0;
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
+      const double tau = regularised_->stress(rate);
+      out.dissipation += tau * rate * fe_values.JxW(q);
+      area += fe_values.JxW(q);
+      if (tau > law_.yield_stress) yielded += fe_values.JxW(q);
+    }
+    for (const unsigned f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary()) continue;
+      const auto id = cell->face(f)->boundary_id();
+      if (id != force_id && id != pressure_id) continue;
+      face_values.reinit(cell, f);
+      face_values[velocities].get_function_symmetric_gradients(solution_, face_strain);
+      face_values[pressure].get_function_values(solution_, face_p);
+      for (const unsigned q : face_values.quadrature_point_indices()) {
+        const double rate = std::sqrt(2.0 * (face_strain[q] * face_strain[q]));
+        const double eta = regularised_->viscosity(rate).value;
+        const Tensor<1, 2> normal = face_values.normal_vector(q);  // out of the fluid
+        if (id == force_id) {
+          // On the body: −σ n with n out of the fluid is the body's outward
+          // normal reversed, so the force on the body is ∫ σ (−n_body) = −∫ σ n.
+          const Tensor<1, 2> traction = -face_p[q] * normal + 2.0 * eta * (face_strain[q] * normal);
+          out.force -= traction * face_values.JxW(q);
+        }
+        if (id == pressure_id) {
+          out.mean_pressure += face_p[q] * face_values.JxW(q);
+          pressure_length += face_values.JxW(q);
+        }
+      }
+    }
+  }
+  out.yielded_fraction = yielded / area;
+  if (pressure_length > 0.0) out.mean_pressure /= pressure_length;
+  return out;
+}
+
+StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues& boundary,
+                                                   double rate_c, types::boundary_id force_id,
+                                                   types::boundary_id pressure_id) {
+  const auto start = std::chrono::steady_clock::now();
+  boundary_ = boundary;
+  StokesResult result;
+  triangulation_.clear();
+  triangulation_.copy_triangulation(base_);
+  setup_system();
+  solution_.reinit(dof_handler_.n_dofs());
+  const double target = settings_.relative_rate_scale * rate_c;
+  const bool warm = previous_coarse_.size() == solution_.size() && previous_rate_ > 0.0;
+  if (warm) {
+    solution_ = previous_coarse_;
+    solution_ *= rate_c / previous_rate_;
+  }
+  constraints_.distribute(solution_);
+  // Nested iteration: the continuation on the coarse mesh down to 10ε and ε.
+  result.iterations += solve_with_continuation(kContinuationFactor * target,
+                                               warm ? kContinuationFactor * target : rate_c);
+  result.at_ten_epsilon = evaluate(force_id, pressure_id);
+  result.iterations += solve_with_continuation(target, target);
+  result.coarse = evaluate(force_id, pressure_id);
+  previous_coarse_ = solution_;
+  previous_rate_ = rate_c;
+
+  // One uniform refinement, the solution carried over, Newton at ε.
+  SolutionTransfer<2> transfer(dof_handler_);
+  triangulation_.set_all_refine_flags();
+  triangulation_.prepare_coarsening_and_refinement();
+  transfer.prepare_for_coarsening_and_refinement(solution_);
+  triangulation_.execute_coarsening_and_refinement();
+  setup_system();
+  Vector<double> fine(dof_handler_.n_dofs());
+  transfer.interpolate(solution_, fine);
+  solution_ = fine;
+  constraints_.distribute(solution_);
+  try {
+    result.iterations += solve_newton(*regularised_, false);
+  } catch (const NumericalError&) {
+    solution_ = fine;
+    constraints_.distribute(solution_);
+    result.iterations += settings_.max_newton_iterations + solve_newton(*regularised_, true);
+  }
+  result.value = evaluate(force_id, pressure_id);
+  result.cells = triangulation_.n_active_cells();
+  result.dofs = dof_handler_.n_dofs();
+  result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::vector<Tensor<1, 2>> StokesFlowSolver::Implementation::velocity_at(
+    const std::vector<Point<2>>& points) const {
+  std::vector<Tensor<1, 2>> result;
+  Vector<double> value(3);
+  for (const Point<2>& x : points) {
+    VectorTools::point_value(mapping_, dof_handler_, solution_, x, value);
+    result.push_back(Tensor<1, 2>({value(0), value(1)}));
+  }
+  return result;
+}
+
+void StokesFlowSolver::Implementation::output_results(const std::filesystem::path& file) const {
+  const unsigned n_cells = triangulation_.n_active_cells();
+  Vector<double> rate(n_cells), tau(n_cells), yielded(n_cells);
+  const QGauss<2> quadrature(3);
+  FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients);
+  const FEValuesExtractors::Vector velocities(0);
+  std::vector<SymmetricTensor<2, 2>> strain(quadrature.size());
+  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    fe_values.reinit(cell);
+    fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+    const unsigned c = cell->active_cell_index();
+    for (const unsigned q : fe_values.quadrature_point_indices()) {
+      const double g = std::sqrt(2.0 * (strain[q] * strain[q])), t = regularised_->stress(g);
+      rate(c) += g / quadrature.size();
+      tau(c) += t / quadrature.size();
+      yielded(c) += t > law_.yield_stress ? 1.0 / quadrature.size() : 0.0;
+    }
+  }
+  std::vector<std::string> names{"velocity", "velocity", "pressure"};
+  std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds{
+      DataComponentInterpretation::component_is_part_of_vector,
+      DataComponentInterpretation::component_is_part_of_vector,
+      DataComponentInterpretation::component_is_scalar};
+  DataOut<2> data_out;
+  data_out.attach_dof_handler(dof_handler_);
+  data_out.add_data_vector(solution_, names, DataOut<2>::type_dof_data, kinds);
+  data_out.add_data_vector(rate, "shear_rate");
+  data_out.add_data_vector(tau, "stress");
+  data_out.add_data_vector(yielded, "yielded");
+  data_out.build_patches(mapping_, 2);
+  std::ofstream out(file);
+  data_out.write_vtu(out);
+  if (!out) throw NumericalError(fmt::format("cannot write {}", file.string()));
+}
+
+StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const HerschelBulkley& law,
+                                   const SolverSettings& settings)
+    : impl_(std::make_unique<Implementation>(base_mesh, law, settings)) {}
+
+StokesFlowSolver::~StokesFlowSolver() = default;
+
+StokesResult StokesFlowSolver::run(const VelocityBoundaryValues& boundary, double characteristic_rate,
+                                   types::boundary_id force_boundary,
+                                   types::boundary_id pressure_boundary) {
+  return impl_->run(boundary, characteristic_rate, force_boundary, pressure_boundary);
+}
+
+std::vector<Tensor<1, 2>> StokesFlowSolver::velocity_at(const std::vector<Point<2>>& points) const {
+  return impl_->velocity_at(points);
+}
+
+void StokesFlowSolver::output_results(const std::filesystem::path& file) const {
+  impl_->output_results(file);
+}
+
+}  // namespace softglass::macro::fe

@@ -1,0 +1,72 @@
+// Plane creeping flow of a regularised Herschel–Bulkley material where the
+// flow really is two-directional (lid-driven cavity, channel with an obstacle):
+// the Stokes problem with the velocity–pressure pair (u, p) on Taylor–Hood
+// Q2–Q1 elements,
+//
+//     −∇·(2η_ε(γ̇) D(u)) + ∇p = 0,   ∇·u = 0,     γ̇ = √(2 D:D),
+//
+// solved by Newton's method with continuation in ε, as the scalar solver
+// (scalar_flow_solver.h) does, and nested iteration: the continuation runs on
+// the mesh one uniform refinement coarser, whose result also gives the
+// discretisation error estimate.
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "macro/fe/solver_settings.h"
+#include "macro/material/herschel_bulkley.h"
+
+namespace softglass::macro::fe {
+
+/// Velocity boundary data: a function of the position per boundary id; ids not
+/// listed are outflow boundaries (zero traction, "do nothing").
+using VelocityBoundaryValues =
+    std::map<dealii::types::boundary_id, std::function<dealii::Tensor<1, 2>(const dealii::Point<2>&)>>;
+
+struct StokesOutputs {
+  double dissipation = 0.0;       ///< ∫ τ:D dA (per unit depth) [W/m]
+  double yielded_fraction = 0.0;  ///< area where |τ| > τ_y over the whole area
+  /// Force of the fluid on the boundary `force_boundary`, per unit depth [N/m].
+  dealii::Tensor<1, 2> force;
+  /// Mean pressure on the boundary `pressure_boundary` [Pa].
+  double mean_pressure = 0.0;
+};
+
+struct StokesResult {
+  StokesOutputs value, coarse, at_ten_epsilon;  ///< fine mesh; coarse mesh; fine mesh at 10ε
+  unsigned cells = 0, dofs = 0, iterations = 0;
+  double wall_time = 0.0;
+};
+
+class StokesFlowSolver {
+ public:
+  StokesFlowSolver(const dealii::Triangulation<2>& base_mesh, const HerschelBulkley& law,
+                   const SolverSettings& settings);
+  ~StokesFlowSolver();
+
+  /// Solves with the given boundary velocities; γ̇_c sets the regularisation
+  /// scale. Forces are integrated over `force_boundary`, the mean pressure
+  /// over `pressure_boundary` (invalid id: none).
+  StokesResult run(const VelocityBoundaryValues& boundary, double characteristic_rate,
+                   dealii::types::boundary_id force_boundary,
+                   dealii::types::boundary_id pressure_boundary);
+
+  /// u at points of the domain (last solve, fine mesh).
+  std::vector<dealii::Tensor<1, 2>> velocity_at(const std::vector<dealii::Point<2>>& points) const;
+
+  /// VTU of the last solve: velocity, pressure, γ̇, |τ|, yielded.
+  void output_results(const std::filesystem::path& file) const;
+
+ private:
+  class Implementation;
+  std::unique_ptr<Implementation> impl_;
+};
+
+}  // namespace softglass::macro::fe

@@ -1,0 +1,190 @@
+// The scenes that need the full Stokes problem (fe/stokes_flow_solver.h).
+//
+// cavity:   the lid-driven square cavity of side L, lid speed U (the drive):
+//           the Bingham benchmark of macro.md (Bi = τ_y L/(μU)). Reports the
+//           minimum of u_x on the vertical centreline and where it is.
+// obstacle: a channel of height 0.41 D/0.1 with a cylinder of diameter D
+//           (deal.II's channel_with_cylinder, the DFG benchmark's geometry,
+//           scaled), mean inflow speed U (the drive) with a parabolic inflow
+//           profile, free outflow. Reports the pressure drop inflow → outflow
+//           and the drag and lift on the cylinder, per unit depth.
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "macro/fe/stokes_flow_solver.h"
+#include "macro/scenes/entries.h"
+#include "macro/scenes/scene.h"
+
+namespace softglass::macro {
+
+using dealii::ParameterHandler;
+using dealii::Point;
+using dealii::Tensor;
+namespace Patterns = dealii::Patterns;
+
+namespace {
+
+// Centreline samples of the cavity: the minimum is located to L/kSamples.
+constexpr int kSamples = 400;
+
+class Cavity final : public Scene {
+ public:
+  Cavity(double side, unsigned cells, const HerschelBulkley& law, const fe::SolverSettings& settings)
+      : side_(side), solver_(mesh(side, cells), law, settings) {}
+
+  std::string description() const override {
+    return fmt::format("lid-driven cavity, side {} m: Stokes (u, p), Taylor-Hood Q2-Q1", side_);
+  }
+  Column drive() const override { return {"lid_speed", "m/s"}; }
+  std::vector<Column> columns() const override {
+    return {{"min_centreline_u", "m/s"},
+            {"min_centreline_u_discretisation_error", "m/s"},
+            {"min_centreline_u_regularisation_error", "m/s"},
+            {"y_at_min_over_side", "1"},
+            {"yielded_fraction", "1"},
+            {"cells", "1"},
+            {"dofs", "1"},
+            {"iterations", "1"},
+            {"wall_time", "s"}};
+  }
+  std::vector<double> solve(double lid) override {
+    // No slip on walls (ids 0, 1, 2) after the lid (3), so the top corners
+    // belong to the walls.
+    const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
+    const auto moving = [lid](const Point<2>&) { return Tensor<1, 2>({lid, 0.0}); };
+    const dealii::types::boundary_id none = dealii::numbers::invalid_boundary_id;
+    const auto r = solver_.run({{3, moving}, {0, zero}, {1, zero}, {2, zero}}, lid / side_, none, none);
+    const auto [u_min, y_min] = centreline_minimum();
+    // The coarse mesh's minimum is not kept; the change of the dissipation
+    // between the meshes, relative, scales the fine value's error estimate.
+    const double disc = std::abs(u_min) * std::abs(r.value.dissipation - r.coarse.dissipation) /
+                        r.value.dissipation;
+    const double reg = std::abs(u_min) * std::abs(r.coarse.dissipation - r.at_ten_epsilon.dissipation) /
+                       (9.0 * r.value.dissipation);
+    return {u_min, disc, reg, y_min / side_, r.value.yielded_fraction, double(r.cells),
+            double(r.dofs), double(r.iterations), r.wall_time};
+  }
+  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+
+ private:
+  static dealii::Triangulation<2> mesh(double side, unsigned cells) {
+    dealii::Triangulation<2> t;
+    dealii::GridGenerator::subdivided_hyper_rectangle(t, {cells, cells}, Point<2>(0, 0),
+                                                      Point<2>(side, side), true);
+    return t;
+  }
+  std::pair<double, double> centreline_minimum() const {
+    std::vector<Point<2>> points;
+    for (int k = 1; k < kSamples; ++k) points.emplace_back(0.5 * side_, side_ * k / kSamples);
+    const auto u = solver_.velocity_at(points);
+    double best = std::numeric_limits<double>::max(), y = 0.0;
+    for (std::size_t k = 0; k < u.size(); ++k)
+      if (u[k][0] < best) best = u[k][0], y = points[k][1];
+    return {best, y};
+  }
+
+  double side_;
+  fe::StokesFlowSolver solver_;
+};
+
+class Obstacle final : public Scene {
+ public:
+  Obstacle(double diameter, const HerschelBulkley& law, const fe::SolverSettings& settings)
+      : diameter_(diameter), height_(4.1 * diameter), solver_(mesh(diameter), law, settings) {}
+
+  std::string description() const override {
+    return fmt::format(
+        "channel of height {} m with a cylinder of diameter {} m (DFG geometry): Stokes (u, p), "
+        "Taylor-Hood Q2-Q1",
+        height_, diameter_);
+  }
+  Column drive() const override { return {"mean_inflow_speed", "m/s"}; }
+  std::vector<Column> columns() const override {
+    return {{"pressure_drop", "Pa"},
+            {"pressure_drop_discretisation_error", "Pa"},
+            {"pressure_drop_regularisation_error", "Pa"},
+            {"drag_per_depth", "N/m"},
+            {"lift_per_depth", "N/m"},
+            {"yielded_fraction", "1"},
+            {"cells", "1"},
+            {"dofs", "1"},
+            {"iterations", "1"},
+            {"wall_time", "s"}};
+  }
+  std::vector<double> solve(double speed) override {
+    const double H = height_;
+    // Parabolic inflow with mean speed U: 6U y(H − y)/H².
+    const auto inflow = [speed, H](const Point<2>& p) {
+      return Tensor<1, 2>({6.0 * speed * p[1] * (H - p[1]) / (H * H), 0.0});
+    };
+    const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
+    const auto r = solver_.run({{0, inflow}, {2, zero}, {3, zero}}, 6.0 * speed / H, 2, 0);
+    return {r.value.mean_pressure,
+            std::abs(r.value.mean_pressure - r.coarse.mean_pressure),
+            std::abs(r.coarse.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
+            r.value.force[0],
+            r.value.force[1],
+            r.value.yielded_fraction,
+            double(r.cells),
+            double(r.dofs),
+            double(r.iterations),
+            r.wall_time};
+  }
+  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+
+ private:
+  // deal.II's DFG channel (D = 0.1) scaled by D/0.1, the cylinder's polar
+  // manifold rebuilt about the scaled centre. The transfinite manifold of the
+  // cells around it is dropped (flat): it is bound to the triangulation it
+  // was initialised on, and the solver works on copies.
+  static dealii::Triangulation<2> mesh(double diameter) {
+    dealii::Triangulation<2> t;
+    dealii::GridGenerator::channel_with_cylinder(t, 0.03, 2, 2.0, true);
+    const double s = diameter / 0.1;
+    dealii::GridTools::scale(s, t);
+    t.set_manifold(0, dealii::PolarManifold<2>(Point<2>(0.2 * s, 0.2 * s)));
+    t.reset_manifold(1);
+    return t;
+  }
+
+  double diameter_, height_;
+  fe::StokesFlowSolver solver_;
+};
+
+}  // namespace
+
+void declare_stokes_scenes(ParameterHandler& prm) {
+  prm.enter_subsection("cavity");
+  prm.declare_entry("side", "1", Patterns::Double(), "L [m], > 0");
+  prm.declare_entry("cells", "16", Patterns::Integer(2, 1000), "cells per side (coarse mesh)");
+  prm.leave_subsection();
+  prm.enter_subsection("obstacle");
+  prm.declare_entry("diameter", "0.01", Patterns::Double(),
+                    "D [m], > 0: channel 2.2 D/0.1 long and 0.41 D/0.1 high");
+  prm.leave_subsection();
+}
+
+std::unique_ptr<Scene> make_cavity(ParameterHandler& prm, const Material& material,
+                                   const fe::SolverSettings& settings) {
+  prm.enter_subsection("cavity");
+  const double side = entries::positive(prm, "cavity", "side", "m");
+  const unsigned cells = prm.get_integer("cells");
+  prm.leave_subsection();
+  return std::make_unique<Cavity>(side, cells, material.shear, settings);
+}
+
+std::unique_ptr<Scene> make_obstacle(ParameterHandler& prm, const Material& material,
+                                     const fe::SolverSettings& settings) {
+  prm.enter_subsection("obstacle");
+  const double d = entries::positive(prm, "obstacle", "diameter", "m");
+  prm.leave_subsection();
+  return std::make_unique<Obstacle>(d, material.shear, settings);
+}
+
+}  // namespace softglass::macro
