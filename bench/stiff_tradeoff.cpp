@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     double sigma = 0, n1 = 0, n2 = 0, done = 0;
-    std::size_t samples = 0, steps = 0, rejected = 0;
+    std::size_t samples = 0, steps = 0, rejected = 0, newton = 0, linear = 0;
     bool complete = true;
     try {
       if (scheme == "aqs") {
@@ -92,7 +92,9 @@ int main(int argc, char** argv) {
           const ShearObservables o = observables(r.series.elastic[k]);
           sigma += o.shear, n1 += o.n1, n2 += o.n2, ++samples;
         }
-        steps = r.newton_iterations;
+        steps = r.steps;
+        newton = r.newton_iterations;
+        linear = r.cg_iterations;
         done = strain;
       } else {
         ShearModel model;
@@ -122,6 +124,8 @@ int main(int argc, char** argv) {
         done = flow.strain() - origin;
         steps = integrator->stats().accepted;
         rejected = integrator->stats().rejected;
+        newton = integrator->stats().newton_iterations;
+        linear = integrator->stats().linear_iterations;
       }
     } catch (const std::exception& e) {
       fmt::print("run {} {:.0e}:{} failed \"{}\"\n", scheme, value, stability, e.what());
@@ -132,9 +136,9 @@ int main(int argc, char** argv) {
     const double k = samples > 0 ? 1.0 / double(samples) : 0.0;
     fmt::print(
         "run {} {:.0e}:{} gamma {:.0e} sigma {:.6e} N1 {:.6e} N2 {:.6e} seconds {:.2f} per_strain "
-        "{:.4g} steps {} rejected {} strain {:.4f} complete {}\n",
+        "{:.4g} steps {} rejected {} newton {} cg {} strain {:.4f} complete {}\n",
         scheme, value, stability, gamma_tilde, sigma * k, n1 * k, n2 * k, seconds,
-        seconds / std::max(done, 1e-12), steps, rejected, done, complete ? 1 : 0);
+        seconds / std::max(done, 1e-12), steps, rejected, newton, linear, done, complete ? 1 : 0);
     std::fflush(stdout);
   }
   return 0;

@@ -15,6 +15,8 @@ namespace {
 constexpr double kListMargin = 0.05;
 // A margin no list is valid for: forces a rebuild where the system is.
 constexpr double kForceRebuild = 1e6;
+// A step that converges in this many Newton iterations was elastic.
+constexpr int kElasticIterations = 6;
 }  // namespace
 
 void AqsSettings::validate() const {
@@ -48,12 +50,15 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings,
   const auto steps = static_cast<std::size_t>(std::llround(settings.strain / settings.strain_step));
   const double dg = settings.strain_step;
   double last_sigma = 0.0;
+  bool elastic_before = true;
 
   for (std::size_t step = 1; step <= steps; ++step) {
     system.ensure_neighbours(kListMargin, system.box().strain() + dg);
     system.move(dg, zero, /*affine=*/true);
     system.advance_strain(dg);
-    for (std::size_t a = 0; a < n; ++a) u[a] = dg * previous[a];
+    // The last step's displacement as the guess, unless it was a plastic event
+    // (many iterations): then its rearrangement says nothing about this step.
+    for (std::size_t a = 0; a < n; ++a) u[a] = elastic_before ? Vec3(dg * previous[a]) : Vec3::Zero();
     int iterations = 0;
     all_energies.clear();
     for (;;) {
@@ -83,6 +88,7 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings,
     }
     if (observer) observer(all_energies);
     result.newton_iterations += iterations;
+    elastic_before = iterations <= kElasticIterations;
     const ContactField& field = system.compute_forces({.energy = true, .virial = true});
     const Eigen::Matrix3d sigma = -field.virial / system.box().volume();
     result.series.strain.push_back(system.box().strain() - start);

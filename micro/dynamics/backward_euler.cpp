@@ -113,17 +113,23 @@ class BackwardEuler final : public Integrator {
       settings.loosen = true;
       minimiser_.set_settings(settings);
       const IncrementalResult r = minimiser_.minimise(system, proximal_, drag, h, guess_);
+      stats_.newton_iterations = minimiser_.counters().iterations;
+      stats_.linear_iterations = minimiser_.counters().cg_iterations;
       if (r.list_invalid) {
-        // The step moves particles further than the list allows: if the list
-        // was made for a small move, a rebuild with a wider margin; otherwise
-        // the step spans a rearrangement, and is shortened.
+        // The step moves particles further than the list allows. If the error
+        // of the partial solution already exceeds the tolerance, the step
+        // spans a rearrangement and is shortened; else, if the list was made
+        // for a small move, it is rebuilt with a wider margin.
         flow.restore(before_);
         ++stats_.rejected;
         rejected = true;
-        if (std::max(predicted, list_margin) < 0.5 * widest) {
+        const double partial = step_error(h);
+        if (partial <= spec_.tolerance && std::max(predicted, list_margin) < 0.5 * widest) {
           list_margin = widest;
         } else {
-          h *= 0.25;
+          h *= partial > spec_.tolerance
+                   ? std::max(0.2, 0.9 * std::sqrt(spec_.tolerance / partial))
+                   : 0.25;
         }
         continue;
       }
@@ -135,10 +141,7 @@ class BackwardEuler final : public Integrator {
         h *= 0.25;
         continue;
       }
-      double worst = 0.0;
-      for (std::size_t a = 0; a < n; ++a)
-        worst = std::max(worst, (guess_[a] - h * velocity_[a]).squaredNorm());
-      const double error = 0.5 * std::sqrt(worst);
+      const double error = step_error(h);
       const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
       if (error > spec_.tolerance) {
         flow.restore(before_);
@@ -161,6 +164,14 @@ class BackwardEuler final : public Integrator {
   }
 
  private:
+  // max_α ½|u_α − h v_n,α| for the solution (or partial solution) in guess_.
+  double step_error(double h) const {
+    double worst = 0.0;
+    for (std::size_t a = 0; a < guess_.size(); ++a)
+      worst = std::max(worst, (guess_[a] - h * velocity_[a]).squaredNorm());
+    return 0.5 * std::sqrt(worst);
+  }
+
   IntegratorSpec spec_;
   IncrementalMinimiser minimiser_;
   FrozenDrag drag_;

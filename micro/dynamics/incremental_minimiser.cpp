@@ -115,6 +115,11 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
     diagonal_[c.j[k]] += majorant;
   }
   // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header).
+  // Its pairs are mostly the elastic ones, listed in the same order (both come
+  // from the same neighbour list, particle by particle): a drag block is added
+  // to its pair's elastic block when there is one, halving the product's work.
+  const std::size_t elastic_pairs = block_.size();
+  std::size_t cursor = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
     const double a = drag.coefficient[k];
     if (a <= 0.0) continue;
@@ -125,11 +130,19 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
     const Vec3& nk = drag.normal[k];
     const Eigen::Matrix3d b =
         s * (identity - nk * nk.transpose() - relief_[k] * unit * unit.transpose());
-    pair_i_.push_back(drag.i[k]);
-    pair_j_.push_back(drag.j[k]);
-    block_.push_back(b);
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
+    while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;
+    std::size_t match = cursor;
+    while (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] != drag.j[k])
+      ++match;
+    if (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] == drag.j[k]) {
+      block_[match] += b;
+    } else {
+      pair_i_.push_back(drag.i[k]);
+      pair_j_.push_back(drag.j[k]);
+      block_.push_back(b);
+    }
   }
   // Block-Jacobi preconditioner; a particle without contacts or friction (a
   // rattler in quasi-static shear) gets a tiny diagonal instead of none.

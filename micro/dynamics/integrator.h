@@ -26,6 +26,10 @@ struct IntegratorStats {
   double smallest_step = 0.0;
   double largest_step = 0.0;
   double last_step = 0.0;
+  // Implicit schemes: Newton and linear-solver (CG) iterations, accepted and
+  // rejected steps together.
+  std::size_t newton_iterations = 0;
+  std::size_t linear_iterations = 0;
 };
 
 class Integrator {
