@@ -183,16 +183,16 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
         phi_p[k] = fe_values[pressure].value(k, q);
       }
       for (unsigned i = 0; i < n; ++i) {
-        cell_residual(i) += (2.0 * eta.value * (strain[q] * phi_d[i]) - p[q] * phi_div[i] -
-                             phi_p[i] * div_u[q]) *
-                            jxw;
+        cell_residual(i) +=
+            (2.0 * eta.value * (strain[q] * phi_d[i]) - p[q] * phi_div[i] - phi_p[i] * div_u[q]) *
+            jxw;
         if (!with_matrix) continue;
         const double n_i = strain[q] * phi_d[i];
         for (unsigned j = 0; j < n; ++j) {
-          cell_matrix(i, j) += (2.0 * eta.value * (phi_d[j] * phi_d[i]) +
-                                anisotropy * n_i * (strain[q] * phi_d[j]) -
-                                phi_p[j] * phi_div[i] - phi_p[i] * phi_div[j]) *
-                               jxw;
+          cell_matrix(i, j) +=
+              (2.0 * eta.value * (phi_d[j] * phi_d[i]) + anisotropy * n_i * (strain[q] * phi_d[j]) -
+               phi_p[j] * phi_div[i] - phi_p[i] * phi_div[j]) *
+              jxw;
         }
       }
     }
@@ -231,9 +231,9 @@ unsigned StokesFlowSolver::Implementation::solve_newton(const RegularisedLaw& la
     const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
     if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
   }
-  throw NumericalError(fmt::format("Stokes Newton did not converge in {} iterations (eps = {:.3g} 1/s, {} dofs)",
-                                   settings_.max_newton_iterations, law.rate_scale(),
-                                   dof_handler_.n_dofs()));
+  throw NumericalError(
+      fmt::format("Stokes Newton did not converge in {} iterations (eps = {:.3g} 1/s, {} dofs)",
+                  settings_.max_newton_iterations, law.rate_scale(), dof_handler_.n_dofs()));
 }
 
 unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target, double start) {
@@ -259,9 +259,9 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
   const QGauss<1> face_quadrature(3);
-  FEFaceValues<2> face_values(mapping_, fe_, face_quadrature,
-                              update_values | update_gradients | update_normal_vectors |
-                                  update_JxW_values);
+  FEFaceValues<2> face_values(
+      mapping_, fe_, face_quadrature,
+      update_values | update_gradients | update_normal_vectors | update_JxW_values);
   const FEValuesExtractors::Vector velocities(0);
   const FEValuesExtractors::Scalar pressure(2);
   std::vector<SymmetricTensor<2, 2>> strain(quadrature.size()), face_strain(face_quadrature.size());
@@ -353,7 +353,8 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
   result.value = evaluate(force_id, pressure_id);
   result.cells = triangulation_.n_active_cells();
   result.dofs = dof_handler_.n_dofs();
-  result.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -409,8 +410,8 @@ StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const Hers
 
 StokesFlowSolver::~StokesFlowSolver() = default;
 
-StokesResult StokesFlowSolver::run(const VelocityBoundaryValues& boundary, double characteristic_rate,
-                                   types::boundary_id force_boundary,
+StokesResult StokesFlowSolver::run(const VelocityBoundaryValues& boundary,
+                                   double characteristic_rate, types::boundary_id force_boundary,
                                    types::boundary_id pressure_boundary) {
   return impl_->run(boundary, characteristic_rate, force_boundary, pressure_boundary);
 }

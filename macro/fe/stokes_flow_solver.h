@@ -28,7 +28,8 @@ namespace softglass::macro::fe {
 /// Velocity boundary data: a function of the position per boundary id; ids not
 /// listed are outflow boundaries (zero traction, "do nothing").
 using VelocityBoundaryValues =
-    std::map<dealii::types::boundary_id, std::function<dealii::Tensor<1, 2>(const dealii::Point<2>&)>>;
+    std::map<dealii::types::boundary_id,
+             std::function<dealii::Tensor<1, 2>(const dealii::Point<2>&)>>;
 
 struct StokesOutputs {
   double dissipation = 0.0;       ///< ∫ τ:D dA (per unit depth) [W/m]

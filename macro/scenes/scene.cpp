@@ -30,7 +30,8 @@ std::unique_ptr<Scene> make_cavity(ParameterHandler&, const Material&, const fe:
 std::unique_ptr<Scene> make_obstacle(ParameterHandler&, const Material&, const fe::SolverSettings&);
 
 std::vector<std::string> scene_names() {
-  return {"channel", "pipe", "duct", "couette", "cone-plate", "parallel-plates", "cavity", "obstacle"};
+  return {"channel",         "pipe",   "duct",    "couette", "cone-plate",
+          "parallel-plates", "cavity", "obstacle"};
 }
 
 void declare_scenes(ParameterHandler& prm) {

@@ -35,7 +35,8 @@ constexpr int kSamples = 400;
 
 class Cavity final : public Scene {
  public:
-  Cavity(double side, unsigned cells, const HerschelBulkley& law, const fe::SolverSettings& settings)
+  Cavity(double side, unsigned cells, const HerschelBulkley& law,
+         const fe::SolverSettings& settings)
       : side_(side), solver_(mesh(side, cells), law, settings) {}
 
   std::string description() const override {
@@ -59,16 +60,25 @@ class Cavity final : public Scene {
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto moving = [lid](const Point<2>&) { return Tensor<1, 2>({lid, 0.0}); };
     const dealii::types::boundary_id none = dealii::numbers::invalid_boundary_id;
-    const auto r = solver_.run({{3, moving}, {0, zero}, {1, zero}, {2, zero}}, lid / side_, none, none);
+    const auto r =
+        solver_.run({{3, moving}, {0, zero}, {1, zero}, {2, zero}}, lid / side_, none, none);
     const auto [u_min, y_min] = centreline_minimum();
     // The coarse mesh's minimum is not kept; the change of the dissipation
     // between the meshes, relative, scales the fine value's error estimate.
     const double disc = std::abs(u_min) * std::abs(r.value.dissipation - r.coarse.dissipation) /
                         r.value.dissipation;
-    const double reg = std::abs(u_min) * std::abs(r.coarse.dissipation - r.at_ten_epsilon.dissipation) /
+    const double reg = std::abs(u_min) *
+                       std::abs(r.coarse.dissipation - r.at_ten_epsilon.dissipation) /
                        (9.0 * r.value.dissipation);
-    return {u_min, disc, reg, y_min / side_, r.value.yielded_fraction, double(r.cells),
-            double(r.dofs), double(r.iterations), r.wall_time};
+    return {u_min,
+            disc,
+            reg,
+            y_min / side_,
+            r.value.yielded_fraction,
+            double(r.cells),
+            double(r.dofs),
+            double(r.iterations),
+            r.wall_time};
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
