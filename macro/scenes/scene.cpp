@@ -29,10 +29,12 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler&, const Material&,
 std::unique_ptr<Scene> make_cavity(ParameterHandler&, const Material&, const fe::SolverSettings&);
 std::unique_ptr<Scene> make_obstacle(ParameterHandler&, const Material&, const fe::SolverSettings&);
 std::unique_ptr<Scene> make_cylinder(ParameterHandler&, const Material&, const fe::SolverSettings&);
+std::unique_ptr<Scene> make_contraction(ParameterHandler&, const Material&,
+                                        const fe::SolverSettings&);
 
 std::vector<std::string> scene_names() {
-  return {"channel",         "pipe",   "duct",     "couette", "cone-plate",
-          "parallel-plates", "cavity", "obstacle", "cylinder"};
+  return {"channel",         "pipe",   "duct",     "couette",     "cone-plate",
+          "parallel-plates", "cavity", "obstacle", "contraction", "cylinder"};
 }
 
 void declare_scenes(ParameterHandler& prm) {
@@ -60,6 +62,7 @@ std::unique_ptr<Scene> make_scene(ParameterHandler& prm, const Material& materia
   if (name == "cavity") return make_cavity(prm, material, settings);
   if (name == "obstacle") return make_obstacle(prm, material, settings);
   if (name == "cylinder") return make_cylinder(prm, material, settings);
+  if (name == "contraction") return make_contraction(prm, material, settings);
   throw InputError(
       fmt::format("scene = '{}' is unknown; allowed: {}", name, fmt::join(scene_names(), ", ")));
 }

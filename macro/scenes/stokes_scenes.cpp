@@ -8,6 +8,10 @@
 //           scaled), mean inflow speed U (the drive) with a parabolic inflow
 //           profile, free outflow. Reports the pressure drop inflow → outflow
 //           and the drag and lift on the cylinder, per unit depth.
+// contraction: a planar channel of height R h narrowing abruptly to h
+//           (ratio R), each part 10 h long, mean inflow speed U (the drive),
+//           parabolic inflow, free outflow. Reports the pressure drop and the
+//           yielded fraction (dead zones in the corners).
 // cylinder: a cylinder of diameter D in a square box of side `box` D whose
 //           walls move at U (the drive): the unbounded-flow benchmark of
 //           macro.md (Tokpavi et al. 2008) as the box grows. Reports the drag
@@ -20,6 +24,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include "macro/fe/stokes_flow_solver.h"
 #include "macro/scenes/entries.h"
@@ -233,6 +238,79 @@ class Cylinder final : public Scene {
   fe::StokesFlowSolver solver_;
 };
 
+class Contraction final : public Scene {
+ public:
+  Contraction(double height, unsigned ratio, const HerschelBulkley& law,
+              const fe::SolverSettings& settings)
+      : h_(height), ratio_(ratio), solver_(mesh(height, ratio), law, settings) {}
+
+  std::string description() const override {
+    return fmt::format(
+        "planar {}:1 contraction, downstream height {} m, 10 heights each side: Stokes (u, p), "
+        "Taylor-Hood Q2-Q1",
+        ratio_, h_);
+  }
+  Column drive() const override { return {"mean_inflow_speed", "m/s"}; }
+  std::vector<Column> columns() const override {
+    return {{"pressure_drop", "Pa"},
+            {"pressure_drop_discretisation_error", "Pa"},
+            {"pressure_drop_regularisation_error", "Pa"},
+            {"flow_rate_per_depth", "m^2/s"},
+            {"yielded_fraction", "1"},
+            {"cells", "1"},
+            {"dofs", "1"},
+            {"iterations", "1"},
+            {"wall_time", "s"}};
+  }
+  std::vector<double> solve(double speed) override {
+    const double H = ratio_ * h_;
+    const auto inflow = [speed, H](const Point<2>& p) {
+      return Tensor<1, 2>({6.0 * speed * p[1] * (H - p[1]) / (H * H), 0.0});
+    };
+    const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
+    // γ̇_c: the Newtonian wall rate downstream, 6 U_down/h with U_down = R U.
+    const auto r = solver_.run({{0, inflow}, {2, zero}}, 6.0 * ratio_ * speed / h_,
+                               dealii::numbers::invalid_boundary_id, 0);
+    return {r.value.mean_pressure,
+            std::abs(r.value.mean_pressure - r.coarse.mean_pressure),
+            std::abs(r.coarse.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
+            speed * H,
+            r.value.yielded_fraction,
+            double(r.cells),
+            double(r.dofs),
+            double(r.iterations),
+            r.wall_time};
+  }
+  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+
+ private:
+  // Square cells of side h/2 on [0, 20h] × [0, R h]; downstream (x > 10h)
+  // only the centred band of height h is kept. Inflow id 0, outflow 1, walls 2.
+  static dealii::Triangulation<2> mesh(double h, unsigned ratio) {
+    const double H = ratio * h, L = 10.0 * h;
+    dealii::Triangulation<2> box, t;
+    dealii::GridGenerator::subdivided_hyper_rectangle(box, {40u, 2 * ratio}, Point<2>(0.0, 0.0),
+                                                      Point<2>(2.0 * L, H));
+    std::set<dealii::Triangulation<2>::active_cell_iterator> removed;
+    for (const auto& c : box.active_cell_iterators()) {
+      const Point<2> x = c->center();
+      if (x[0] > L && std::abs(x[1] - 0.5 * H) > 0.5 * h) removed.insert(c);
+    }
+    dealii::GridGenerator::create_triangulation_with_removed_cells(box, removed, t);
+    const double tol = 1e-9 * H;
+    for (const auto& face : t.active_face_iterators()) {
+      if (!face->at_boundary()) continue;
+      const double x = face->center()[0];
+      face->set_boundary_id(x < tol ? 0 : (std::abs(x - 2.0 * L) < tol ? 1 : 2));
+    }
+    return t;
+  }
+
+  double h_;
+  unsigned ratio_;
+  fe::StokesFlowSolver solver_;
+};
+
 }  // namespace
 
 void declare_stokes_scenes(ParameterHandler& prm) {
@@ -243,6 +321,10 @@ void declare_stokes_scenes(ParameterHandler& prm) {
   prm.enter_subsection("obstacle");
   prm.declare_entry("diameter", "0.01", Patterns::Double(),
                     "D [m], > 0: channel 2.2 D/0.1 long and 0.41 D/0.1 high");
+  prm.leave_subsection();
+  prm.enter_subsection("contraction");
+  prm.declare_entry("height", "0.005", Patterns::Double(), "h [m], the downstream height, > 0");
+  prm.declare_entry("ratio", "4", Patterns::Integer(2, 20), "upstream height / h");
   prm.leave_subsection();
   prm.enter_subsection("cylinder");
   prm.declare_entry("diameter", "0.01", Patterns::Double(), "D [m], > 0");
@@ -257,6 +339,15 @@ std::unique_ptr<Scene> make_cylinder(ParameterHandler& prm, const Material& mate
   const double box = entries::between(prm, "cylinder", "box", "1", 4.0, 1e4);
   prm.leave_subsection();
   return std::make_unique<Cylinder>(d, box, material.shear, settings);
+}
+
+std::unique_ptr<Scene> make_contraction(ParameterHandler& prm, const Material& material,
+                                        const fe::SolverSettings& settings) {
+  prm.enter_subsection("contraction");
+  const double h = entries::positive(prm, "contraction", "height", "m");
+  const unsigned ratio = prm.get_integer("ratio");
+  prm.leave_subsection();
+  return std::make_unique<Contraction>(h, ratio, material.shear, settings);
 }
 
 std::unique_ptr<Scene> make_cavity(ParameterHandler& prm, const Material& material,
