@@ -26,8 +26,10 @@ struct SolverSettings {
   unsigned fe_degree = 2;
   /// Uniform refinements of the scene's base mesh before the adaptive loop.
   unsigned global_refinements = 1;
-  /// Solve–estimate–refine cycles after the first solve; ≥ 1, because the
-  /// discretisation error is estimated from the change over the last cycle.
+  /// Solve–estimate–refine cycles after the first solve; ≥ 1 for the scalar
+  /// scenes, because the discretisation error is estimated from the change
+  /// over the last cycle (the Stokes solver refines once uniformly first and
+  /// accepts 0).
   unsigned adaptive_cycles = 2;
   /// Fraction of cells refined per cycle (largest Kelly indicators), on top of
   /// the cells a yield surface crosses.

@@ -23,12 +23,14 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fmt/format.h>
@@ -93,6 +95,8 @@ class StokesFlowSolver::Implementation {
   unsigned solve_newton(const RegularisedLaw& law, bool allow_damping);
   unsigned solve_with_continuation(double target, double start);
   StokesOutputs evaluate(types::boundary_id force_id, types::boundary_id pressure_id) const;
+  void refine_mesh(bool uniform);
+  void newton_after_refinement(unsigned& iterations);
 
   HerschelBulkley law_;
   SolverSettings settings_;
@@ -125,6 +129,7 @@ void StokesFlowSolver::Implementation::setup_system() {
   for (auto [constraints, homogeneous] :
        {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
     constraints->clear();
+    DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, f] : boundary_) {
       if (homogeneous) {
         VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id,
@@ -306,6 +311,54 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
   return out;
 }
 
+// Uniform, or the top fraction of the Kelly indicator of the velocity plus
+// every cell a yield surface crosses (as in the scalar solver).
+void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
+  if (uniform) {
+    triangulation_.set_all_refine_flags();
+  } else {
+    const FEValuesExtractors::Vector velocities(0);
+    Vector<float> indicators(triangulation_.n_active_cells());
+    KellyErrorEstimator<2>::estimate(mapping_, dof_handler_, QGauss<1>(3),
+                                     std::map<types::boundary_id, const Function<2>*>(), solution_,
+                                     indicators, fe_.component_mask(velocities));
+    GridRefinement::refine_and_coarsen_fixed_number(triangulation_, indicators,
+                                                    settings_.refine_fraction, 0.0);
+    const QGauss<2> quadrature(3);
+    FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients);
+    std::vector<SymmetricTensor<2, 2>> strain(quadrature.size());
+    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+      fe_values.reinit(cell);
+      fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+      bool above = false, below = false;
+      for (const unsigned q : fe_values.quadrature_point_indices()) {
+        const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
+        (regularised_->stress(rate) > law_.yield_stress ? above : below) = true;
+      }
+      if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
+    }
+  }
+  SolutionTransfer<2> transfer(dof_handler_);
+  triangulation_.prepare_coarsening_and_refinement();
+  transfer.prepare_for_coarsening_and_refinement(solution_);
+  triangulation_.execute_coarsening_and_refinement();
+  setup_system();
+  Vector<double> interpolated(dof_handler_.n_dofs());
+  transfer.interpolate(solution_, interpolated);
+  solution_ = interpolated;
+  constraints_.distribute(solution_);
+}
+
+void StokesFlowSolver::Implementation::newton_after_refinement(unsigned& iterations) {
+  const Vector<double> transferred = solution_;
+  try {
+    iterations += solve_newton(*regularised_, false);
+  } catch (const NumericalError&) {
+    solution_ = transferred;
+    iterations += settings_.max_newton_iterations + solve_newton(*regularised_, true);
+  }
+}
+
 StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues& boundary,
                                                    double rate_c, types::boundary_id force_id,
                                                    types::boundary_id pressure_id) {
@@ -328,27 +381,20 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
                                                warm ? kContinuationFactor * target : rate_c);
   result.at_ten_epsilon = evaluate(force_id, pressure_id);
   result.iterations += solve_with_continuation(target, target);
-  result.coarse = evaluate(force_id, pressure_id);
+  result.first_mesh = evaluate(force_id, pressure_id);
   previous_coarse_ = solution_;
   previous_rate_ = rate_c;
 
-  // One uniform refinement, the solution carried over, Newton at ε.
-  SolutionTransfer<2> transfer(dof_handler_);
-  triangulation_.set_all_refine_flags();
-  triangulation_.prepare_coarsening_and_refinement();
-  transfer.prepare_for_coarsening_and_refinement(solution_);
-  triangulation_.execute_coarsening_and_refinement();
-  setup_system();
-  Vector<double> fine(dof_handler_.n_dofs());
-  transfer.interpolate(solution_, fine);
-  solution_ = fine;
-  constraints_.distribute(solution_);
-  try {
-    result.iterations += solve_newton(*regularised_, false);
-  } catch (const NumericalError&) {
-    solution_ = fine;
-    constraints_.distribute(solution_);
-    result.iterations += settings_.max_newton_iterations + solve_newton(*regularised_, true);
+  // One uniform refinement, then the adaptive cycles; Newton at ε after each,
+  // from the transferred solution. The discretisation estimate is the change
+  // over the last refinement.
+  result.coarse = result.first_mesh;
+  refine_mesh(true);
+  newton_after_refinement(result.iterations);
+  for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
+    result.coarse = evaluate(force_id, pressure_id);
+    refine_mesh(false);
+    newton_after_refinement(result.iterations);
   }
   result.value = evaluate(force_id, pressure_id);
   result.cells = triangulation_.n_active_cells();

@@ -7,8 +7,9 @@
 //
 // solved by Newton's method with continuation in ε, as the scalar solver
 // (scalar_flow_solver.h) does, and nested iteration: the continuation runs on
-// the mesh one uniform refinement coarser, whose result also gives the
-// discretisation error estimate.
+// the mesh one uniform refinement coarser; then the preset's adaptive cycles
+// (Kelly indicator of the velocity plus the cells a yield surface crosses).
+// The change over the last refinement is the discretisation error estimate.
 #pragma once
 
 #include <deal.II/base/point.h>
@@ -41,7 +42,9 @@ struct StokesOutputs {
 };
 
 struct StokesResult {
-  StokesOutputs value, coarse, at_ten_epsilon;  ///< fine mesh; coarse mesh; fine mesh at 10ε
+  /// Final mesh; the mesh before the last refinement; the first (coarsest)
+  /// mesh at ε and at 10ε (the regularisation estimate is their difference / 9).
+  StokesOutputs value, coarse, first_mesh, at_ten_epsilon;
   unsigned cells = 0, dofs = 0, iterations = 0;
   double wall_time = 0.0;
 };

@@ -77,7 +77,7 @@ class Cavity final : public Scene {
     const double disc = std::abs(u_min) * std::abs(r.value.dissipation - r.coarse.dissipation) /
                         r.value.dissipation;
     const double reg = std::abs(u_min) *
-                       std::abs(r.coarse.dissipation - r.at_ten_epsilon.dissipation) /
+                       std::abs(r.first_mesh.dissipation - r.at_ten_epsilon.dissipation) /
                        (9.0 * r.value.dissipation);
     return {u_min,
             disc,
@@ -146,7 +146,7 @@ class Obstacle final : public Scene {
     const auto r = solver_.run({{0, inflow}, {2, zero}, {3, zero}}, 6.0 * speed / H, 2, 0);
     return {r.value.mean_pressure,
             std::abs(r.value.mean_pressure - r.coarse.mean_pressure),
-            std::abs(r.coarse.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
+            std::abs(r.first_mesh.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
             r.value.force[0],
             r.value.force[1],
             r.value.yielded_fraction,
@@ -211,7 +211,7 @@ class Cylinder final : public Scene {
     const double drag = r.value.force[0];
     return {drag,
             std::abs(drag - r.coarse.force[0]),
-            std::abs(r.coarse.force[0] - r.at_ten_epsilon.force[0]) / 9.0,
+            std::abs(r.first_mesh.force[0] - r.at_ten_epsilon.force[0]) / 9.0,
             drag / (viscosity_ * speed),
             r.value.yielded_fraction,
             double(r.cells),
@@ -273,7 +273,7 @@ class Contraction final : public Scene {
                                dealii::numbers::invalid_boundary_id, 0);
     return {r.value.mean_pressure,
             std::abs(r.value.mean_pressure - r.coarse.mean_pressure),
-            std::abs(r.coarse.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
+            std::abs(r.first_mesh.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
             speed * H,
             r.value.yielded_fraction,
             double(r.cells),
