@@ -12,7 +12,7 @@ packages=(
   gnuplot-nox
 )
 if [ "${1:-}" = bench ]; then
-  packages+=(lammps time)
+  packages+=(lammps time rheolef librheolef-dev)  # the peers of bench/
 fi
 
 missing=()
