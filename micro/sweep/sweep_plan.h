@@ -37,8 +37,8 @@ const SweepPreset& sweep_preset(const std::string& name);  // InputError if unkn
 /// the preset's values; `custom` has none and needs them all.
 struct SweepSpec {
   std::string preset = "standard";
-  std::vector<double> volume_fractions;
-  std::vector<double> gamma_tildes;
+  std::vector<double> volume_fractions{};  // {}: lets tests name single fields
+  std::vector<double> gamma_tildes{};
   unsigned packings = 0;
   unsigned first_seed = 1;
   std::size_t particles = 0;
