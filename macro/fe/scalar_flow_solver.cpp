@@ -83,9 +83,6 @@ using namespace dealii;
 
 namespace {
 
-// Continuation divides ε by this per stage; 10 keeps each stage within a few
-// Newton iterations of the previous one for n down to 0.3 (measured).
-constexpr double kContinuationFactor = 10.0;
 // A failed continuation stage is retried with the step ε_prev/ε square-rooted
 // while it exceeds this (10 → 3.2 → 1.8 → 1.3: three retries).
 constexpr double kSmallestContinuationStep = 1.2;
@@ -93,9 +90,8 @@ constexpr double kSmallestContinuationStep = 1.2;
 // (an inexact but sufficient line search), or after this many steps.
 constexpr double kLineSearchReduction = 0.1;
 constexpr int kLineSearchSteps = 12;
-// Modified Newton (solve_newton): τ' ≥ kTangentFloor·η after a step shorter
-// than kFullStep.
-constexpr double kTangentFloor = 0.1;
+// Modified Newton (solve_newton): τ' ≥ kTangentFloor·η (solver_settings.h)
+// after a step shorter than kFullStep.
 constexpr double kFullStep = 0.5;
 
 double power(double r, int k) {
@@ -159,6 +155,19 @@ class ScalarFlowSolver<dim>::Implementation {
 
   double rho(const Point<dim>& x) const { return power(x[0], weights_.radial_weight); }
   double s(const Point<dim>& x) const { return power(x[0], weights_.rate_radius_power); }
+
+  /// Shear rate, stress and whether the material yields at quadrature point x
+  /// (number k over all cells): from the gradient while regularising; ALG2
+  /// keeps its rate field γ, exactly zero in rigid regions.
+  struct LocalState {
+    double rate, stress;
+    bool yielded;
+  };
+  LocalState local_state(const Point<dim>& x, const Tensor<1, dim>& gradient, std::size_t k) const {
+    const double rate = regularised_ ? s(x) * gradient.norm() : al_rate_[k];
+    const double tau = stress(rate);
+    return {rate, tau, regularised_ ? tau > law_.yield_stress : rate > 0.0};
+  }
 
   SectionWeights weights_;
   HerschelBulkley law_;
@@ -536,13 +545,11 @@ Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       const Point<dim>& x = fe_values.quadrature_point(q);
       const double w = rho(x) * fe_values.JxW(q);
-      // ALG2 keeps the rate field γ, which is exactly zero in rigid regions.
-      const double rate = regularised_ ? s(x) * gradients[q].norm() : al_rate_[k];
-      const double tau = stress(rate);
+      const LocalState local = local_state(x, gradients[q], k);
       out.flow += values[q] * w;
-      out.dissipation += tau * rate * w;
+      out.dissipation += local.stress * local.rate * w;
       volume += w;
-      if (regularised_ ? tau > law_.yield_stress : rate > 0.0) yielded += w;
+      if (local.yielded) yielded += w;
       ++k;
     }
     if (boundary.integrand && cell->at_boundary()) {
@@ -590,10 +597,7 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
     fe_values.get_function_gradients(solution_, gradients);
     bool above = false, below = false;
     for (const unsigned q : fe_values.quadrature_point_indices()) {
-      const double rate =
-          regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
-      const bool yielded = regularised_ ? stress(rate) > law_.yield_stress : rate > 0.0;
-      (yielded ? above : below) = true;
+      (local_state(fe_values.quadrature_point(q), gradients[q], k).yielded ? above : below) = true;
       ++k;
     }
     if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
@@ -715,13 +719,10 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
     fe_values.get_function_gradients(solution_, gradients);
     const unsigned c = cell->active_cell_index();
     for (const unsigned q : fe_values.quadrature_point_indices()) {
-      const double g =
-          regularised_ ? s(fe_values.quadrature_point(q)) * gradients[q].norm() : al_rate_[k];
-      const double t = stress(g);
-      rate(c) += g / quadrature.size();
-      tau(c) += t / quadrature.size();
-      yielded(c) +=
-          (regularised_ ? t > law_.yield_stress : g > 0.0) ? 1.0 / quadrature.size() : 0.0;
+      const LocalState local = local_state(fe_values.quadrature_point(q), gradients[q], k);
+      rate(c) += local.rate / quadrature.size();
+      tau(c) += local.stress / quadrature.size();
+      yielded(c) += local.yielded ? 1.0 / quadrature.size() : 0.0;
       ++k;
     }
     eta(c) = rate(c) > 0.0 ? tau(c) / rate(c) : std::numeric_limits<double>::infinity();

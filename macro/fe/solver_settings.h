@@ -12,6 +12,14 @@ class ParameterHandler;
 
 namespace softglass::macro::fe {
 
+/// Continuation divides ε by this per stage; 10 keeps each stage within a few
+/// Newton iterations of the previous one for n down to 0.3 (measured). The
+/// regularisation error estimate compares ε with kContinuationFactor·ε.
+inline constexpr double kContinuationFactor = 10.0;
+/// Damped Newton after a short step: the tangent viscosity τ' is kept at least
+/// kTangentFloor times the secant viscosity η.
+inline constexpr double kTangentFloor = 0.1;
+
 /// regularised: Papanastasiou or Bercovier–Engelman viscosity, Newton with an
 /// exact line search, continuation in ε. augmented-lagrangian: ALG2 on the
 /// unregularised law (yield surfaces where the local stress reaches τ_y).

@@ -49,8 +49,6 @@ using namespace dealii;
 
 namespace {
 
-constexpr double kContinuationFactor = 10.0;
-constexpr double kTangentFloor = 0.1;
 constexpr int kHalvings = 12;
 
 // The boundary velocity as a deal.II function of the 3 components (u, v, p).

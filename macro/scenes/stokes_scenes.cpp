@@ -23,6 +23,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -42,6 +43,43 @@ namespace {
 // Centreline samples of the cavity: the minimum is located to L/kSamples.
 constexpr int kSamples = 400;
 
+// Every Stokes scene reports one quantity with its discretisation and
+// regularisation error estimates, then columns of its own, then the yielded
+// fraction and the cost.
+std::vector<Column> report_columns(const Column& value, const std::vector<Column>& own) {
+  std::vector<Column> c = {value,
+                           {value.name + "_discretisation_error", value.unit},
+                           {value.name + "_regularisation_error", value.unit}};
+  c.insert(c.end(), own.begin(), own.end());
+  c.insert(c.end(), {{"yielded_fraction", "1"},
+                     {"cells", "1"},
+                     {"dofs", "1"},
+                     {"iterations", "1"},
+                     {"wall_time", "s"}});
+  return c;
+}
+
+std::vector<double> report_row(const fe::StokesResult& r, double value, double discretisation,
+                               double regularisation, const std::vector<double>& own) {
+  std::vector<double> row = {value, discretisation, regularisation};
+  row.insert(row.end(), own.begin(), own.end());
+  row.insert(row.end(), {r.value.yielded_fraction, double(r.cells), double(r.dofs),
+                         double(r.iterations), r.wall_time});
+  return row;
+}
+
+// The same for a quantity of the outputs: its error estimates are its change
+// over the last refinement and (value at 10ε − value at ε)/9 on the first mesh.
+std::vector<double> report_row(const fe::StokesResult& r,
+                               const std::function<double(const fe::StokesOutputs&)>& quantity,
+                               const std::vector<double>& own) {
+  return report_row(r, quantity(r.value), std::abs(quantity(r.value) - quantity(r.coarse)),
+                    std::abs(quantity(r.first_mesh) - quantity(r.at_ten_epsilon)) / 9.0, own);
+}
+
+double mean_pressure(const fe::StokesOutputs& o) { return o.mean_pressure; }
+double drag(const fe::StokesOutputs& o) { return o.force[0]; }
+
 class Cavity final : public Scene {
  public:
   Cavity(double side, unsigned cells, const HerschelBulkley& law,
@@ -53,15 +91,7 @@ class Cavity final : public Scene {
   }
   Column drive() const override { return {"lid_speed", "m/s"}; }
   std::vector<Column> columns() const override {
-    return {{"min_centreline_u", "m/s"},
-            {"min_centreline_u_discretisation_error", "m/s"},
-            {"min_centreline_u_regularisation_error", "m/s"},
-            {"y_at_min_over_side", "1"},
-            {"yielded_fraction", "1"},
-            {"cells", "1"},
-            {"dofs", "1"},
-            {"iterations", "1"},
-            {"wall_time", "s"}};
+    return report_columns({"min_centreline_u", "m/s"}, {{"y_at_min_over_side", "1"}});
   }
   std::vector<double> solve(double lid) override {
     // No slip on walls (ids 0, 1, 2) after the lid (3), so the top corners
@@ -79,15 +109,7 @@ class Cavity final : public Scene {
     const double reg = std::abs(u_min) *
                        std::abs(r.first_mesh.dissipation - r.at_ten_epsilon.dissipation) /
                        (9.0 * r.value.dissipation);
-    return {u_min,
-            disc,
-            reg,
-            y_min / side_,
-            r.value.yielded_fraction,
-            double(r.cells),
-            double(r.dofs),
-            double(r.iterations),
-            r.wall_time};
+    return report_row(r, u_min, disc, reg, {y_min / side_});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -125,16 +147,8 @@ class Obstacle final : public Scene {
   }
   Column drive() const override { return {"mean_inflow_speed", "m/s"}; }
   std::vector<Column> columns() const override {
-    return {{"pressure_drop", "Pa"},
-            {"pressure_drop_discretisation_error", "Pa"},
-            {"pressure_drop_regularisation_error", "Pa"},
-            {"drag_per_depth", "N/m"},
-            {"lift_per_depth", "N/m"},
-            {"yielded_fraction", "1"},
-            {"cells", "1"},
-            {"dofs", "1"},
-            {"iterations", "1"},
-            {"wall_time", "s"}};
+    return report_columns({"pressure_drop", "Pa"},
+                          {{"drag_per_depth", "N/m"}, {"lift_per_depth", "N/m"}});
   }
   std::vector<double> solve(double speed) override {
     const double H = height_;
@@ -144,16 +158,7 @@ class Obstacle final : public Scene {
     };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto r = solver_.run({{0, inflow}, {2, zero}, {3, zero}}, 6.0 * speed / H, 2, 0);
-    return {r.value.mean_pressure,
-            std::abs(r.value.mean_pressure - r.coarse.mean_pressure),
-            std::abs(r.first_mesh.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
-            r.value.force[0],
-            r.value.force[1],
-            r.value.yielded_fraction,
-            double(r.cells),
-            double(r.dofs),
-            double(r.iterations),
-            r.wall_time};
+    return report_row(r, mean_pressure, {r.value.force[0], r.value.force[1]});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -193,31 +198,14 @@ class Cylinder final : public Scene {
   }
   Column drive() const override { return {"speed", "m/s"}; }
   std::vector<Column> columns() const override {
-    return {{"drag_per_depth", "N/m"},
-            {"drag_discretisation_error", "N/m"},
-            {"drag_regularisation_error", "N/m"},
-            {"drag_coefficient_F_over_KU", "1"},
-            {"yielded_fraction", "1"},
-            {"cells", "1"},
-            {"dofs", "1"},
-            {"iterations", "1"},
-            {"wall_time", "s"}};
+    return report_columns({"drag_per_depth", "N/m"}, {{"drag_coefficient_F_over_KU", "1"}});
   }
   std::vector<double> solve(double speed) override {
     const auto uniform = [speed](const Point<2>&) { return Tensor<1, 2>({speed, 0.0}); };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto r = solver_.run({{0, uniform}, {1, uniform}, {2, uniform}, {3, uniform}, {4, zero}},
                                speed / diameter_, 4, dealii::numbers::invalid_boundary_id);
-    const double drag = r.value.force[0];
-    return {drag,
-            std::abs(drag - r.coarse.force[0]),
-            std::abs(r.first_mesh.force[0] - r.at_ten_epsilon.force[0]) / 9.0,
-            drag / (viscosity_ * speed),
-            r.value.yielded_fraction,
-            double(r.cells),
-            double(r.dofs),
-            double(r.iterations),
-            r.wall_time};
+    return report_row(r, drag, {drag(r.value) / (viscosity_ * speed)});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -252,15 +240,7 @@ class Contraction final : public Scene {
   }
   Column drive() const override { return {"mean_inflow_speed", "m/s"}; }
   std::vector<Column> columns() const override {
-    return {{"pressure_drop", "Pa"},
-            {"pressure_drop_discretisation_error", "Pa"},
-            {"pressure_drop_regularisation_error", "Pa"},
-            {"flow_rate_per_depth", "m^2/s"},
-            {"yielded_fraction", "1"},
-            {"cells", "1"},
-            {"dofs", "1"},
-            {"iterations", "1"},
-            {"wall_time", "s"}};
+    return report_columns({"pressure_drop", "Pa"}, {{"flow_rate_per_depth", "m^2/s"}});
   }
   std::vector<double> solve(double speed) override {
     const double H = ratio_ * h_;
@@ -271,15 +251,7 @@ class Contraction final : public Scene {
     // γ̇_c: the Newtonian wall rate downstream, 6 U_down/h with U_down = R U.
     const auto r = solver_.run({{0, inflow}, {2, zero}}, 6.0 * ratio_ * speed / h_,
                                dealii::numbers::invalid_boundary_id, 0);
-    return {r.value.mean_pressure,
-            std::abs(r.value.mean_pressure - r.coarse.mean_pressure),
-            std::abs(r.first_mesh.mean_pressure - r.at_ten_epsilon.mean_pressure) / 9.0,
-            speed * H,
-            r.value.yielded_fraction,
-            double(r.cells),
-            double(r.dofs),
-            double(r.iterations),
-            r.wall_time};
+    return report_row(r, mean_pressure, {speed * H});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
