@@ -3,12 +3,12 @@
 // appear whole or not at all, and the three subcommands end to end on a
 // synthetic sweep.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <vector>
 
 #include "bridge_test_support.h"
+#include "tests/common/command_line.h"
 #include "synthetic_sweep.h"
 
 namespace softglass::bridge {
@@ -17,16 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 using testing::expect_contains;
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
+using softglass::testing::Outcome;
 
 class BridgeCli : public ::testing::Test {
  protected:
   void SetUp() override {
     fs::create_directories(work());
-    fs::create_directories(dir_ / "capture");
     const testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 1);
     testing::write_text(work() / "sweep.csv", testing::table_csv(s));
     testing::write_text(work() / "runs.csv", testing::runs_csv(s));
@@ -35,22 +31,10 @@ class BridgeCli : public ::testing::Test {
   fs::path work() const { return dir_ / "work"; }
 
   Outcome bridge(const std::string& arguments) const {
-    const fs::path out = dir_ / "capture" / "stdout.txt", err = dir_ / "capture" / "stderr.txt";
-    const std::string command = "cd '" + work().string() +
-                                "' && '" SOFTGLASS_BRIDGE_EXECUTABLE "' " + arguments + " > '" +
-                                out.string() + "' 2> '" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    EXPECT_TRUE(WIFEXITED(status)) << command;
-    return {WEXITSTATUS(status), testing::read_text(out), testing::read_text(err)};
+    return softglass::testing::run_tool(SOFTGLASS_BRIDGE_EXECUTABLE, arguments, work(), dir_ / "capture");
   }
 
-  std::vector<std::string> files() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(work()))
-      names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
+  std::vector<std::string> files() const { return softglass::testing::file_names(work()); }
 
   testing::TemporaryDirectory dir_;
 };

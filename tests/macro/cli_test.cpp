@@ -2,11 +2,11 @@
 // existing output (common/errors.h), and a complete run of a small scene.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "tests/common/command_line.h"
 
 namespace {
 
@@ -30,19 +30,14 @@ class MacroCli : public ::testing::Test {
     std::ofstream(dir_ / name) << text;
   }
 
-  // Runs `macro run <scene> -o <dir>/out -q <extra>`; returns the exit code and
-  // keeps stderr in error_.
+  // Runs `macro run scene.prm -o out -q <extra>` in the test's folder;
+  // returns the exit code and keeps stderr in error_.
   int run(const std::string& scene_text, const std::string& extra = "") {
     write("scene.prm", scene_text);
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command = std::string(MACRO_EXECUTABLE) + " run " +
-                                (dir_ / "scene.prm").string() + " -o " + (dir_ / "out").string() +
-                                " -q " + extra + " 2> " + err.string();
-    const int status = std::system(command.c_str());
-    std::stringstream text;
-    text << std::ifstream(err).rdbuf();
-    error_ = text.str();
-    return WEXITSTATUS(status);
+    const softglass::testing::Outcome o = softglass::testing::run_tool(
+        MACRO_EXECUTABLE, "run scene.prm -o out -q " + extra, dir_, dir_ / "capture");
+    error_ = o.err;
+    return o.code;
   }
 
   static std::string couette(const std::string& extra) {
