@@ -5,6 +5,8 @@
 // the codes below. Tests and scripts rely on these codes.
 #pragma once
 
+#include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -39,6 +41,25 @@ class OutputExistsError : public std::runtime_error {
 /// parameter, its value and the allowed range.
 inline void require(bool condition, const std::string& message) {
   if (!condition) throw InputError(message);
+}
+
+/// Runs a tool's command and turns what it throws into one line on stderr,
+/// "tool: error: message", and the exit code of its kind; otherwise returns
+/// the command's own code.
+inline int run_reporting_errors(const char* tool, const std::function<int()>& command) {
+  const auto fail = [tool](int code, const char* message) {
+    std::fprintf(stderr, "%s: error: %s\n", tool, message);
+    return code;
+  };
+  try {
+    return command();
+  } catch (const InputError& e) {
+    return fail(kExitBadInput, e.what());
+  } catch (const OutputExistsError& e) {
+    return fail(kExitOutputExists, e.what());
+  } catch (const std::exception& e) {
+    return fail(kExitFailure, e.what());
+  }
 }
 
 }  // namespace softglass

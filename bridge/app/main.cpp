@@ -14,18 +14,12 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
 
 #include "bridge/app/commands.h"
 #include "common/errors.h"
 #include "common/version.h"
 
 namespace {
-
-int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "bridge: error: %s\n", message.c_str());
-  return code;
-}
 
 std::string joined(int argc, char** argv) {
   std::string line;
@@ -172,16 +166,10 @@ int main(int argc, char** argv) {
   if (threads > 0) omp_set_num_threads(threads);
 
   const std::string command_line = joined(argc, argv);
-  try {
+  return run_reporting_errors("bridge", [&] {
     if (*fit_cmd) fit_command(fit, command_line);
     if (*material_cmd) material_command(material, command_line);
     if (*rescale_cmd) rescale_command(rescale, command_line);
-  } catch (const InputError& e) {
-    return fail(kExitBadInput, e.what());
-  } catch (const OutputExistsError& e) {
-    return fail(kExitOutputExists, e.what());
-  } catch (const std::exception& e) {
-    return fail(kExitFailure, e.what());
-  }
-  return kExitOk;
+    return int(kExitOk);
+  });
 }

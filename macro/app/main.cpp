@@ -11,20 +11,10 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
 
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/run.h"
-
-namespace {
-
-int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "macro: error: %s\n", message.c_str());
-  return code;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace softglass;
@@ -57,17 +47,11 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? kExitOk : kExitBadInput;
   }
-  try {
+  return run_reporting_errors("macro", [&] {
     if (app.got_subcommand("template")) {
       macro::app::print_template();
-      return kExitOk;
+      return int(kExitOk);
     }
     return macro::app::run(options);
-  } catch (const InputError& error) {
-    return fail(kExitBadInput, error.what());
-  } catch (const OutputExistsError& error) {
-    return fail(kExitOutputExists, error.what());
-  } catch (const std::exception& error) {
-    return fail(kExitFailure, error.what());
-  }
+  });
 }

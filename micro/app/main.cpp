@@ -22,15 +22,6 @@
 #include "micro/app/sweep_command.h"
 #include "micro/app/workers.h"
 
-namespace {
-
-int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "micro: error: %s\n", message.c_str());
-  return code;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   using namespace softglass;
   CLI::App app{
@@ -107,7 +98,7 @@ int main(int argc, char** argv) {
   for (int k = 0; k < argc; ++k) sweep_options.command_line += (k ? " " : "") + std::string(argv[k]);
   const micro::Workers workers;
 
-  try {
+  return run_reporting_errors("micro", [&] {
     if (*tmpl) std::fputs(micro::parameter_template(sweep_template).c_str(), stdout);
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
@@ -118,12 +109,6 @@ int main(int argc, char** argv) {
       if (slab > 0.0) analyze_options.slab = slab;
       micro::analyze_command(analyze_options);
     }
-  } catch (const InputError& e) {
-    return fail(kExitBadInput, e.what());
-  } catch (const OutputExistsError& e) {
-    return fail(kExitOutputExists, e.what());
-  } catch (const std::exception& e) {
-    return fail(kExitFailure, e.what());
-  }
-  return kExitOk;
+    return int(kExitOk);
+  });
 }
