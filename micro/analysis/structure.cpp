@@ -297,4 +297,22 @@ StructureResult average_structure(std::span<const StructureSample> samples, std:
   return r;
 }
 
+std::vector<NamedEstimate> named_estimates(const StructureResult& s) {
+  return {
+      {"r_m", s.r_m, "R", "radius of the minimum of g_{2,-2}"},
+      {"f_m", s.f_m, "E* R^2", "elastic force at r_m between two particles of the mean radius"},
+      {"sigma_m", s.sigma_m, "1/R^2", "Sigma_m = -n^2 sqrt(pi/15) int r^3 g_{2,-2} dr where g_{2,-2} < 0"},
+      {"fm_sigma_m", s.fm_sigma_m, "E*", "f_m Sigma_m, the paper's estimate of sigma^e"},
+      {"sigma_virial", s.sigma_virial, "E*", "elastic shear stress, virial"},
+      {"sigma_rebuilt", s.sigma_rebuilt, "E*", "elastic shear stress from the force-weighted moments"},
+      {"N1_virial", s.n1_virial, "E*", "elastic N1, virial"},
+      {"N1_rebuilt", s.n1_rebuilt, "E*", "elastic N1 from the force-weighted moments"},
+      {"N2_virial", s.n2_virial, "E*", "elastic N2, virial"},
+      {"N2_rebuilt", s.n2_rebuilt, "E*", "elastic N2 from the force-weighted moments"},
+      {"sigma_law", s.sigma_law, "E*", "elastic shear stress from g_lm with the mean-radius force f(r)"},
+      {"N1_law", s.n1_law, "E*", "elastic N1 from g_lm with the mean-radius force f(r)"},
+      {"N2_law", s.n2_law, "E*", "elastic N2 from g_lm with the mean-radius force f(r)"},
+  };
+}
+
 }  // namespace softglass::micro

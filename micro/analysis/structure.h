@@ -88,6 +88,16 @@ struct StructureResult {
   Estimate sigma_law, n1_law, n2_law;  // from g_lm with the mean-radius force f(r): exact when monodisperse
 };
 
+/// The scalar results of a StructureResult with their names (those of the run
+/// file's /structure group), units and meaning: one list for every writer.
+struct NamedEstimate {
+  const char* name;
+  Estimate estimate;
+  const char* units;
+  const char* meaning;
+};
+std::vector<NamedEstimate> named_estimates(const StructureResult& s);
+
 /// Averages samples (one per snapshot, in time order) of N particles in a
 /// cell of volume `volume`; `law` gives f_m.
 StructureResult average_structure(std::span<const StructureSample> samples, std::size_t particles,

@@ -113,23 +113,11 @@ void write_structure(H5Group&& g, const StructureRecord& record) {
   g.write("map_theta", s.map_theta, {}, {"rad", "angle from the flow axis x towards the gradient axis y"});
   g.write("map", s.map, {s.map_r.size(), s.map_theta.size()},
           {"1", "g(r, theta) in the flow-gradient plane, pairs with |dz| < slab_half_width"});
-  const auto estimate = [&](const char* name, const Estimate& e, const char* units, const char* what) {
-    const double pair[2] = {e.value, e.error};
-    g.write(name, std::span<const double>(pair, 2), {}, {units, std::string(what) + " [value, standard error]"});
-  };
-  estimate("r_m", s.r_m, "R", "radius of the minimum of g_{2,-2}");
-  estimate("f_m", s.f_m, "E* R^2", "elastic force at r_m between two particles of the mean radius");
-  estimate("sigma_m", s.sigma_m, "1/R^2", "Sigma_m = -n^2 sqrt(pi/15) int r^3 g_{2,-2} dr where g_{2,-2} < 0");
-  estimate("fm_sigma_m", s.fm_sigma_m, "E*", "f_m Sigma_m, the paper's estimate of sigma^e");
-  estimate("sigma_virial", s.sigma_virial, "E*", "elastic shear stress, virial");
-  estimate("sigma_rebuilt", s.sigma_rebuilt, "E*", "elastic shear stress from the force-weighted moments");
-  estimate("N1_virial", s.n1_virial, "E*", "elastic N1, virial");
-  estimate("N1_rebuilt", s.n1_rebuilt, "E*", "elastic N1 from the force-weighted moments");
-  estimate("N2_virial", s.n2_virial, "E*", "elastic N2, virial");
-  estimate("N2_rebuilt", s.n2_rebuilt, "E*", "elastic N2 from the force-weighted moments");
-  estimate("sigma_law", s.sigma_law, "E*", "elastic shear stress from g_lm with the mean-radius force f(r)");
-  estimate("N1_law", s.n1_law, "E*", "elastic N1 from g_lm with the mean-radius force f(r)");
-  estimate("N2_law", s.n2_law, "E*", "elastic N2 from g_lm with the mean-radius force f(r)");
+  for (const NamedEstimate& e : named_estimates(s)) {
+    const double pair[2] = {e.estimate.value, e.estimate.error};
+    g.write(e.name, std::span<const double>(pair, 2), {},
+            {e.units, std::string(e.meaning) + " [value, standard error]"});
+  }
 }
 
 std::string now_iso8601() {

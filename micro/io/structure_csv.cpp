@@ -46,22 +46,8 @@ void write_structure_csv(const std::string& prefix, const StructureRecord& recor
     f << fmt::format("# {} snapshots, strain {:.3f} to {:.3f}\n", s.snapshots, record.strain_from,
                      record.strain_to);
     f << "quantity,value,standard_error,units\n";
-    const auto row = [&](const char* name, const Estimate& e, const char* units) {
-      f << fmt::format("{},{:.8e},{:.3e},{}\n", name, e.value, e.error, units);
-    };
-    row("r_m", s.r_m, "R");
-    row("f_m", s.f_m, "E* R^2");
-    row("Sigma_m", s.sigma_m, "1/R^2");
-    row("f_m Sigma_m", s.fm_sigma_m, "E*");
-    row("sigma_elastic virial", s.sigma_virial, "E*");
-    row("sigma_elastic rebuilt", s.sigma_rebuilt, "E*");
-    row("N1_elastic virial", s.n1_virial, "E*");
-    row("N1_elastic rebuilt", s.n1_rebuilt, "E*");
-    row("N2_elastic virial", s.n2_virial, "E*");
-    row("N2_elastic rebuilt", s.n2_rebuilt, "E*");
-    row("sigma_elastic mean-radius law", s.sigma_law, "E*");
-    row("N1_elastic mean-radius law", s.n1_law, "E*");
-    row("N2_elastic mean-radius law", s.n2_law, "E*");
+    for (const NamedEstimate& e : named_estimates(s))
+      f << fmt::format("{},{:.8e},{:.3e},{}\n", e.name, e.estimate.value, e.estimate.error, e.units);
   });
 }
 

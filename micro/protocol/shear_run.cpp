@@ -74,10 +74,14 @@ std::vector<double> TimeSeries::component(const std::string& observable) const {
   return values;
 }
 
-const MeanEstimate& ShearSummary::operator[](const std::string& name) const {
-  for (const auto& o : observables)
+const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list, const std::string& name) {
+  for (const auto& o : list)
     if (o.name == name) return o.estimate;
   throw std::invalid_argument("no observable " + name);
+}
+
+const MeanEstimate& ShearSummary::operator[](const std::string& name) const {
+  return find_estimate(observables, name);
 }
 
 bool ShearSummary::layered() const {

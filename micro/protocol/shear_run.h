@@ -60,6 +60,8 @@ struct ObservableEstimate {
   std::string name;
   MeanEstimate estimate;
 };
+/// The estimate called `name` in `list`; std::invalid_argument if absent.
+const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list, const std::string& name);
 
 struct ShearSummary {
   double transient_strain = 0.0;  // removed as start-up

@@ -41,12 +41,6 @@ void add_structure_columns(NumberTable& t) {
   }
 }
 
-const ObservableEstimate& find(const std::vector<ObservableEstimate>& list, const std::string& name) {
-  for (const auto& o : list)
-    if (o.name == name) return o;
-  throw std::invalid_argument("no observable " + name);
-}
-
 }  // namespace
 
 NumberTable flow_curve_table(const std::vector<PackingAverage>& points) {
@@ -93,7 +87,7 @@ NumberTable per_packing_table(const std::vector<StoredRunSummary>& runs,
     const StoredRunSummary& r = runs[k];
     std::vector<double> row = {r.volume_fraction, r.gamma_tilde, static_cast<double>(seeds.at(k))};
     for (const auto& name : stress_columns()) {
-      const MeanEstimate& e = find(r.observables, name).estimate;
+      const MeanEstimate& e = find_estimate(r.observables, name);
       row.push_back(e.mean);
       row.push_back(e.standard_error);
     }
