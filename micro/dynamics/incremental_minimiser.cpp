@@ -15,11 +15,6 @@ constexpr int kMaxHalvings = 40;
 // rebuild. The direction is scaled down, not rejected.
 constexpr double kMaxMove = 0.1;
 
-double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
-  double sum = 0.0;
-  for (std::size_t a = 0; a < x.size(); ++a) sum += x[a].dot(y[a]);
-  return sum;
-}
 double max_norm(const std::vector<Vec3>& x) {
   double worst = 0.0;
   for (const Vec3& v : x) worst = std::max(worst, v.squaredNorm());
@@ -173,50 +168,15 @@ void IncrementalMinimiser::hessian_times(std::span<const double> proximal,
 }
 
 int IncrementalMinimiser::newton_direction(std::span<const double> proximal, double eta) {
-  // Preconditioned CG on H d = −g, stopped at ‖r‖ ≤ η‖g‖ or at the first
-  // direction of non-positive curvature (Steihaug): the iterate so far (or the
-  // preconditioned gradient, on the first iteration) is a descent direction.
-  const std::size_t n = gradient_.size();
-  for (auto* v : {&r_, &z_, &p_, &q_}) v->resize(n);
-  double gnorm2 = 0.0;
-  for (std::size_t a = 0; a < n; ++a) {
-    direction_[a].setZero();
-    r_[a] = -gradient_[a];
-    z_[a] = diagonal_[a] * r_[a];
-    p_[a] = z_[a];
-    gnorm2 += r_[a].squaredNorm();
-  }
-  double rz = dot(r_, z_);
-  negative_curvature_ = false;
-  const double target2 = eta * eta * gnorm2;
-  const int limit = static_cast<int>(std::max<std::size_t>(50, 3 * n));
-  int it = 0;
-  for (; it < limit; ++it) {
-    hessian_times(proximal, p_, q_);
-    const double curvature = dot(p_, q_);
-    if (curvature <= 0.0) {
-      if (it == 0) direction_ = z_;
-      negative_curvature_ = true;
-      break;
-    }
-    const double alpha = rz / curvature;
-    double rr = 0.0;
-    for (std::size_t a = 0; a < n; ++a) {
-      direction_[a] += alpha * p_[a];
-      r_[a] -= alpha * q_[a];
-      rr += r_[a].squaredNorm();
-    }
-    if (rr <= target2) {
-      ++it;
-      break;
-    }
-    for (std::size_t a = 0; a < n; ++a) z_[a] = diagonal_[a] * r_[a];
-    const double rz_next = dot(r_, z_);
-    const double beta = rz_next / rz;
-    rz = rz_next;
-    for (std::size_t a = 0; a < n; ++a) p_[a] = z_[a] + beta * p_[a];
-  }
-  return it;
+  // Truncated at non-positive curvature (plastic instabilities): the caller
+  // then raises the damping and tries again.
+  const int limit = static_cast<int>(std::max<std::size_t>(50, 3 * gradient_.size()));
+  const CgOutcome outcome = solve_newton_system(
+      gradient_, [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) { hessian_times(proximal, in, out); },
+      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, eta, limit, true, direction_,
+      cg_);
+  negative_curvature_ = outcome.negative_curvature;
+  return outcome.iterations;
 }
 
 IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,

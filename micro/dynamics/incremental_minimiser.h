@@ -46,6 +46,7 @@
 #include <span>
 #include <vector>
 
+#include "micro/forces/block_cg.h"
 #include "micro/system/contact_system.h"
 
 namespace softglass::micro {
@@ -141,7 +142,7 @@ class IncrementalMinimiser {
   double diagonal_scale_ = 1.0;  // mean diagonal entry of the Hessian model
   bool negative_curvature_ = false;
   void invert_diagonal();
-  std::vector<Vec3> r_, z_, p_, q_;
+  CgWorkspace cg_;
 };
 
 }  // namespace softglass::micro

@@ -109,13 +109,6 @@ void EhdDrag::gradient_at(const ContactList& c, std::span<const double> friction
   gather(scratch_, gradient);
 }
 
-namespace {
-double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
-  double sum = 0.0;
-  for (std::size_t a = 0; a < x.size(); ++a) sum += x[a].dot(y[a]);
-  return sum;
-}
-}  // namespace
 
 int EhdDrag::newton_direction(const ContactList& c, std::span<const double> friction,
                               double velocity_scale, double eta) {
@@ -152,31 +145,12 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
     gather(scratch_, out);
   };
 
-  const double target = eta * std::sqrt(dot(gradient_, gradient_));
-  for (std::size_t a = 0; a < n; ++a) {
-    step_[a].setZero();
-    r_[a] = -gradient_[a];
-    z_[a] = block_inverse_[a] * r_[a];
-    p_[a] = z_[a];
-  }
-  double rz = dot(r_, z_);
-  int iterations = 0;
-  while (iterations < settings_.max_cg_iterations) {
-    hessian_times(p_, hp_);
-    const double alpha = rz / dot(p_, hp_);
-    for (std::size_t a = 0; a < n; ++a) {
-      step_[a] += alpha * p_[a];
-      r_[a] -= alpha * hp_[a];
-    }
-    ++iterations;
-    if (std::sqrt(dot(r_, r_)) <= target) break;
-    for (std::size_t a = 0; a < n; ++a) z_[a] = block_inverse_[a] * r_[a];
-    const double rz_next = dot(r_, z_);
-    const double beta = rz_next / rz;
-    rz = rz_next;
-    for (std::size_t a = 0; a < n; ++a) p_[a] = z_[a] + beta * p_[a];
-  }
-  return iterations;
+  // The drag Hessian is positive definite (ζ > 0): no truncation needed.
+  return solve_newton_system(
+             gradient_, hessian_times,
+             [&](std::size_t a, const Vec3& r) -> Vec3 { return block_inverse_[a] * r; }, eta,
+             settings_.max_cg_iterations, false, step_, cg_)
+      .iterations;
 }
 
 EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const double> friction,
@@ -224,7 +198,7 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
   build_incidence(c, n);
   for (auto* vec : {&w_trial_, &unit_w_}) vec->resize(m);
   secant_.resize(m);
-  for (auto* vec : {&gradient_, &gradient_trial_, &trial_, &step_, &r_, &z_, &p_, &hp_})
+  for (auto* vec : {&gradient_, &gradient_trial_, &trial_, &step_})
     vec->resize(n);
   block_inverse_.resize(n);
   s_.resize(m);

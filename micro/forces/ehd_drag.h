@@ -55,6 +55,7 @@
 #include <string>
 #include <vector>
 
+#include "micro/forces/block_cg.h"
 #include "micro/forces/contact_forces.h"
 
 namespace softglass::micro {
@@ -128,7 +129,8 @@ class EhdDrag {
   std::vector<std::uint32_t> incidence_;  // contact index × 2 + (0: i side, 1: j side)
   // Newton state, reused between solves: current and trial points.
   std::vector<Vec3> w_, w_trial_, gradient_, gradient_trial_, trial_;
-  std::vector<Vec3> step_, r_, z_, p_, hp_;
+  std::vector<Vec3> step_;
+  CgWorkspace cg_;
   std::vector<Eigen::Matrix3d> block_inverse_;
   std::vector<double> s_;       // a_c / √max(|w|, floor)
   std::vector<double> relief_;  // θ_c: ½ (Newton) or 0 (majoriser)
