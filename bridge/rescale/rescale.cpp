@@ -15,8 +15,10 @@ namespace softglass::bridge {
 
 namespace {
 
-// The settings against the number of curves (lists of one or one per curve).
-void check(const RescaleSettings& s, std::size_t curves) {
+// The settings against the curves (lists of one or one per curve; k' only
+// matters for curves with N1).
+void check(const RescaleSettings& s, const std::vector<MeasuredCurve>& measured) {
+  const std::size_t curves = measured.size();
   const auto positive = [](double v) { return v > 0 && std::isfinite(v); };
   require(positive(s.viscosity),
           fmt::format("solvent viscosity eta_s = {} must be positive", s.viscosity));
@@ -37,7 +39,10 @@ void check(const RescaleSettings& s, std::size_t curves) {
           "one of the two");
   require(s.min_rate < s.max_rate,
           fmt::format("the rate window {} ... {} 1/s is empty", s.min_rate, s.max_rate));
-  require(positive(s.k) && positive(s.k_N1), "the universal constants k and k' must be positive");
+  require(positive(s.k), fmt::format("the universal constant k = {} must be positive", s.k));
+  const bool with_N1 = std::any_of(measured.begin(), measured.end(), [](const MeasuredCurve& c) { return c.N1.has_value(); });
+  require(!with_N1 || positive(s.k_N1),
+          fmt::format("the universal constant k' = {} must be positive to place the N1 data", s.k_N1));
 }
 
 std::vector<RescaledCurve> place_all(const std::vector<MeasuredCurve>& curves,
@@ -100,7 +105,7 @@ std::vector<RescaledCurve> place_with_shared_modulus(const std::vector<MeasuredC
 
 std::vector<RescaledCurve> rescale(const std::vector<MeasuredCurve>& curves,
                                    const RescaleSettings& settings) {
-  check(settings, curves.size());
+  check(settings, curves);
   require(!(settings.shared_modulus && settings.modulus),
           "a shared E* is fitted: give --modulus or --shared-modulus, not both");
   if (settings.shared_modulus) return place_with_shared_modulus(curves, settings);

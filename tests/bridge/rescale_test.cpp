@@ -147,6 +147,28 @@ TEST(Rescale, RefusesInconsistentSettingsAndCurvesWithoutPlateau) {
   expect_contains(refusal(settings_for(s), fluid), {"yield", "--yield-stress"});
 }
 
+// k′ enters only the N1 data: a law without a usable k′ still rescales curves
+// without N1, and is refused for curves with N1.
+TEST(Rescale, NeedsAPositiveKPrimeOnlyForNormalStressData) {
+  const Sample s;
+  MeasuredCurve stress_only = measured(s, 8);
+  stress_only.N1.reset();
+  RescaleSettings settings = settings_for(s);
+  settings.k_N1 = -5.0;
+  const auto out = rescale({stress_only}, settings);
+  ASSERT_EQ(out.size(), 1u);
+  expect_within(out[0].modulus, s.modulus, "E*");
+  try {
+    rescale({measured(s, 8)}, settings);
+    ADD_FAILURE() << "a negative k' accepted for N1 data";
+  } catch (const InputError& e) {
+    expect_contains(e.what(), {"k' = -5", "N1"});
+  }
+  settings.k_N1 = 20.0;
+  settings.k = 0.0;
+  EXPECT_THROW(rescale({stress_only}, settings), InputError);
+}
+
 // One E* for three curves of the same particles (τ_y and γ_y differ): it comes
 // back within its error, that error is the scatter of the estimate over
 // repeated draws, and it is smaller than the curves' own E* errors.
