@@ -20,9 +20,10 @@ build: deps
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE validation
 
+# The whole workflow: micro sweep -> bridge fit, material -> macro cone-plate
+# -> macro compare with the castor-oil measurement (scripts/demo.sh).
 demo: build
-	@mkdir -p out
-	@$(BUILD)/micro/micro run cases/demo.prm --output out/demo.h5 --force
+	@bash scripts/demo.sh $(BUILD) out/demo
 
 # The same suite under AddressSanitizer and UndefinedBehaviorSanitizer.
 sanitize: deps

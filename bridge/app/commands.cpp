@@ -91,6 +91,15 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
   lines.push_back("law:      " + o.law.string());
   if (o.modulus) {
     request.modulus = *o.modulus;
+  } else if (o.plateau_modulus) {
+    const MaterialValue e_star =
+        contact_modulus_from_plateau(law, o.phi, *o.plateau_modulus, o.extrapolate);
+    request.modulus = e_star.value;
+    lines.push_back(fmt::format(
+        "E* = G' / (G0/E*)(phi) = {:.6g} Pa / {:.6g} = {:.6g} Pa +- {:.2g} % (the law's G0/E* at "
+        "phi; every stress below scales with E*, so this error adds to theirs)",
+        *o.plateau_modulus, *o.plateau_modulus / e_star.value, e_star.value,
+        100.0 * e_star.error() / e_star.value));
   } else {
     require(*o.interfacial_tension > 0 && *o.radius > 0,
             "the interfacial tension and the radius must be positive");

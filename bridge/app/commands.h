@@ -30,6 +30,7 @@ struct MaterialOptions {
   double phi = 0.0, viscosity = 0.0;
   std::optional<double> modulus;                      // E* [Pa], or
   std::optional<double> interfacial_tension, radius;  // γ_i [N/m] and R [m]: E* = 9.92 γ_i/R
+  std::optional<double> plateau_modulus;              // G' [Pa]: E* = G'/(G0/E*)(phi) from the law
   bool extrapolate = false, force = false;
 };
 

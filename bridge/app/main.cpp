@@ -85,9 +85,17 @@ int main(int argc, char** argv) {
                       ->check(positive);
   auto* radius = material_cmd->add_option("--radius", material.radius, "mean droplet radius R [m]")
                      ->check(positive);
+  auto* plateau =
+      material_cmd
+          ->add_option("--plateau-modulus", material.plateau_modulus,
+                       "measured linear shear modulus G' [Pa] (amplitude-sweep plateau): "
+                       "E* = G' / (G0/E*)(phi) from the law")
+          ->check(positive);
   tension->needs(radius);
   radius->needs(tension);
   modulus->excludes(tension);
+  plateau->excludes(modulus);
+  plateau->excludes(tension);
   material_cmd->add_option("--viscosity", material.viscosity, "solvent viscosity eta_s [Pa s]")
       ->required()
       ->check(positive);
@@ -156,8 +164,10 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    if (*material_cmd && !material.modulus && !material.interfacial_tension) {
-      throw CLI::ValidationError("material: give --modulus, or --interfacial-tension and --radius");
+    if (*material_cmd && !material.modulus && !material.interfacial_tension &&
+        !material.plateau_modulus) {
+      throw CLI::ValidationError(
+          "material: give --modulus, --plateau-modulus, or --interfacial-tension and --radius");
     }
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);

@@ -10,7 +10,9 @@
 namespace softglass::bridge {
 
 std::string with_error(double value, double error, int digits) {
-  if (!std::isfinite(error) || error <= 0) return fmt::format("{:.4g}", value);
+  if (!std::isfinite(value)) return "not fitted";
+  // No error, or only rounding noise (one packing: no packing-to-packing spread).
+  if (!std::isfinite(error) || error <= 1e-12 * std::abs(value)) return fmt::format("{:.4g}", value);
   // Print the value to the decimal place of the error's last significant digit.
   const int place = static_cast<int>(std::floor(std::log10(error))) - (digits - 1);
   const double magnitude = std::max(std::abs(value), error);

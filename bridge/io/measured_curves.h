@@ -1,25 +1,34 @@
-// Measured flow curves (rheometer exports) for `bridge rescale`.
+// Measured rheometer data (instrument exports): flow curves for `bridge
+// rescale`, torques for `macro compare`. One reader for both.
 //
 // Layouts read (the shapes of ../shared/data/rheometry/ and common exports):
 //   - long: one row per point, columns recognised by name (case, spaces,
 //     underscores and hyphens do not matter):
-//         shear rate   "shear rate", "rate", "gamma dot"
-//         stress       "stress", "shear stress"
-//         N1           "N1", "first normal stress difference"
-//         curve label  "sample", "sample id", "curve", "label" (optional: groups rows)
-//     other columns (viscosity, torque, time, ...) are ignored. Units come in
-//     brackets, "Stress [Pa]", or as a last underscore-separated part,
+//         shear rate        "shear rate", "rate", "gamma dot"
+//         stress            "stress", "shear stress"
+//         N1                "N1", "first normal stress difference"
+//         torque            "torque"
+//         angular velocity  "angular velocity", "rotation rate", "angular speed", "omega"
+//         normal force      "normal force", "axial force"
+//         curve label       "sample", "sample id", "curve", "label" (optional: groups rows)
+//     other columns (viscosity, time, temperature, ...) are ignored. Units come
+//     in brackets, "Stress [Pa]", or as a last underscore-separated part,
 //     "stress_Pa";
 //   - paired: a header that labels pairs of columns ("0.68,,0.70,,..."), each
 //     pair one curve (shear rate, stress), no units in the header; rows may be
 //     shorter for some pairs (both cells empty).
-// Units: rates in 1/s (also s^-1, s-1, 1/min); stresses in Pa, kPa, MPa or mPa.
-// Headers without units take the `fallback` units (the command line's
-// --rate-unit, --stress-unit); without those they are refused. Reduced units
-// (E*, 1) are refused: these are measured, dimensional curves. Values must be
-// finite and positive (N1 may take any sign); each curve needs 4 points.
+// Units: rates in 1/s (also s^-1, s-1, 1/min); stresses in Pa, kPa, MPa or
+// mPa; torques in N.m, mN.m, µN.m, nN.m (also written Nm, N m, N·m); angular
+// velocities in rad/s or rpm; forces in N, mN or g (gram-force, as rheometers
+// export "Axial force [g]"). Headers of rates and stresses without units take
+// the `fallback` units (the command line's --rate-unit, --stress-unit);
+// without those, and for every other quantity, they are refused. Reduced units
+// (E*, 1) are refused: these are measured, dimensional data. Values must be
+// finite and positive (N1 and normal force may take any sign); each curve
+// needs 4 points.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +37,30 @@
 
 namespace softglass::bridge {
 
+struct FallbackUnits {
+  std::string rate, stress;  // empty: none given
+};
+
+/// The quantities a column may hold; values are stored in SI units.
+enum class Measured { shear_rate, stress, N1, torque, angular_velocity, normal_force };
+
+/// One measured curve, every recognised column of it (SI units), sorted by its
+/// abscissa: the shear rate, or the angular velocity when there is no rate.
+struct RheometerCurve {
+  std::string label;
+  std::map<Measured, std::vector<double>> values;
+
+  bool has(Measured q) const { return values.contains(q); }
+  const std::vector<double>& operator[](Measured q) const { return values.at(q); }
+  std::size_t size() const { return values.begin()->second.size(); }
+};
+
+/// Every curve of the file; InputError unless each has an abscissa (shear
+/// rate or angular velocity) and an ordinate (stress or torque).
+std::vector<RheometerCurve> read_rheometer_curves(const CsvTable& csv,
+                                                  const FallbackUnits& fallback);
+
+/// A flow curve: shear rate and stress (optional N1).
 struct MeasuredCurve {
   std::string label;
   std::vector<double> shear_rate;         // [1/s], increasing
@@ -35,10 +68,7 @@ struct MeasuredCurve {
   std::optional<std::vector<double>> N1;  // [Pa]
 };
 
-struct FallbackUnits {
-  std::string rate, stress;  // empty: none given
-};
-
+/// The flow curves of the file; InputError unless it has shear rate and stress.
 std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv, const FallbackUnits& fallback);
 
 /// SI factor of a rate unit (1/s → 1, 1/min → 1/60); InputError naming `what` otherwise.

@@ -65,26 +65,42 @@ std::string describe_placement(const Law& law, double phi) {
                      *above);
 }
 
+// φ must be simulated, or inside the simulated range, or extrapolation asked for.
+void check_phi(const Law& law, double phi, bool extrapolate) {
+  require(phi > 0 && phi < 1, fmt::format("volume fraction phi = {} must be in (0, 1)", phi));
+  const std::vector<double>& p = law.phi;
+  if (is_simulated(p, phi)) return;
+  require(p.size() >= 2, fmt::format("the law holds for phi = {} only (one simulated volume "
+                                     "fraction); phi = {} cannot be reached",
+                                     p.front(), phi));
+  require(extrapolate || (phi >= p.front() && phi <= p.back()),
+          fmt::format("phi = {} is outside the simulated range {} ... {}; pass --extrapolate "
+                      "to extrapolate linearly (its error then assumes the curvature seen "
+                      "inside the range)",
+                      phi, p.front(), p.back()));
+}
+
 }  // namespace
 
+MaterialValue contact_modulus_from_plateau(const Law& law, double phi, double plateau_modulus,
+                                           bool extrapolate) {
+  require(plateau_modulus > 0 && std::isfinite(plateau_modulus),
+          fmt::format("plateau modulus G' = {} Pa must be positive", plateau_modulus));
+  check_phi(law, phi, extrapolate);
+  const MaterialValue g0 = interpolate_value(law.phi, law.modulus, phi);
+  require(g0.value > 0, fmt::format("the law's G0/E* at phi = {} is {:.3g}: no solid to scale "
+                                    "a plateau modulus by",
+                                    phi, g0.value));
+  const double e_star = plateau_modulus / g0.value;
+  return {e_star, e_star * g0.statistical / g0.value, e_star * g0.interpolation / g0.value};
+}
+
 Material make_material(const Law& law, const MaterialRequest& request) {
-  require(request.phi > 0 && request.phi < 1,
-          fmt::format("volume fraction phi = {} must be in (0, 1)", request.phi));
   require(request.modulus > 0 && std::isfinite(request.modulus),
           fmt::format("contact modulus E* = {} Pa must be positive", request.modulus));
   require(request.viscosity > 0 && std::isfinite(request.viscosity),
           fmt::format("solvent viscosity eta_s = {} Pa s must be positive", request.viscosity));
-  const std::vector<double>& p = law.phi;
-  if (!is_simulated(p, request.phi)) {
-    require(p.size() >= 2, fmt::format("the law holds for phi = {} only (one simulated volume "
-                                       "fraction); phi = {} cannot be reached",
-                                       p.front(), request.phi));
-    require(request.extrapolate || (request.phi >= p.front() && request.phi <= p.back()),
-            fmt::format("phi = {} is outside the simulated range {} ... {}; pass --extrapolate "
-                        "to extrapolate linearly (its error then assumes the curvature seen "
-                        "inside the range)",
-                        request.phi, p.front(), p.back()));
-  }
+  check_phi(law, request.phi, request.extrapolate);
 
   Material m;
   m.request = request;

@@ -62,6 +62,14 @@ struct Material {
 /// format does not allow (a flow index outside (0, 2] after extrapolation).
 Material make_material(const Law& law, const MaterialRequest& request);
 
+/// E* from a measured linear shear modulus G′ (the plateau of an amplitude or
+/// frequency sweep): E* = G′ / (G0/E*)(φ), with the law's G0/E* interpolated
+/// in φ like the other per-φ values; its errors carry over relatively. The
+/// same range rules as make_material. For materials whose E* cannot be
+/// measured directly (microgels, emulsions of unknown interfacial tension).
+MaterialValue contact_modulus_from_plateau(const Law& law, double phi, double plateau_modulus,
+                                           bool extrapolate);
+
 /// The material fragment; `provenance` lines open it as comments.
 std::string material_text(const Material& material, const std::vector<std::string>& provenance);
 

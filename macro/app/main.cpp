@@ -1,8 +1,10 @@
 // macro: finite elements of rheometers and channels for a Herschel-Bulkley law.
 //
 //   macro run FILE.prm [-o DIR] [--preset fast|standard|accurate] [--force] [--quiet]
+//   macro compare FILE.prm DATA.csv [-o DIR] [--sample S] ...
+//                           predicted against measured torques, point by point
 //   macro template          a documented scene file with every entry and default
-//   mpirun -n N macro run ...  the sweep's operating points split over N ranks
+//   mpirun -n N macro run|compare ...  the operating points split over N ranks
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
@@ -14,6 +16,7 @@
 
 #include "common/errors.h"
 #include "common/version.h"
+#include "macro/app/compare.h"
 #include "macro/app/run.h"
 
 int main(int argc, char** argv) {
@@ -34,8 +37,47 @@ int main(int argc, char** argv) {
                   "output directory (default: <scene stem>_results)");
   run->add_option("--preset", options.preset,
                   "override the file's solver preset: fast | standard | accurate");
+  run->add_option("--material", options.material,
+                  "material fragment (.prm, e.g. from `bridge material`) replacing the scene's");
   run->add_flag("-f,--force", options.force, "overwrite existing results");
   run->add_flag("-q,--quiet", options.quiet, "no progress display");
+  macro::app::CompareOptions compare_options;
+  CLI::App* compare = app.add_subcommand(
+      "compare",
+      "predict the torques (and normal forces) of a measured rheometer curve with a scene file "
+      "and compare them point by point");
+  compare->add_option("scene", compare_options.scene_file,
+                      "scene file (.prm) of the instrument: couette, cone-plate or parallel-plates")
+      ->required();
+  compare->add_option("data", compare_options.data_file,
+                      "measured curve (CSV): torque or stress against angular velocity or shear "
+                      "rate, units in the header")
+      ->required();
+  compare->add_option("-o,--output", compare_options.output,
+                      "output directory (default: <data stem>_vs_<scene stem>)");
+  compare->add_option("--sample", compare_options.sample,
+                      "the curve to compare when the file holds several (its label)");
+  compare->add_option("--min-rate", compare_options.min_rate,
+                      "compare only points from this shear rate [1/s]");
+  compare->add_option("--max-rate", compare_options.max_rate,
+                      "compare only points up to this shear rate [1/s]");
+  compare->add_option("--strain-constant", compare_options.strain_constant,
+                      "the instrument's shear rate per angular velocity [1/rad] (default: the "
+                      "geometry's standard conversion)");
+  compare->add_option("--stress-constant", compare_options.stress_constant,
+                      "the instrument's stress per torque [Pa/(N m)] (default: the geometry's "
+                      "standard conversion)");
+  compare->add_option("--rate-unit", compare_options.rate_unit,
+                      "units of shear-rate columns without units (1/s, 1/min)");
+  compare->add_option("--stress-unit", compare_options.stress_unit,
+                      "units of stress columns without units (Pa, kPa, MPa, mPa)");
+  compare->add_option("--preset", compare_options.preset,
+                      "override the file's solver preset: fast | standard | accurate");
+  compare->add_option("--material", compare_options.material,
+                      "material fragment (.prm, e.g. from `bridge material`) replacing the "
+                      "scene's");
+  compare->add_flag("-f,--force", compare_options.force, "overwrite existing results");
+  compare->add_flag("-q,--quiet", compare_options.quiet, "no progress display and no table");
   app.add_subcommand("template", "print a documented scene file with every entry");
 
   // Exceptions from deal.II's own checks should not print their backtraces.
@@ -52,6 +94,7 @@ int main(int argc, char** argv) {
       macro::app::print_template();
       return int(kExitOk);
     }
+    if (app.got_subcommand("compare")) return macro::app::compare(compare_options);
     return macro::app::run(options);
   });
 }

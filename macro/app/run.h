@@ -16,6 +16,8 @@ struct RunOptions {
   bool quiet = false;
   /// Overrides the file's solver preset when not empty.
   std::string preset;
+  /// A material fragment replacing the scene's material when not empty.
+  std::filesystem::path material;
 };
 
 /// Returns the exit code; throws InputError, OutputExistsError, NumericalError.

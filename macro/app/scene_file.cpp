@@ -81,6 +81,26 @@ void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path
   parse_scene_text(prm, expand_includes(file), file.string());
 }
 
+Material read_scene_material(dealii::ParameterHandler& prm,
+                             const std::filesystem::path& override) {
+  if (override.empty()) return read_material(prm);
+  const Material material = read_material_file(override);
+  set_material(prm, material);
+  return material;
+}
+
+void override_preset(dealii::ParameterHandler& prm, const std::string& preset) {
+  if (preset.empty()) return;
+  prm.enter_subsection("solver");
+  try {
+    prm.set("preset", preset);
+  } catch (const dealii::ExceptionBase&) {
+    throw InputError(
+        fmt::format("--preset {} is unknown; allowed: fast, standard, accurate", preset));
+  }
+  prm.leave_subsection();
+}
+
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {
   prm.enter_subsection("sweep");
   std::vector<double> points;

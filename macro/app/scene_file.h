@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "macro/material/material.h"
+
 namespace softglass::macro::app {
 
 /// Declares every entry a scene file may hold.
@@ -26,6 +28,15 @@ void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path
 /// The same for text already read (includes expanded); `source` names it.
 void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
                       const std::string& source);
+
+/// The scene's material, or the fragment file `override` when it is not empty
+/// (a command line's --material; `prm` then states it instead).
+Material read_scene_material(dealii::ParameterHandler& prm,
+                             const std::filesystem::path& override);
+
+/// Sets `solver/preset` to `preset` unless it is empty (the command line's
+/// --preset); InputError naming the allowed presets otherwise.
+void override_preset(dealii::ParameterHandler& prm, const std::string& preset);
 
 /// The operating points of `subsection sweep`, validated (> 0, finite).
 std::vector<double> read_sweep(dealii::ParameterHandler& prm);

@@ -72,6 +72,21 @@ void declare_material(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
+void set_material(dealii::ParameterHandler& prm, const Material& material) {
+  prm.enter_subsection(kSubsection);
+  prm.set("model", std::string(model_name(material.model)));
+  prm.set("yield stress", material.shear.yield_stress);
+  prm.set("consistency", material.shear.consistency);
+  prm.set("flow index", material.shear.flow_index);
+  for (const auto& [name, law] : {std::pair{"N1", material.first_normal_stress_difference},
+                                  std::pair{"N2", material.second_normal_stress_difference}}) {
+    prm.set(fmt::format("{} yield", name), law.yield);
+    prm.set(fmt::format("{} consistency", name), law.consistency);
+    prm.set(fmt::format("{} flow index", name), law.flow_index);
+  }
+  prm.leave_subsection();
+}
+
 Material read_material(dealii::ParameterHandler& prm) {
   std::vector<std::string> missing;
   for (const std::string& path : prm.get_entries_wrongly_not_set()) {

@@ -30,6 +30,10 @@ void declare_material(dealii::ParameterHandler& prm);
 /// The material parsed into `prm` (declared by declare_material), validated.
 Material read_material(dealii::ParameterHandler& prm);
 
+/// Writes every entry of `subsection material` from `material`, so that `prm`
+/// states the material actually used (a command line's --material).
+void set_material(dealii::ParameterHandler& prm, const Material& material);
+
 /// Parses fragment text; `source` names it in messages.
 Material parse_material(const std::string& text, const std::string& source);
 

@@ -84,6 +84,10 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
     spec.normal_force = {.id = 2, .integrand = [n1](double rate) { return 0.5 * n1(rate); }};
   }
   spec.reference = [law, cone](double omega) { return exact::torque(law, cone, omega); };
+  // The cone's uniform rate Ω/β and the stress 3M/(2πR³) of a small angle.
+  spec.instrument = InstrumentConstants{.strain_constant = 1.0 / beta,
+                                        .stress_constant = 3.0 / (2.0 * std::numbers::pi * R * R * R),
+                                        .convention = "small-angle cone: rate Omega/beta, stress 3M/(2 pi R^3)"};
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 

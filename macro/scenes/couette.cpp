@@ -55,6 +55,13 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   // γ̇_c: the Newtonian rate at the bob, 2ΩR2²/(R2² − R1²).
   const double rate_factor = 2.0 * R2 * R2 / (R2 * R2 - R1 * R1);
   const auto reference = [law, cell](double omega) { return exact::torque(law, cell, omega); };
+  // ISO 3219: the representative rate and stress of a narrow gap, at the
+  // radius whose square is the mean of R1² and R2² (no end correction).
+  const double r1s = R1 * R1, r2s = R2 * R2;
+  const InstrumentConstants instrument{
+      .strain_constant = (r1s + r2s) / (r2s - r1s),
+      .stress_constant = (r1s + r2s) / (4.0 * std::numbers::pi * L * r1s * r2s),
+      .convention = "ISO 3219 representative values of the gap, no end correction"};
   const auto drive = [rate_factor](double omega) {
     return fe::Drive{.source = 0.0,
                      .boundary_values = {{0, omega}, {1, 0.0}},
@@ -73,6 +80,7 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
         .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi * L};
     spec.drive = drive;
     spec.reference = reference;
+    spec.instrument = instrument;
     return make_reduced_scene(mesh, std::move(spec), law, settings);
   }
   dealii::Triangulation<2> mesh;
@@ -87,6 +95,7 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
       .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = drive;
   spec.reference = reference;
+  spec.instrument = instrument;
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 

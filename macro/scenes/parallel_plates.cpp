@@ -50,6 +50,10 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Materia
                      .characteristic_rate = omega * R / h};
   };
   spec.reference = [law, plates](double omega) { return exact::torque(law, plates, omega); };
+  // The rim rate ΩR/h and the Newtonian (apparent) rim stress 2M/(πR³).
+  spec.instrument = InstrumentConstants{.strain_constant = R / h,
+                                        .stress_constant = 2.0 / (std::numbers::pi * R * R * R),
+                                        .convention = "plates: rim rate Omega R/h, apparent rim stress 2M/(pi R^3)"};
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 

@@ -69,6 +69,8 @@ class ReducedScene final : public Scene {
 
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
+  std::optional<InstrumentConstants> instrument() const override { return spec_.instrument; }
+
  private:
   ReducedSceneSpec<dim> spec_;
   fe::ScalarFlowSolver<dim> solver_;

@@ -32,6 +32,8 @@ struct ReducedSceneSpec {
   std::function<double(double)> reference;
   /// Unit of the flow rate: m^2/s per unit width (channel) or m^3/s.
   std::string flow_unit = "m^3/s";
+  /// Rotational rheometers: how the instrument reports Ω and M as γ̇ and τ.
+  std::optional<InstrumentConstants> instrument;
 };
 
 /// Builds the scene; `mesh` is copied by the solver.

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,16 @@ struct Column {
   std::string unit;
 };
 
+/// How a rotational rheometer reports what it measures (angular velocity Ω,
+/// torque M) as a shear rate and a stress: γ̇ = strain_constant · Ω and
+/// τ = stress_constant · M, the standard conversions of the geometry (what the
+/// instrument's software applies; `convention` says which).
+struct InstrumentConstants {
+  double strain_constant;  // [1/rad]
+  double stress_constant;  // [Pa/(N m)]
+  std::string convention;
+};
+
 class Scene {
  public:
   virtual ~Scene() = default;
@@ -40,6 +51,9 @@ class Scene {
   virtual std::vector<double> solve(double drive) = 0;
   /// The fields of the last solved point, for ParaView.
   virtual void write_vtu(const std::filesystem::path& file) const = 0;
+  /// Rotational rheometers: the instrument's conversions (none for channels,
+  /// pipes and the Stokes scenes).
+  virtual std::optional<InstrumentConstants> instrument() const { return std::nullopt; }
 };
 
 /// Names accepted by `set scene`.

@@ -1,6 +1,9 @@
 // Reading measured flow curves: the rheometer layouts, units and their
 // conversion, and the refusal of missing, reduced or mixed units and bad values.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <numbers>
 
 #include "bridge/io/measured_curves.h"
 #include "bridge_test_support.h"
@@ -76,8 +79,36 @@ TEST(MeasuredCurves, RefusesMissingReducedAndMixedUnits) {
   expect_contains(refusal("Shear rate [1/s],Stress [Pa],N1 [1]\n1,2,1\n2,3,1\n3,4,1\n4,5,1\n"),
                   {"'N1 [1]'", "not a stress unit"});
   expect_contains(refusal("Viscosity [Pa.s],Torque [uN.m]\n1,2\n"),
-                  {"shear-rate and a stress column"});
+                  {"shear-rate or angular-velocity column"});
+  expect_contains(refusal("Angular velocity [rad/s],Torque [uN.m]\n1,2\n2,3\n3,4\n4,5\n"),
+                  {"needs a shear-rate and a stress column"});
+  expect_contains(refusal("Shear rate [1/s],Torque [N]\n1,2\n2,3\n3,4\n4,5\n"),
+                  {"'N' is not a torque unit"});
   expect_contains(refusal("rate [1/s],stress [Pa],Stress [kPa]\n1,2,3\n"), {"second column"});
+}
+
+TEST(RheometerCurves, ReadsTorqueAngularVelocityAndForceInSIUnits) {
+  // Rows out of order: every column follows the angular velocity's sort.
+  const std::string text =
+      "Angular velocity [rpm],Torque [\u00b5N\u00b7m],Axial force [g],Temperature [C]\n"
+      "60,3,-1,25\n30,2,0.5,25\n90,4,2,25\n120,5,3,25\n";
+  const auto curves = read_rheometer_curves(CsvTable::parse(text, "torques.csv"), {});
+  ASSERT_EQ(curves.size(), 1u);
+  const RheometerCurve& c = curves[0];
+  EXPECT_FALSE(c.has(Measured::shear_rate));
+  EXPECT_FALSE(c.has(Measured::stress));
+  const double two_pi = 2.0 * std::numbers::pi;
+  EXPECT_DOUBLE_EQ(c[Measured::angular_velocity][0], 30.0 * two_pi / 60.0);
+  EXPECT_DOUBLE_EQ(c[Measured::torque][0], 2e-6);
+  EXPECT_DOUBLE_EQ(c[Measured::normal_force][0], 0.5 * 9.80665e-3);
+  EXPECT_DOUBLE_EQ(c[Measured::normal_force][1], -1.0 * 9.80665e-3) << "forces may be negative";
+  for (const char* unit : {"mN.m", "mN m", "mNm", "mN*m"}) {
+    const auto m = read_rheometer_curves(
+        CsvTable::parse(fmt::format("rate [1/s],torque [{}]\n1,1\n2,2\n3,3\n4,4\n", unit),
+                        "t.csv"),
+        {});
+    EXPECT_DOUBLE_EQ(m[0][Measured::torque][3], 4e-3) << unit;
+  }
 }
 
 TEST(MeasuredCurves, RefusesBadValuesAndShortCurves) {

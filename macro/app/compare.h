@@ -1,0 +1,37 @@
+// `macro compare SCENE.prm DATA.csv`: the scene's predicted torques (and normal
+// forces) at the angular velocities of a measured curve, point by point, with
+// relative errors, a summary and an overlay plot.
+#pragma once
+
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace softglass::macro::app {
+
+struct CompareOptions {
+  std::filesystem::path scene_file;
+  std::filesystem::path data_file;
+  /// Empty: <data stem>_vs_<scene stem> in the current directory.
+  std::filesystem::path output;
+  /// The curve's label when the file holds several (a sample column, pairs).
+  std::string sample;
+  /// Units of rate and stress columns without units in their header.
+  std::string rate_unit, stress_unit;
+  /// The instrument's constants when they differ from the geometry's standard ones.
+  std::optional<double> strain_constant, stress_constant;
+  /// Only points whose shear rate lies in this window [1/s].
+  double min_rate = 0.0;
+  double max_rate = std::numeric_limits<double>::infinity();
+  std::string preset;
+  /// A material fragment replacing the scene's material when not empty.
+  std::filesystem::path material;
+  bool force = false;
+  bool quiet = false;
+};
+
+/// Returns the exit code; throws InputError, OutputExistsError, NumericalError.
+int compare(const CompareOptions& options);
+
+}  // namespace softglass::macro::app

@@ -1,0 +1,37 @@
+// A measured rheometer curve as angular velocities and torques, the quantities
+// the finite-element scene predicts.
+//
+// Instruments export what they measure (angular velocity Ω, torque M, normal
+// force F) and what their software derives from it (shear rate γ̇, stress τ)
+// with the geometry's standard constants (scene.h, InstrumentConstants). Where
+// Ω or M is missing it is recovered with the same constants: Ω = γ̇ / c_γ and
+// M = τ / c_τ. Every conversion made is listed, so the report says what was
+// measured and what was derived.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bridge/io/measured_curves.h"
+#include "macro/scenes/scene.h"
+
+namespace softglass::macro::app {
+
+struct MeasuredTorques {
+  std::vector<double> angular_velocity;             // Ω [rad/s], increasing
+  std::vector<double> shear_rate;                   // γ̇ [1/s] as reported (or c_γ Ω)
+  std::vector<double> torque;                       // M [N m]
+  std::vector<double> stress;                       // τ [Pa] as reported (or c_τ M)
+  std::optional<std::vector<double>> normal_force;  // F [N] when measured
+  std::vector<std::string> conversions;             // one line per derived quantity
+  std::size_t left_out = 0;                         // points outside the rate window
+};
+
+/// The points of `curve` whose shear rate (reported, or c_γ Ω) lies in
+/// [min_rate, max_rate]. InputError when fewer than 2 points remain.
+MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
+                                 const InstrumentConstants& constants, double min_rate,
+                                 double max_rate);
+
+}  // namespace softglass::macro::app

@@ -1,0 +1,78 @@
+#include "macro/io/overlay_plot.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+
+namespace softglass::macro::io {
+
+namespace {
+
+// Single quotes delimit gnuplot strings; labels come from our own code and
+// file names, so quoting them is enough.
+std::string quoted(const std::string& text) {
+  std::string q = "'";
+  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+// Inline data block: x, measured, predicted, relative error of the prediction.
+std::string data_block(const std::string& name, const std::vector<double>& x,
+                       const OverlaySeries& s) {
+  std::string block = fmt::format("${} << EOD\n", name);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double error = s.predicted[i] / s.measured[i] - 1.0;
+    block += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g}\n", x[i], s.measured[i], s.predicted[i],
+                         std::isfinite(error) ? 100.0 * error : NAN);
+  }
+  return block + "EOD\n";
+}
+
+std::string script(const OverlayPlot& plot, const std::filesystem::path& output) {
+  std::ostringstream g;
+  const std::size_t n = plot.panels.size();
+  g << fmt::format("set terminal pngcairo size {},900 enhanced font 'DejaVu Sans,11'\n",
+                   560 * n);
+  g << "set output " << quoted(output.string()) << "\n";
+  for (std::size_t p = 0; p < n; ++p) g << data_block(fmt::format("d{}", p), plot.x, plot.panels[p]);
+  g << fmt::format("set multiplot layout 2,{} title {} noenhanced\n", n, quoted(plot.title));
+  g << "set logscale x\nset grid\nset key top left\nset format x '10^{%L}'\n";
+  // Upper row: the curves on log-log axes; lower row: the relative error.
+  for (std::size_t p = 0; p < n; ++p) {
+    g << "set logscale y\nset format y '10^{%L}'\n";
+    g << "set xlabel " << quoted(plot.abscissa) << "\nset ylabel "
+      << quoted(plot.panels[p].quantity) << "\n";
+    g << fmt::format(
+        "plot $d{0} using 1:2 with points pt 7 ps 1.1 lc rgb '#1f77b4' title 'measured', "
+        "$d{0} using 1:3 with linespoints pt 6 lw 2 lc rgb '#d62728' title 'predicted'\n",
+        p);
+  }
+  for (std::size_t p = 0; p < n; ++p) {
+    g << "unset logscale y\nset format y '%g'\n";
+    g << "set ylabel " << quoted("predicted / measured - 1 [%]") << "\n";
+    g << fmt::format(
+        "plot $d{0} using 1:4 with linespoints pt 7 lc rgb '#d62728' notitle, 0 with lines lc "
+        "rgb 'black' notitle\n",
+        p);
+  }
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+}  // namespace
+
+bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file) {
+  FILE* gnuplot = popen("gnuplot 2>/dev/null", "w");
+  if (!gnuplot) return false;
+  const std::string text = script(plot, file);
+  const bool written = std::fwrite(text.data(), 1, text.size(), gnuplot) == text.size();
+  const int status = pclose(gnuplot);
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file, ec);
+  return written && status == 0 && !ec && size > 0;
+}
+
+}  // namespace softglass::macro::io

@@ -1,0 +1,142 @@
+// `macro compare` from the outside. A "measurement" made from the exact
+// finite-angle cone-plate solution (macro.md) in an instrument's units (rpm,
+// mN.m, grams of axial force) must come back with relative errors at the
+// finite-element scene's accuracy; bad requests give exit code 2 naming the
+// problem, existing results exit code 3.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "macro/exact/cone_plate.h"
+#include "tests/common/command_line.h"
+#include "tests/common/test_files.h"
+
+namespace softglass::macro {
+namespace {
+
+namespace fs = std::filesystem;
+using softglass::testing::read_text;
+using softglass::testing::TemporaryDirectory;
+using softglass::testing::write_text;
+
+constexpr double kRadius = 0.025, kAngleDeg = 2.0;
+const HerschelBulkley kLaw{.yield_stress = 10.0, .consistency = 5.0, .flow_index = 0.5};
+const NormalStressLaw kN1{.yield = 2.0, .consistency = 3.0, .flow_index = 0.5};
+
+std::string material_text(double tau_y) {
+  return fmt::format(
+      "subsection material\n set model = herschel-bulkley\n set yield stress = {}\n"
+      " set consistency = {}\n set flow index = {}\n set N1 yield = {}\n"
+      " set N1 consistency = {}\n set N1 flow index = {}\nend\n",
+      tau_y, kLaw.consistency, kLaw.flow_index, kN1.yield, kN1.consistency, kN1.flow_index);
+}
+
+class MacroCompare : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // The ideal cone: truncation 1e-7 of the radius (its effect ~1e-21).
+    write_text(dir_.path() / "cone.prm",
+               fmt::format("set scene = cone-plate\ninclude material.prm\n"
+                           "subsection cone-plate\n set radius = {}\n set angle = {}\n"
+                           " set truncation = 2.5e-9\nend\n",
+                           kRadius, kAngleDeg));
+    write_text(dir_.path() / "material.prm", material_text(kLaw.yield_stress));
+    // The measurement: exact torque and normal force at 6 speeds over 3.5
+    // decades, in the units of a rheometer export.
+    const exact::ConePlate cone{.radius = kRadius, .angle = kAngleDeg * std::numbers::pi / 180};
+    std::ostringstream data;
+    data << "Angular velocity [rpm],Torque [mN.m],Axial force [g],Temperature [C]\n";
+    for (double omega : {0.003, 0.03, 0.3, 1.0, 3.0, 10.0}) {
+      data << fmt::format("{:.12g},{:.12g},{:.12g},25\n", omega * 60 / (2 * std::numbers::pi),
+                          1e3 * exact::torque(kLaw, cone, omega),
+                          exact::normal_force(kN1, cone, omega) / 9.80665e-3);
+    }
+    write_text(dir_.path() / "measured.csv", data.str());
+  }
+
+  softglass::testing::Outcome compare(const std::string& arguments) {
+    return softglass::testing::run_tool(MACRO_EXECUTABLE, "compare " + arguments, dir_.path(),
+                                        dir_.path() / "capture");
+  }
+
+  // Column `name` of out/comparison.csv.
+  std::vector<double> column(const std::string& name) {
+    std::istringstream csv(read_text(dir_.path() / "out" / "comparison.csv"));
+    std::string line, cell;
+    while (std::getline(csv, line) && line[0] == '#') {
+    }
+    std::istringstream header(line);
+    std::size_t index = 0, found = std::string::npos;
+    for (; std::getline(header, cell, ','); ++index)
+      if (cell.starts_with(name + " [")) found = index;
+    EXPECT_NE(found, std::string::npos) << name;
+    std::vector<double> values;
+    while (std::getline(csv, line)) {
+      std::istringstream row(line);
+      for (std::size_t c = 0; std::getline(row, cell, ','); ++c)
+        if (c == found) values.push_back(std::stod(cell));
+    }
+    return values;
+  }
+
+  TemporaryDirectory dir_;
+};
+
+TEST_F(MacroCompare, RecoversTheExactConePlateTorquesAndNormalForces) {
+  const auto o = compare("cone.prm measured.csv -o out -q");
+  ASSERT_EQ(o.code, 0) << o.err;
+  const auto torque_error = column("relative_error");
+  ASSERT_EQ(torque_error.size(), 6u);
+  // The standard preset's requirement on exact references (docs/macro.md).
+  for (double e : torque_error) EXPECT_LT(std::abs(e), 1e-3);
+  // The normal force integrates N1(γ̇)/2 over the plate; the exact value takes
+  // the small-angle uniform rate, which the finite angle changes by O(β²) ~ 1e-3.
+  for (double e : column("normal_force_relative_error")) EXPECT_LT(std::abs(e), 5e-3);
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "summary.txt"));
+}
+
+TEST_F(MacroCompare, MaterialOptionReplacesTheScenesMaterial) {
+  // Twice the yield stress: the measured (τ_y = 10 Pa) torques are now too low.
+  write_text(dir_.path() / "stiffer.prm", material_text(2.0 * kLaw.yield_stress));
+  const auto o = compare("cone.prm measured.csv -o out -q --material stiffer.prm");
+  ASSERT_EQ(o.code, 0) << o.err;
+  for (double e : column("relative_error")) EXPECT_GT(e, 0.05);
+  EXPECT_NE(read_text(dir_.path() / "out" / "summary.txt").find("tau_y = 20 Pa"),
+            std::string::npos);
+}
+
+TEST_F(MacroCompare, RefusesBadRequests) {
+  write_text(dir_.path() / "channel.prm",
+             "set scene = channel\ninclude material.prm\nsubsection channel\n set half height = "
+             "0.005\nend\n");
+  write_text(dir_.path() / "two.csv",
+             "sample,Angular velocity [rad/s],Torque [N.m]\na,1,1\na,2,2\na,3,3\na,4,4\n"
+             "b,1,1\nb,2,2\nb,3,3\nb,4,4\n");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"channel.prm measured.csv -o out -q", "has no rheometer torque"},
+      {"cone.prm two.csv -o out -q", "choose one with --sample"},
+      {"cone.prm two.csv -o out -q --sample c", "--sample c: no such curve"},
+      {"cone.prm missing.csv -o out -q", "missing.csv"},
+      {"cone.prm measured.csv -o out -q --strain-constant -3", "--strain-constant = -3"},
+      {"cone.prm measured.csv -o out -q --min-rate 1e6", "at least 2"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const auto o = compare(arguments);
+    EXPECT_EQ(o.code, 2) << arguments;
+    EXPECT_NE(o.err.find(message), std::string::npos) << arguments << ": " << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_.path() / "out" / "comparison.csv")) << "nothing half-written";
+}
+
+TEST_F(MacroCompare, ExistingResultsNeedForce) {
+  ASSERT_EQ(compare("cone.prm measured.csv -o out -q").code, 0);
+  EXPECT_EQ(compare("cone.prm measured.csv -o out -q").code, 3);
+  EXPECT_EQ(compare("cone.prm measured.csv -o out -q --force").code, 0);
+}
+
+}  // namespace
+}  // namespace softglass::macro
