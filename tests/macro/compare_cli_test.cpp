@@ -140,3 +140,46 @@ TEST_F(MacroCompare, ExistingResultsNeedForce) {
 
 }  // namespace
 }  // namespace softglass::macro
+
+namespace softglass::macro {
+namespace {
+
+// The castor-oil export of ../shared/data/rheometry/ (TA HR-3, DIN cylinders
+// R1 = 14 mm, R2 = 15.2 mm, L = 42 mm) states the instrument's own constants:
+// strain constant 12.1872 1/rad and stress constant 16243.3 Pa/(N m), the
+// latter with an end-effect factor 1.1. The Couette scene's ISO 3219
+// constants, computed from the geometry alone, must reproduce both.
+TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
+  const fs::path data = fs::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry" /
+                        "castoroil85_couette_flow_sweep.csv";
+  if (!fs::exists(data)) GTEST_SKIP() << data << " is absent";
+  TemporaryDirectory dir;
+  write_text(dir.path() / "material.prm", material_text(10.0));
+  write_text(dir.path() / "cell.prm",
+             "set scene = couette\ninclude material.prm\nsubsection couette\n"
+             " set inner radius = 0.014\n set outer radius = 0.0152\n set length = 0.042\n"
+             "end\nsubsection solver\n set preset = fast\nend\n");
+  const auto o = softglass::testing::run_tool(
+      MACRO_EXECUTABLE, fmt::format("compare cell.prm '{}' -o out -q --min-rate 300", data.string()),
+      dir.path(), dir.path() / "capture");
+  ASSERT_EQ(o.code, 0) << o.err;
+  std::istringstream csv(read_text(dir.path() / "out" / "comparison.csv"));
+  std::string line;
+  while (std::getline(csv, line) && line[0] == '#') {
+  }
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    std::vector<double> v;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+    // Columns: Omega, rate, measured M, predicted M, error, estimate, measured τ, predicted τ.
+    EXPECT_NEAR(v[1] / v[0], 12.1872, 12.1872 * 1e-5) << "Omega = rate / strain constant";
+    EXPECT_NEAR(v[6] / v[2], 16243.3, 16243.3 * 2e-4) << "the export's stress per torque";
+    EXPECT_NEAR((v[7] / v[3]) / (v[6] / v[2]), 1.1, 1.1 * 2e-4) << "ISO 3219 = instrument x 1.1";
+    ++rows;
+  }
+  EXPECT_EQ(rows, 6) << "316 ... 1000 1/s";
+}
+
+}  // namespace
+}  // namespace softglass::macro
