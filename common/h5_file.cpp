@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <new>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
@@ -212,6 +213,19 @@ std::vector<std::size_t> shape(const Source& source) {
   return {dims.begin(), dims.end()};
 }
 
+// `count` elements of a Container for the values of `source`. A damaged file
+// can claim any size: one that cannot be allocated is refused as input.
+template <class Container>
+Container allocate(std::size_t count, const Source& source) {
+  try {
+    return Container(count, typename Container::value_type{});
+  } catch (const std::bad_alloc&) {
+  } catch (const std::length_error&) {
+  }
+  throw InputError(source.label + " claims a size of " + std::to_string(count) +
+                   ", more than memory holds");
+}
+
 // Every value of a numeric source, converted by HDF5 to `memory_type`.
 template <class T>
 std::vector<T> read_numbers(const Source& source, hid_t memory_type, bool integers_only) {
@@ -221,7 +235,7 @@ std::vector<T> read_numbers(const Source& source, hid_t memory_type, bool intege
   }
   const auto count = check<InputError>(H5Sget_simple_extent_npoints(source.space().get()),
                                        "cannot read the size of " + source.label);
-  std::vector<T> values(static_cast<std::size_t>(count));
+  auto values = allocate<std::vector<T>>(static_cast<std::size_t>(count), source);
   if (!values.empty()) source.read(memory_type, values.data());  // HDF5 refuses a null buffer
   return values;
 }
@@ -255,7 +269,7 @@ std::string read_text(const Source& source) {
     return text;
   }
   // Null padding in memory: HDF5 then strips space padding (Fortran's) too.
-  std::string text(H5Tget_size(file_type.get()), '\0');
+  auto text = allocate<std::string>(H5Tget_size(file_type.get()), source);
   H5Tset_size(memory_type.get(), text.size());
   H5Tset_strpad(memory_type.get(), H5T_STR_NULLPAD);
   source.read(memory_type.get(), text.data());

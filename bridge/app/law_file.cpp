@@ -90,13 +90,17 @@ std::vector<Estimate> estimates(const Lists& l, const std::string& key, std::siz
   return out;
 }
 
-std::optional<Estimate> scalar(const Lists& l, const std::string& key, const std::string& source) {
+// The single value `key` with its error; absent (both lists empty) only if
+// not `required`: a required entry may be set, yet set to nothing.
+std::optional<Estimate> scalar(const Lists& l, const std::string& key, const std::string& source,
+                               bool required) {
   const std::vector<double>& v = l(key);
   const std::vector<double>& e = l(key + " error");
-  if (v.empty() && e.empty()) return std::nullopt;
+  if (v.empty() && e.empty() && !required) return std::nullopt;
   if (v.size() != 1 || e.size() != 1) {
     throw InputError(
-        fmt::format("{}: '{}' and '{} error' must hold one value each", source, key, key));
+        fmt::format("{}: '{}' and '{} error' must hold one value each (they hold {} and {})",
+                    source, key, key, v.size(), e.size()));
   }
   return Estimate{v[0], e[0]};
 }
@@ -156,8 +160,9 @@ Law read_law_file(const std::filesystem::path& file) {
   const std::pair<Quantity, const char*> constants[] = {{Quantity::sigma, "universal/k"},
                                                         {Quantity::N1, "universal/k N1"},
                                                         {Quantity::N2, "universal/k N2"}};
-  for (const auto& [q, key] : constants) law.k[index(q)] = scalar(l, key, source);
-  law.mean_exponent = *scalar(l, "universal/mean exponent", source);
+  for (const auto& [q, key] : constants)
+    law.k[index(q)] = scalar(l, key, source, q == Quantity::sigma);
+  law.mean_exponent = *scalar(l, "universal/mean exponent", source, true);
   for (Quantity q : kAllQuantities) {
     const std::string s = std::string(law_subsection(q)) + "/";
     if (l(s + "yield").empty() && q != Quantity::sigma) continue;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "common/errors.h"
 
@@ -164,6 +165,12 @@ void validate(const Law& law, const std::string& source) {
       require_finite(law.force->slope[j], source, "f_m/k_f");
     }
   }
+  const std::pair<Quantity, const char*> constants[] = {{Quantity::sigma, "universal/k"},
+                                                        {Quantity::N1, "universal/k N1"},
+                                                        {Quantity::N2, "universal/k N2"}};
+  for (const auto& [q, entry] : constants)
+    if (law.k[index(q)]) require_finite(*law.k[index(q)], source, entry);
+  require_finite(law.mean_exponent, source, "universal/mean exponent");
   const HbLaw& sigma = *law.hb[index(Quantity::sigma)];
   for (std::size_t j = 0; j < n; ++j) {
     if (!(sigma.yield[j].value > 0 && sigma.consistency[j].value > 0)) {

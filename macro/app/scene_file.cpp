@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -103,26 +104,37 @@ void override_preset(dealii::ParameterHandler& prm, const std::string& preset) {
 
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {
   prm.enter_subsection("sweep");
+  // Every operating point finite and > 0 (text such as 1e-320 or 1e999 that
+  // deal.II cannot convert is refused alike).
+  const auto number = [](const std::string& text, const std::string& what) {
+    double v = NAN;
+    try {
+      v = dealii::Utilities::string_to_double(text);
+    } catch (const dealii::ExceptionBase&) {
+    }
+    require(std::isfinite(v) && v > 0.0,
+            fmt::format("sweep: {} = {} is not allowed; allowed: a finite number > 0", what, text));
+    return v;
+  };
   std::vector<double> points;
   const std::string values = prm.get("values");
   if (!values.empty()) {
-    for (const std::string& item : dealii::Utilities::split_string_list(values)) {
-      const double v = dealii::Utilities::string_to_double(item);
-      require(std::isfinite(v) && v > 0.0,
-              fmt::format("sweep: values contains {}, which is not allowed; allowed: > 0", item));
-      points.push_back(v);
-    }
+    for (const std::string& item : dealii::Utilities::split_string_list(values))
+      points.push_back(number(item, "values contains an entry that"));
   } else {
-    const double first = prm.get_double("first"), last = prm.get_double("last");
+    const double first = number(prm.get("first"), "first"), last = number(prm.get("last"), "last");
     const int n = prm.get_integer("points");
-    for (auto [name, v] : {std::pair{"first", first}, std::pair{"last", last}})
-      require(std::isfinite(v) && v > 0.0,
-              fmt::format("sweep: {} = {} is not allowed; allowed: > 0", name, v));
     const bool log = prm.get("spacing") == "log";
     for (int k = 0; k < n; ++k) {
       const double t = n == 1 ? 0.0 : double(k) / (n - 1);
-      points.push_back(log ? first * std::pow(last / first, t) : first + (last - first) * t);
+      // Logarithms first: last/first itself may overflow (1e308 / 1e-3).
+      points.push_back(log ? first * std::exp(t * (std::log(last) - std::log(first)))
+                           : first + (last - first) * t);
     }
+    require(std::all_of(points.begin(), points.end(),
+                        [](double p) { return std::isfinite(p) && p > 0.0; }),
+            fmt::format("sweep: first = {}, last = {} give operating points that are not finite",
+                        first, last));
   }
   prm.leave_subsection();
   return points;

@@ -14,7 +14,13 @@ namespace {
 double checked(const dealii::ParameterHandler& prm, const std::string& scene,
                const std::string& entry, const std::string& unit, bool ok(double, double, double),
                double lo, double hi, const std::string& allowed) {
-  const double value = prm.get_double(entry);
+  // The pattern accepts text that is no finite double (1e-320, 1e999); deal.II
+  // then refuses to convert it, which is bad input like any other value.
+  double value = NAN;
+  try {
+    value = prm.get_double(entry);
+  } catch (const dealii::ExceptionBase&) {
+  }
   require(std::isfinite(value) && ok(value, lo, hi),
           fmt::format("{}: {} = {} [{}] is not allowed; allowed: {} [{}]", scene, entry,
                       prm.get(entry), unit, allowed, unit));

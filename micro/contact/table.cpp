@@ -20,6 +20,7 @@ namespace {
 
 struct Point {
   double eps, force;
+  int line;  // in the file, for messages
 };
 
 std::vector<Point> read_points(const std::string& text, const std::filesystem::path& file) {
@@ -32,7 +33,7 @@ std::vector<Point> read_points(const std::string& text, const std::filesystem::p
     std::istringstream fields(line);
     std::string first;
     if (!(fields >> first) || first.front() == '#') continue;
-    Point p{};
+    Point p{0.0, 0.0, number};
     std::string rest;
     fields.clear();
     fields.str(line);
@@ -63,12 +64,22 @@ std::vector<Point> read_points(const std::string& text, const std::filesystem::p
   return points;
 }
 
-PiecewisePowerLaw interpolate(const std::vector<Point>& p) {
+PiecewisePowerLaw interpolate(const std::vector<Point>& p, const std::filesystem::path& file) {
   std::vector<PiecewisePowerLaw::Branch> branches;
   for (std::size_t k = 0; k + 1 < p.size(); ++k) {
     const double exponent =
         std::log(p[k + 1].force / p[k].force) / std::log(p[k + 1].eps / p[k].eps);
     const double prefactor = p[k].force / std::pow(p[k].eps, exponent);
+    // Rows at the ends of the double range (a force of 1e-320, or forces
+    // 1e600 apart) give a power law that overflows or underflows.
+    if (!(std::isfinite(exponent) && exponent > 0.0 && std::isfinite(prefactor) &&
+          prefactor > 0.0)) {
+      throw InputError(fmt::format(
+          "contact-law table '{}' lines {} and {}: ({}, {}) and ({}, {}) give F = {} eps^{}; "
+          "allowed: rows whose power law has a finite, positive prefactor and exponent",
+          file.string(), p[k].line, p[k + 1].line, p[k].eps, p[k].force, p[k + 1].eps,
+          p[k + 1].force, prefactor, exponent));
+    }
     branches.push_back({k == 0 ? 0.0 : p[k].eps, prefactor, exponent});
   }
   return PiecewisePowerLaw(std::move(branches));
@@ -77,7 +88,7 @@ PiecewisePowerLaw interpolate(const std::vector<Point>& p) {
 class TableLaw final : public ContactLawImpl<TableLaw> {
  public:
   TableLaw(const std::string& text, const std::filesystem::path& file)
-      : law_(interpolate(read_points(text, file))) {}
+      : law_(interpolate(read_points(text, file), file)) {}
 
   std::string name() const override { return "table"; }
 

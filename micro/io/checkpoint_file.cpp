@@ -46,27 +46,52 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   if (!root.has_attribute("kind") || root.attribute_string("kind") != "softglass shear checkpoint")
     throw InputError(fmt::format("'{}' is not a softglass checkpoint", where));
   ShearCheckpoint c;
-  const H5Group g = root.group("configuration");
-  c.particles = Particles(unflatten(g.read_array("position").data), g.read_array("radius").data);
-  c.particles.velocity = unflatten(g.read_array("velocity").data);
-  c.particles.label.clear();
-  for (double label : root.read_array("label").data) c.particles.label.push_back(static_cast<std::uint32_t>(label));
-  if (c.particles.velocity.size() != c.particles.size() || c.particles.label.size() != c.particles.size())
-    throw InputError(fmt::format("'{}': configuration arrays differ in length", where));
-  c.box = LeesEdwardsBox(g.read_scalar("side"));
-  c.box.set_strain(g.read_scalar("strain"));
+  StoredConfiguration configuration = read_configuration(root.group("configuration"), where);
+  c.particles = std::move(configuration.particles);
+  c.box = configuration.box;
+  // The labels index the particles: a permutation of 0 ... N-1.
+  const std::vector<std::int64_t> labels = root.read_int_array("label");
+  const std::size_t n = c.particles.size();
+  if (labels.size() != n) {
+    throw InputError(fmt::format("'{}': {} labels for {} particles; allowed: one per particle",
+                                 where, labels.size(), n));
+  }
+  std::vector<bool> seen(n, false);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int64_t label = labels[i];
+    if (label < 0 || static_cast<std::size_t>(label) >= n ||
+        seen[static_cast<std::size_t>(label)]) {
+      throw InputError(fmt::format("'{}': label {} of particle {}; allowed: each of 0 ... {} once",
+                                   where, label, i, n - 1));
+    }
+    seen[static_cast<std::size_t>(label)] = true;
+    c.particles.label[i] = static_cast<std::uint32_t>(label);
+  }
   const std::vector<double> state = root.read_array("state").data;
   const std::vector<double> counters = root.read_array("counters").data;
   if (state.size() != 6 || counters.size() != 9)
     throw InputError(fmt::format("'{}': state or counters of the wrong length", where));
-  c.start = state[0];
-  c.next_sample = state[1];
-  c.next_check = state[2];
-  c.next_snapshot = state[3];
+  const auto finite_state = [&](std::size_t k) {
+    return finite(state[k], where, fmt::format("value {} of dataset '/state'", k));
+  };
+  c.start = finite_state(0);
+  c.next_sample = finite_state(1);
+  c.next_check = finite_state(2);
+  c.next_snapshot = finite_state(3);
+  // The worst error is inf until the first check; NaN or negative, never.
   c.worst = state[4];
-  c.seconds = state[5];
-  const auto count = [&](int k) { return static_cast<std::size_t>(counters[static_cast<std::size_t>(k)]); };
-  c.counters = {count(0), count(1), count(2), count(3), count(4), count(5), count(6), counters[7], counters[8]};
+  if (!(c.worst >= 0))
+    throw InputError(
+        fmt::format("'{}': worst error = {} in '/state'; allowed: >= 0", where, c.worst));
+  c.seconds = finite_state(5);
+  const auto counter = [&](std::size_t k) {
+    return count(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
+  };
+  const auto step = [&](std::size_t k) {
+    return finite(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
+  };
+  c.counters = {counter(0), counter(1), counter(2), counter(3), counter(4),
+                counter(5), counter(6), step(7),    step(8)};
   if (root.has_child("timeseries")) c.series = read_time_series(root.group("timeseries"), where);
   if (root.has_child("snapshots"))
     c.snapshots = read_snapshots(root.group("snapshots"), c.particles.size(), where);

@@ -1,6 +1,9 @@
 #include "micro/io/h5_groups.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
 
 #include "common/errors.h"
 
@@ -30,6 +33,23 @@ std::vector<double> flatten(const std::vector<Eigen::Matrix3d>& m) {
   return flat;
 }
 
+// "/shear/timeseries/strain": the path of the child `name` of `g`, for messages.
+std::string child_path(const H5Group& g, const std::string& name) {
+  const std::string base = g.path();
+  return (base == "/" ? "" : base) + "/" + name;
+}
+
+// An N x 3 dataset of finite numbers as N vectors.
+std::vector<Vec3> read_vectors(const H5Group& g, const std::string& name,
+                               const std::string& where) {
+  const std::vector<std::size_t> dims = g.dims(name);
+  if (dims.size() != 2 || dims[1] != 3) {
+    throw InputError(fmt::format("'{}': dataset '{}' has shape {}; allowed: N x 3", where,
+                                 child_path(g, name), fmt::join(dims, " x ")));
+  }
+  return unflatten(read_finite(g, name, where));
+}
+
 }  // namespace
 
 void write_configuration(H5Group&& g, const Particles& p, const LeesEdwardsBox& box) {
@@ -40,6 +60,61 @@ void write_configuration(H5Group&& g, const Particles& p, const LeesEdwardsBox& 
           {"gamma_dot R", "non-affine velocity u - gamma_dot y e_x (zero for a packing)"});
   g.write_scalar("side", box.side(), {"R", "side L of the cubic cell"});
   g.write_scalar("strain", box.strain(), {"1", "accumulated Lees-Edwards strain"});
+}
+
+double finite(double value, const std::string& where, const std::string& name) {
+  if (!std::isfinite(value))
+    throw InputError(fmt::format("'{}': {} holds {}; allowed: finite numbers", where, name, value));
+  return value;
+}
+
+std::size_t count(double value, const std::string& where, const std::string& name) {
+  constexpr double kLargest = 9007199254740992.0;  // 2^53: doubles hold every count up to it
+  if (!(value >= 0 && value <= kLargest && value == std::floor(value))) {
+    throw InputError(
+        fmt::format("'{}': {} = {}; allowed: a whole number in 0 ... 2^53", where, name, value));
+  }
+  return static_cast<std::size_t>(value);
+}
+
+std::vector<double> read_finite(const H5Group& g, const std::string& name,
+                                const std::string& where) {
+  std::vector<double> values = g.read_array(name).data;
+  const std::string label = fmt::format("dataset '{}'", child_path(g, name));
+  for (const double v : values) finite(v, where, label);
+  return values;
+}
+
+StoredConfiguration read_configuration(const H5Group& g, const std::string& where) {
+  std::vector<Vec3> position = read_vectors(g, "position", where);
+  std::vector<double> radius = read_finite(g, "radius", where);
+  std::vector<Vec3> velocity = read_vectors(g, "velocity", where);
+  if (radius.size() != position.size() || velocity.size() != position.size()) {
+    throw InputError(
+        fmt::format("'{}': {} positions, {} radii and {} velocities in '{}'; allowed: "
+                    "as many of each",
+                    where, position.size(), radius.size(), velocity.size(), g.path()));
+  }
+  for (const double r : radius) {
+    if (!(r > 0))
+      throw InputError(fmt::format("'{}': a radius in '{}' is {}; allowed: > 0", where,
+                                   child_path(g, "radius"), r));
+  }
+  const double side = g.read_scalar("side");
+  if (!(side > 0 && std::isfinite(side))) {
+    throw InputError(
+        fmt::format("'{}': {} = {}; allowed: finite and > 0", where, child_path(g, "side"), side));
+  }
+  // LeesEdwardsBox keeps the whole strain as a 64-bit integer; no run comes near 1e12.
+  const double strain = g.read_scalar("strain");
+  if (!(std::abs(strain) <= 1e12)) {
+    throw InputError(fmt::format("'{}': {} = {}; allowed: |strain| <= 1e12", where,
+                                 child_path(g, "strain"), strain));
+  }
+  StoredConfiguration c{Particles(std::move(position), std::move(radius)), LeesEdwardsBox(side)};
+  c.particles.velocity = std::move(velocity);
+  c.box.set_strain(strain);
+  return c;
 }
 
 void write_time_series(H5Group&& ts, const TimeSeries& t) {
@@ -57,12 +132,12 @@ void write_time_series(H5Group&& ts, const TimeSeries& t) {
 
 TimeSeries read_time_series(const H5Group& ts, const std::string& where) {
   TimeSeries t;
-  t.strain = ts.read_array("strain").data;
-  t.coordination = ts.read_array("coordination").data;
-  t.layering = ts.read_array("layering").data;
-  t.step = ts.read_array("step").data;
+  t.strain = read_finite(ts, "strain", where);
+  t.coordination = read_finite(ts, "coordination", where);
+  t.layering = read_finite(ts, "layering", where);
+  t.step = read_finite(ts, "step", where);
   const auto tensors = [&](const char* name) {
-    const H5Array a = ts.read_array(name);
+    const H5Array a{read_finite(ts, name, where), ts.dims(name)};
     if (a.dims.size() != 3 || a.dims[0] != t.strain.size() || a.dims[1] != 3 || a.dims[2] != 3) {
       throw InputError(fmt::format("'{}': dataset '{}' must have shape n x 3 x 3", where, name));
     }
@@ -93,8 +168,8 @@ void write_snapshots(H5Group&& g, const std::vector<Snapshot>& snapshots) {
 }
 
 std::vector<Snapshot> read_snapshots(const H5Group& g, std::size_t n, const std::string& where) {
-  const std::vector<double> strain = g.read_array("strain").data;
-  const H5Array position = g.read_array("position");
+  const std::vector<double> strain = read_finite(g, "strain", where);
+  const H5Array position{read_finite(g, "position", where), g.dims("position")};
   if (position.dims.size() != 2 || position.dims[0] != strain.size() || position.dims[1] != 3 * n) {
     throw InputError(fmt::format("'{}': snapshot positions must have shape {} x {}", where,
                                  strain.size(), 3 * n));

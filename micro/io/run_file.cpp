@@ -125,16 +125,6 @@ std::string now_iso8601() {
   return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(now));
 }
 
-std::vector<Vec3> unflatten(const H5Array& a, const std::string& what) {
-  if (a.dims.size() != 2 || a.dims[1] != 3) {
-    throw InputError(fmt::format("dataset '{}' must have shape N x 3", what));
-  }
-  std::vector<Vec3> v(a.dims[0]);
-  for (std::size_t i = 0; i < v.size(); ++i)
-    v[i] = Vec3(a.data[3 * i], a.data[3 * i + 1], a.data[3 * i + 2]);
-  return v;
-}
-
 }  // namespace
 
 void write_run_file(const std::filesystem::path& path, const RunRecord& record) {
@@ -182,35 +172,34 @@ StoredPacking read_packing(const std::filesystem::path& path) {
                                  kFormatVersion));
   }
   const H5Group p = root.group("packing");
-  const H5Group c = p.group("configuration");
+  const std::string where = path.string();
+  StoredConfiguration configuration = read_configuration(p.group("configuration"), where);
   StoredPacking s;
-  std::vector<double> radius = c.read_array("radius").data;
-  std::vector<Vec3> position =
-      unflatten(c.read_array("position"), "/packing/configuration/position");
-  if (radius.size() != position.size()) {
-    throw InputError(fmt::format("'{}': {} positions but {} radii", path.string(), position.size(),
-                                 radius.size()));
-  }
-  s.particles = Particles(std::move(position), std::move(radius));
-  s.box = LeesEdwardsBox(c.read_scalar("side"));
-  s.box.set_strain(c.read_scalar("strain"));
+  s.particles = std::move(configuration.particles);
+  s.box = configuration.box;
+  const auto number = [&](const char* name) {
+    return finite(p.read_scalar(name), where, fmt::format("dataset '/packing/{}'", name));
+  };
+  const auto whole = [&](const char* name) {
+    return count(p.read_scalar(name), where, fmt::format("dataset '/packing/{}'", name));
+  };
   PackingReport& r = s.report;
   r.particles = s.particles.size();
-  r.volume_fraction = p.read_scalar("volume_fraction");
-  r.side = p.read_scalar("side");
-  r.coordination = p.read_scalar("coordination");
-  r.coordination_nonrattler = p.read_scalar("coordination_nonrattler");
-  r.rattlers = static_cast<std::size_t>(p.read_scalar("rattlers"));
-  r.mean_deformation = p.read_scalar("mean_deformation");
-  r.max_deformation = p.read_scalar("max_deformation");
-  r.pressure = p.read_scalar("pressure");
-  r.energy_per_particle = p.read_scalar("energy_per_particle");
-  r.residual = p.read_scalar("residual");
-  r.iterations = static_cast<std::size_t>(p.read_scalar("iterations"));
-  r.converged = p.read_scalar("converged") != 0.0;
-  s.modulus.modulus = p.read_scalar("shear_modulus");
-  s.modulus.affine_modulus = p.read_scalar("affine_shear_modulus");
-  s.modulus.solver_error = p.read_scalar("shear_modulus_solver_error");
+  r.volume_fraction = number("volume_fraction");
+  r.side = number("side");
+  r.coordination = number("coordination");
+  r.coordination_nonrattler = number("coordination_nonrattler");
+  r.rattlers = whole("rattlers");
+  r.mean_deformation = number("mean_deformation");
+  r.max_deformation = number("max_deformation");
+  r.pressure = number("pressure");
+  r.energy_per_particle = number("energy_per_particle");
+  r.residual = number("residual");
+  r.iterations = whole("iterations");
+  r.converged = number("converged") != 0.0;
+  s.modulus.modulus = number("shear_modulus");
+  s.modulus.affine_modulus = number("affine_shear_modulus");
+  s.modulus.solver_error = number("shear_modulus_solver_error");
   return s;
 }
 
@@ -231,29 +220,55 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
   const H5Group summary = shear.group("summary");
   StoredRunSummary s;
   s.file = path;
-  s.gamma_tilde = shear.read_scalar("gamma_tilde");
-  s.volume_fraction = packing.read_scalar("volume_fraction");
-  s.shear_modulus = packing.read_scalar("shear_modulus");
-  s.particles = static_cast<std::size_t>(packing.read_scalar("particles"));
+  const std::string where = path.string();
+  // Every number goes into the flow-curve tables, which refuse NaN and inf.
+  const auto positive = [&](const H5Group& g, const char* name) {
+    const double v = g.read_scalar(name);
+    if (!(v > 0 && std::isfinite(v))) {
+      throw InputError(fmt::format("'{}': dataset '{}/{}' = {}; allowed: finite and > 0", where,
+                                   g.path(), name, v));
+    }
+    return v;
+  };
+  const auto attribute = [&](const H5Group& g, const char* name) {
+    return finite(g.attribute_double(name), where,
+                  fmt::format("attribute '{}' of '{}'", name, g.path()));
+  };
+  s.gamma_tilde = positive(shear, "gamma_tilde");
+  s.volume_fraction = positive(packing, "volume_fraction");
+  s.shear_modulus = positive(packing, "shear_modulus");
+  s.particles = count(packing.read_scalar("particles"), where, "dataset '/packing/particles'");
   s.converged = summary.attribute_int("converged") != 0;
-  s.averaged_strain = summary.attribute_double("averaged_strain");
-  s.coordination = summary.attribute_double("coordination");
-  s.layering = summary.attribute_double("layering");
+  s.averaged_strain = attribute(summary, "averaged_strain");
+  s.coordination = attribute(summary, "coordination");
+  s.layering = attribute(summary, "layering");
   for (const auto& name : shear_observable_names()) {
     const H5Group q = summary.group(name);
     MeanEstimate e;
-    e.mean = q.attribute_double("mean");
-    e.standard_error = q.attribute_double("standard_error");
-    e.samples = static_cast<std::size_t>(q.attribute_int("samples"));
-    e.block_size = static_cast<std::size_t>(q.attribute_int("block_size"));
+    e.mean = attribute(q, "mean");
+    e.standard_error = attribute(q, "standard_error");
+    if (e.standard_error < 0) {
+      throw InputError(fmt::format("'{}': attribute 'standard_error' of '{}' = {}; allowed: >= 0",
+                                   where, q.path(), e.standard_error));
+    }
+    e.samples = count(static_cast<double>(q.attribute_int("samples")), where,
+                      "attribute 'samples' of '" + q.path() + "'");
+    e.block_size = count(static_cast<double>(q.attribute_int("block_size")), where,
+                         "attribute 'block_size' of '" + q.path() + "'");
     e.reliable = q.attribute_int("reliable") != 0;
     s.observables.push_back({name, e});
   }
   if (root.has_child("structure")) {
     const H5Group structure = root.group("structure");
     const auto estimate = [&](const char* name) {
-      const H5Array a = structure.read_array(name);
-      return Estimate{a.data.at(0), a.data.at(1)};
+      const std::vector<double> a = read_finite(structure, name, where);
+      if (a.size() != 2) {
+        throw InputError(
+            fmt::format("'{}': dataset '/structure/{}' holds {} values; allowed: 2 "
+                        "(value, standard error)",
+                        where, name, a.size()));
+      }
+      return Estimate{a[0], a[1]};
     };
     s.r_m = estimate("r_m");
     s.f_m = estimate("f_m");
@@ -274,16 +289,21 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
                                  path.string()));
   }
   const H5Group shear = root.group("shear");
+  const std::string where = path.string();
   StoredSnapshots s;
   s.contact_law.name = shear.attribute_string("contact_law");
   if (shear.has_child("contact_law_table")) s.contact_law.table_text = shear.read_string("contact_law_table");
-  const H5Group configuration = shear.group("configuration");
-  s.radius = configuration.read_array("radius").data;
-  s.side = configuration.read_scalar("side");
-  const double first = shear.group("timeseries").read_array("strain").data.front();
-  const double stationary_from = first + shear.group("summary").attribute_double("transient_strain");
+  const StoredConfiguration configuration = read_configuration(shear.group("configuration"), where);
+  s.radius = configuration.particles.radius;
+  s.side = configuration.box.side();
+  const std::vector<double> strain = read_finite(shear.group("timeseries"), "strain", where);
+  if (strain.empty())
+    throw InputError(fmt::format("'{}': dataset '/shear/timeseries/strain' is empty", where));
+  const double transient = finite(shear.group("summary").attribute_double("transient_strain"),
+                                  where, "attribute 'transient_strain' of '/shear/summary'");
+  const double stationary_from = strain.front() + transient;
 
-  for (Snapshot& snap : read_snapshots(shear.group("snapshots"), s.radius.size(), path.string()))
+  for (Snapshot& snap : read_snapshots(shear.group("snapshots"), s.radius.size(), where))
     if (snap.strain >= stationary_from - 1e-9) s.snapshots.push_back(std::move(snap));
   return s;
 }

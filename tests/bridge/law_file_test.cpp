@@ -106,6 +106,17 @@ TEST(LawFile, RefusesMalformedFilesNamingTheEntry) {
   expect_contains(refusal(replaced("(set volume fractions +=) 0.7,", "$1 0.95,")), {"increase"});
   expect_contains(refusal(replaced("(set k +=) [^\n]*", "$1 eighty")), {"k"});
   expect_contains(refusal(replaced("  subsection sigma\n[^]*?  end\n", "")), {"sigma"});
+  // Required entries set to nothing (found by reading the reader for the fuzz
+  // tests: the empty mean exponent was read from a disengaged optional).
+  expect_contains(
+      refusal(
+          replaced("(set mean exponent +=)[^\n]*\n( *set mean exponent error +=)[^\n]*", "$1\n$2")),
+      {"'universal/mean exponent' and 'universal/mean exponent error' must hold one "
+       "value each (they hold 0 and 0)"});
+  expect_contains(refusal(replaced("(set k +=)[^\n]*\n( *set k error +=)[^\n]*", "$1\n$2")),
+                  {"'universal/k' and 'universal/k error'"});
+  expect_contains(refusal(replaced("(set k error +=)[^\n]*", "$1 -1")),
+                  {"'universal/k'", "non-negative error"});
   EXPECT_THROW(read_law_file(dir / "no_such.prm"), InputError);
 }
 
