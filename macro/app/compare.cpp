@@ -107,11 +107,7 @@ std::size_t column_index(const std::vector<Column>& columns, const std::string& 
 int compare(const CompareOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
-  declare_scene_file(prm);
-  parse_scene_file(prm, o.scene_file);
-  override_preset(prm, o.preset);
-  const Material material = read_scene_material(prm, o.material);
-  const fe::SolverSettings settings = fe::read_solver_settings(prm);
+  const auto [material, settings] = read_scene_input(prm, o.scene_file, o.preset, o.material);
   const std::string scene_name = prm.get("scene");
   std::unique_ptr<Scene> scene = make_scene(prm, material, settings, o.scene_file.parent_path());
   const InstrumentConstants constants = instrument_constants(*scene, scene_name, o);

@@ -29,11 +29,8 @@ std::string header(const Column& c) {
 int run(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
-  declare_scene_file(prm);
-  parse_scene_file(prm, options.scene_file);
-  override_preset(prm, options.preset);
-  const Material material = read_scene_material(prm, options.material);
-  const fe::SolverSettings settings = fe::read_solver_settings(prm);
+  const auto [material, settings] =
+      read_scene_input(prm, options.scene_file, options.preset, options.material);
   const std::vector<double> points = read_sweep(prm);
   prm.enter_subsection("output");
   const std::string vtu = prm.get("vtu");

@@ -82,6 +82,10 @@ void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path
   parse_scene_text(prm, expand_includes(file), file.string());
 }
 
+namespace {
+
+// The scene's material, or the fragment file `override` when it is not empty
+// (`prm` then states it instead, for the summary's parameter listing).
 Material read_scene_material(dealii::ParameterHandler& prm,
                              const std::filesystem::path& override) {
   if (override.empty()) return read_material(prm);
@@ -90,6 +94,7 @@ Material read_scene_material(dealii::ParameterHandler& prm,
   return material;
 }
 
+// Sets `solver/preset` unless `preset` is empty (the command line's --preset).
 void override_preset(dealii::ParameterHandler& prm, const std::string& preset) {
   if (preset.empty()) return;
   prm.enter_subsection("solver");
@@ -100,6 +105,18 @@ void override_preset(dealii::ParameterHandler& prm, const std::string& preset) {
         fmt::format("--preset {} is unknown; allowed: fast, standard, accurate", preset));
   }
   prm.leave_subsection();
+}
+
+}  // namespace
+
+SceneInput read_scene_input(dealii::ParameterHandler& prm, const std::filesystem::path& file,
+                            const std::string& preset, const std::filesystem::path& material) {
+  declare_scene_file(prm);
+  parse_scene_file(prm, file);
+  override_preset(prm, preset);
+  SceneInput input{.material = read_scene_material(prm, material), .settings = {}};
+  input.settings = fe::read_solver_settings(prm);
+  return input;
 }
 
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
 
 namespace softglass::macro::app {
@@ -29,14 +30,15 @@ void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path
 void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
                       const std::string& source);
 
-/// The scene's material, or the fragment file `override` when it is not empty
-/// (a command line's --material; `prm` then states it instead).
-Material read_scene_material(dealii::ParameterHandler& prm,
-                             const std::filesystem::path& override);
-
-/// Sets `solver/preset` to `preset` unless it is empty (the command line's
-/// --preset); InputError naming the allowed presets otherwise.
-void override_preset(dealii::ParameterHandler& prm, const std::string& preset);
+/// What every command takes from a scene file: declares and parses it into
+/// `prm` with the command line's overrides (`preset`, a `material` fragment;
+/// empty: none), and reads the material and the solver settings.
+struct SceneInput {
+  Material material;
+  fe::SolverSettings settings;
+};
+SceneInput read_scene_input(dealii::ParameterHandler& prm, const std::filesystem::path& file,
+                            const std::string& preset, const std::filesystem::path& material);
 
 /// The operating points of `subsection sweep`, validated (> 0, finite).
 std::vector<double> read_sweep(dealii::ParameterHandler& prm);

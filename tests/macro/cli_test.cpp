@@ -15,16 +15,10 @@ namespace fs = std::filesystem;
 class MacroCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("macro_cli_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
     write("material.prm",
           "subsection material\n set model = herschel-bulkley\n set yield stress = 10\n"
           " set consistency = 5\n set flow index = 0.5\nend\n");
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   void write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name) << text;
@@ -47,7 +41,9 @@ class MacroCli : public ::testing::Test {
            extra + "end\nsubsection sweep\n set values = 0.1, 1\nend\n";
   }
 
-  fs::path dir_;
+  // Unique per process: concurrent suites (another build's ctest) never share it.
+  softglass::testing::TemporaryDirectory temporary_;
+  const fs::path& dir_ = temporary_.path();
   std::string error_;
 };
 
