@@ -95,6 +95,9 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
     const MaterialValue e_star =
         contact_modulus_from_plateau(law, o.phi, *o.plateau_modulus, o.extrapolate);
     request.modulus = e_star.value;
+    fmt::print("E*       {:.6g} Pa ± {:.2g} % = G' / (G0/E*)(phi): every stress below carries this "
+               "error too\n",
+               e_star.value, 100.0 * e_star.error() / e_star.value);
     lines.push_back(fmt::format(
         "E* = G' / (G0/E*)(phi) = {:.6g} Pa / {:.6g} = {:.6g} Pa +- {:.2g} % (the law's G0/E* at "
         "phi; every stress below scales with E*, so this error adds to theirs)",

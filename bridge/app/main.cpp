@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bridge/app/commands.h"
+#include "common/command_line.h"
 #include "common/errors.h"
 #include "common/version.h"
 
@@ -43,7 +44,6 @@ int main(int argc, char** argv) {
   int threads = 0;
   app.add_option("--threads", threads, "OpenMP threads for the bootstrap (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  const auto positive = CLI::PositiveNumber;
 
   FitOptions fit;
   CLI::App* fit_cmd = app.add_subcommand(
@@ -170,8 +170,7 @@ int main(int argc, char** argv) {
           "material: give --modulus, --plateau-modulus, or --interfacial-tension and --radius");
     }
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return report_command_line_error("bridge", app, e);
   }
   if (threads > 0) omp_set_num_threads(threads);
 

@@ -35,10 +35,14 @@ std::string list_of(const std::map<std::string, double>& units) {
   return s;
 }
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
-    s.replace(at, from.size(), to);
-  return s;
+std::string replace_all(const std::string& s, const std::string& from, const std::string& to) {
+  std::string out;
+  std::size_t start = 0;
+  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, start)) {
+    out.append(s, start, at - start).append(to);
+    start = at + from.size();
+  }
+  return out.append(s, start, std::string::npos);
 }
 
 // "µN m", "µN·m", "µNm" → "µN.m"; other units lose their spaces only.
@@ -46,7 +50,7 @@ std::string compact_unit(const std::string& unit) {
   std::string c = unit;
   std::erase(c, ' ');
   c = replace_all(replace_all(c, "·", "."), "*", ".");
-  if (c.ends_with("Nm")) c.insert(c.size() - 1, ".");
+  if (c.ends_with("Nm")) c = c.substr(0, c.size() - 1) + ".m";
   return c;
 }
 

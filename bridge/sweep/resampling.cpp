@@ -168,7 +168,8 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
         throw InputError(fmt::format(
             "{}: {} run(s) at phi = {}, gamma~ = {} where the flow-curve table (line {}) "
             "averages {} packings; the packing bootstrap needs the runs of every state point, "
-            "at least 2",
+            "at least 2 (with one packing per state point leave out --packings: the errors then "
+            "come from the table's standard errors)",
             source, k, g.phi, g.curves[index(Quantity::sigma)]->x[i], g.lines[i], g.packings[i]));
       }
       for (Quantity q : kAllQuantities) {

@@ -205,7 +205,8 @@ int compare(const CompareOptions& o) {
   if (!csv) throw NumericalError(fmt::format("cannot write {}", csv_file.final_path().string()));
 
   io::OverlayPlot plot{
-      .title = fmt::format("{} ({}) vs {}", o.data_file.filename().string(), curve.label,
+      .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
+                           curve.label == o.data_file.stem().string() ? "" : ", " + curve.label,
                            o.scene_file.filename().string()),
       .abscissa = "angular velocity {/Symbol W} [rad/s]",
       .x = measured.angular_velocity,

@@ -14,6 +14,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.h"
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/compare.h"
@@ -86,8 +87,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    const int code = app.exit(error);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return report_command_line_error("macro", app, error);
   }
   return run_reporting_errors("macro", [&] {
     if (app.got_subcommand("template")) {

@@ -40,13 +40,13 @@ int run(const RunOptions& options) {
       options.output.empty()
           ? std::filesystem::path(options.scene_file.stem().string() + "_results")
           : options.output;
-  // Every rank parses and validates the input, so bad input stops all of them
-  // alike; rank 0 alone claims the output and writes the tables.
-  ClaimedOutputs claimed = claim_outputs(directory, {"results.csv", "summary.txt"}, options.force);
-  if (claimed.refused) return kExitOutputExists;
-
+  // Every rank parses and validates the input (building the scene checks its
+  // entries), so bad input stops all of them alike and leaves no folder
+  // behind; rank 0 alone then claims the output and writes the tables.
   std::unique_ptr<Scene> scene =
       make_scene(prm, material, settings, options.scene_file.parent_path());
+  ClaimedOutputs claimed = claim_outputs(directory, {"results.csv", "summary.txt"}, options.force);
+  if (claimed.refused) return kExitOutputExists;
   const Column drive = scene->drive();
   const std::vector<Column> columns = scene->columns();
   const auto rows = solve_operating_points(

@@ -23,24 +23,45 @@ namespace {
 // Includes nest at most this deep (a file including itself is an error).
 constexpr int kMaxIncludeDepth = 8;
 
-std::string expand(const std::filesystem::path& file, int depth) {
+// The text with its includes expanded, and where each of its lines came from
+// (file and line), so that messages about the expanded text name the line the
+// user wrote.
+struct ExpandedText {
+  std::string text;
+  std::vector<std::pair<std::string, std::size_t>> origin;
+};
+
+void expand(const std::filesystem::path& file, int depth, ExpandedText& out) {
   require(depth <= kMaxIncludeDepth,
           fmt::format("include nesting deeper than {} at '{}'", kMaxIncludeDepth, file.string()));
   std::ifstream in(file);
   require(in.good(), fmt::format("scene file '{}' cannot be read", file.string()));
   static const std::regex include_line(R"(^\s*include\s+(\S+)\s*$)", std::regex::icase);
-  std::string text, line;
-  while (std::getline(in, line)) {
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
     std::smatch match;
     if (std::regex_match(line, match, include_line)) {
       std::filesystem::path included = match[1].str();
       if (included.is_relative()) included = file.parent_path() / included;
-      text += expand(included, depth + 1);
+      expand(included, depth + 1, out);
     } else {
-      text += line + "\n";
+      out.text += line + "\n";
+      out.origin.emplace_back(file.string(), number);
     }
   }
-  return text;
+}
+
+// deal.II's "Line <N> of file <F>" (N counted in the expanded text) → the
+// file and line the user wrote.
+std::string locate(const std::string& message, const ExpandedText& expanded) {
+  static const std::regex place(R"(Line <(\d+)> of file <[^>]*>)");
+  std::smatch match;
+  if (!std::regex_search(message, match, place)) return message;
+  const std::size_t line = std::stoul(match[1].str());
+  if (line == 0 || line > expanded.origin.size()) return message;
+  const auto& [file, number] = expanded.origin[line - 1];
+  return match.prefix().str() + fmt::format("line {} of file '{}'", number, file) +
+         match.suffix().str();
 }
 
 }  // namespace
@@ -64,10 +85,6 @@ void declare_scene_file(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-std::string expand_includes(const std::filesystem::path& file) {
-  return expand(file, 0);
-}
-
 void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
                       const std::string& source) {
   std::istringstream input(text);
@@ -79,7 +96,13 @@ void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
 }
 
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
-  parse_scene_text(prm, expand_includes(file), file.string());
+  ExpandedText expanded;
+  expand(file, 0, expanded);
+  try {
+    parse_scene_text(prm, expanded.text, file.string());
+  } catch (const InputError& error) {
+    throw InputError(locate(error.what(), expanded));
+  }
 }
 
 namespace {

@@ -17,13 +17,10 @@ namespace softglass::macro::app {
 /// Declares every entry a scene file may hold.
 void declare_scene_file(dealii::ParameterHandler& prm);
 
-/// The file's text with each `include FILE` line replaced by that file's text,
-/// FILE taken relative to the including file. InputError if a file is missing.
-std::string expand_includes(const std::filesystem::path& file);
-
-/// Parses the scene file into `prm`; unknown entries, values that do not match
-/// their pattern (e.g. a unit written after a number) → InputError naming the
-/// line and entry.
+/// Parses the scene file into `prm`, each `include FILE` line replaced by that
+/// file's text (FILE relative to the including file); a missing file, unknown
+/// entries, values that do not match their pattern (e.g. a unit written after
+/// a number) → InputError naming the file, line and entry.
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file);
 
 /// The same for text already read (includes expanded); `source` names it.

@@ -11,12 +11,16 @@ namespace softglass::macro::io {
 
 namespace {
 
-// Single quotes delimit gnuplot strings; labels come from our own code and
-// file names, so quoting them is enough.
+// A gnuplot string: double quotes, in which \\, \" and \n are escapes (titles
+// may hold file names and line breaks).
 std::string quoted(const std::string& text) {
-  std::string q = "'";
-  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
+  std::string q = "\"";
+  for (char c : text) {
+    if (c == '\n') q += "\\n";
+    else if (c == '"' || c == '\\') q += std::string("\\") + c;
+    else q += c;
+  }
+  return q + "\"";
 }
 
 // Inline data block: x, measured, predicted, relative error of the prediction.
@@ -38,7 +42,8 @@ std::string script(const OverlayPlot& plot, const std::filesystem::path& output)
                    560 * n);
   g << "set output " << quoted(output.string()) << "\n";
   for (std::size_t p = 0; p < n; ++p) g << data_block(fmt::format("d{}", p), plot.x, plot.panels[p]);
-  g << fmt::format("set multiplot layout 2,{} title {} noenhanced\n", n, quoted(plot.title));
+  g << fmt::format("set multiplot layout 2,{} title {} noenhanced font ',10'\n", n,
+                   quoted(plot.title));
   g << "set logscale x\nset grid\nset key top left\nset format x '10^{%L}'\n";
   // Upper row: the curves on log-log axes; lower row: the relative error.
   for (std::size_t p = 0; p < n; ++p) {

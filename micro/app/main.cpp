@@ -15,6 +15,7 @@
 
 #include <cstdio>
 
+#include "common/command_line.h"
 #include "common/errors.h"
 #include "common/version.h"
 #include "micro/app/commands.h"
@@ -89,8 +90,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return report_command_line_error("micro", app, e);
   }
   if (threads > 0) omp_set_num_threads(threads);
   if (!output.empty()) options.output = output;

@@ -2,6 +2,7 @@
 // existing output (common/errors.h), and a complete run of a small scene.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -79,6 +80,21 @@ TEST_F(MacroCli, NumbersNoDoubleHoldsAreBadInput) {
   sweep.replace(sweep.find("0.1, 1"), 6, "0.1, 4.9e-324");
   EXPECT_EQ(run(sweep), 2);
   EXPECT_NE(error_.find("sweep: values"), std::string::npos) << error_;
+}
+
+// Messages name the line the user wrote, not the line of the text with its
+// includes expanded; a refused run creates no output folder; command-line
+// mistakes are reported like every other error.
+TEST_F(MacroCli, ErrorsNameTheUsersLineAndLeaveNothingBehind) {
+  EXPECT_EQ(run("set scene = couette\ninclude material.prm\nsubsection couette\n"
+                " set inner radios = 0.02\nend\n"),
+            2);
+  EXPECT_NE(error_.find("line 4 of file 'scene.prm'"), std::string::npos) << error_;
+  EXPECT_EQ(run(couette(" set length = -1\n")), 2);
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "a refused run creates nothing";
+  EXPECT_EQ(run(couette(""), "--no-such-option"), 2);
+  EXPECT_EQ(error_.rfind("macro: error: ", 0), 0u) << error_;
+  EXPECT_EQ(std::count(error_.begin(), error_.end(), '\n'), 1) << "one line: " << error_;
 }
 
 TEST_F(MacroCli, UnitsAfterNumbersAreRejected) {
