@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "tests/common/command_line.h"
@@ -124,6 +125,49 @@ TEST_F(MacroCli, UnreadableMeshIsNamed) {
 TEST_F(MacroCli, MissingIncludeIsNamed) {
   EXPECT_EQ(run("set scene = couette\ninclude nowhere.prm\n"), 2);
   EXPECT_NE(error_.find("nowhere.prm"), std::string::npos) << error_;
+}
+
+// `mpirun -n 2 macro run` splits the operating points over the ranks; the
+// table must be the serial one. The runs differ only in the warm start of the
+// second rank's first point, and Newton stops when its update is below 1e-10
+// of max |u| (solver_settings.h): torques agree to 1e-9 relative, and the
+// error estimates — differences of nearby solutions, so more sensitive — to
+// 1e-6. Skipped without mpirun.
+TEST_F(MacroCli, TwoRanksGiveTheSerialTable) {
+  const char* mpirun = "/usr/bin/mpirun";
+  if (!fs::exists(mpirun)) GTEST_SKIP() << "no " << mpirun;
+  // OpenMPI refuses root unless told (CI containers run as root).
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  std::string scene = couette("");
+  scene.replace(scene.find("0.1, 1"), 6, "0.1, 0.3, 1, 3");
+  ASSERT_EQ(run(scene), 0) << error_;
+  const auto parallel = softglass::testing::run_tool(
+      mpirun,
+      "-n 2 --oversubscribe '" + std::string(MACRO_EXECUTABLE) + "' run scene.prm -o out2 -q",
+      dir_, dir_ / "capture2");
+  ASSERT_EQ(parallel.code, 0) << parallel.err;
+  // Rotation rate, torque and its two error estimates of every point.
+  const auto table = [&](const std::string& folder) {
+    std::ifstream csv(dir_ / folder / "results.csv");
+    std::vector<std::vector<double>> rows;
+    for (std::string line; std::getline(csv, line);) {
+      if (line.empty() || line[0] == '#' || line[0] == 'r') continue;  // comments, header
+      std::istringstream cells(line);
+      std::vector<double>& row = rows.emplace_back();
+      for (std::string cell; row.size() < 4 && std::getline(cells, cell, ',');)
+        row.push_back(std::stod(cell));
+    }
+    return rows;
+  };
+  const auto serial = table("out"), split = table("out2");
+  ASSERT_EQ(serial.size(), 4u);
+  ASSERT_EQ(split.size(), serial.size());
+  for (std::size_t k = 0; k < serial.size(); ++k) {
+    EXPECT_EQ(split[k][0], serial[k][0]);
+    EXPECT_NEAR(split[k][1], serial[k][1], 1e-9 * serial[k][1]) << k;
+    for (int c : {2, 3}) EXPECT_NEAR(split[k][c], serial[k][c], 1e-6 * std::abs(serial[k][c])) << k;
+  }
 }
 
 }  // namespace
