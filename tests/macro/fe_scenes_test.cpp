@@ -8,6 +8,7 @@
 #include <string>
 
 #include "fe_test_support.h"
+#include "macro/exact/parallel_plates.h"
 
 namespace softglass::macro::testing {
 namespace {
@@ -95,6 +96,32 @@ TEST(FeParallelPlates, MatchesTheClosedForm) {
         {0.1, 10.0});
     for (const auto& row : rows)
       EXPECT_LT(std::abs(row[kDeviation]), kRequired) << l.tau_y << " " << l.n;
+  }
+}
+
+// The normal force of torsional flow, F = π ∫ (N1 − N2)(Ωr/h) r dr, against its
+// closed form (exact/parallel_plates.h) with yield values, N2 of the opposite
+// sign and unequal exponents, at two speeds. ω = Ωz/h lies in the finite-element
+// space, so only the quadrature of the power laws over the plate is left
+// (measured: 6e-9).
+TEST(FeParallelPlates, NormalForceMatchesTheClosedForm) {
+  const NormalStressLaw n1{.yield = 2.0, .consistency = 3.0, .flow_index = 0.6};
+  const NormalStressLaw n2{.yield = -1.0, .consistency = -1.5, .flow_index = 0.5};
+  const exact::ParallelPlates plates{.radius = 0.02, .gap = 0.001};
+  const auto rows = run_scene(
+      "set scene = parallel-plates\nsubsection parallel-plates\n set radius = 0.02\n set gap = "
+      "0.001\nend\n" +
+          material(10.0, 5.0, 0.5).replace(
+              material(10.0, 5.0, 0.5).find("end\n"), 4,
+              " set N1 yield = 2\n set N1 consistency = 3\n set N1 flow index = 0.6\n"
+              " set N2 yield = -1\n set N2 consistency = -1.5\n set N2 flow index = 0.5\nend\n"),
+      {0.1, 10.0});
+  constexpr int kNormalForce = kDeviation + 1;  // after the ideal geometry's columns
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const double omega = k == 0 ? 0.1 : 10.0;
+    EXPECT_LT(std::abs(rows[k][kNormalForce] / exact::normal_force(n1, n2, plates, omega) - 1.0),
+              1e-6)
+        << omega;
   }
 }
 
