@@ -82,6 +82,24 @@ TEST(Material, InterpolatesBetweenVolumeFractionsInLogarithm) {
   expect_contains(m.placement, {"interpolated between", "0.75", "0.8"});
 }
 
+// E* = G'/(G0/E*)(φ): exact at a simulated φ (and the material made with it
+// has τ_y = G' γ_y whatever E*), exact between volume fractions when G0 is
+// exponential in φ (interpolated in logarithm), refused outside the range.
+TEST(Material, ContactModulusFromAPlateauModulus) {
+  testing::SyntheticTruth t;
+  const Law law = testing::exact_law(t);
+  const MaterialValue e_star = contact_modulus_from_plateau(law, 0.80, 143.0, false);
+  EXPECT_NEAR(e_star.value, 143.0 / 0.085, 1e-9);
+  EXPECT_EQ(e_star.interpolation, 0.0);
+  const Material m = make_material(law, {0.80, e_star.value, kViscosity, false});
+  EXPECT_NEAR(m.laws[0]->yield.value, 143.0 * 0.029, 1e-9);
+  for (std::size_t j = 0; j < t.phi.size(); ++j) t.modulus[j] = 0.01 * std::exp(10 * (t.phi[j] - 0.7));
+  EXPECT_NEAR(contact_modulus_from_plateau(testing::exact_law(t), 0.78, 143.0, false).value,
+              143.0 / (0.01 * std::exp(10 * 0.08)), 1e-9);
+  EXPECT_THROW(contact_modulus_from_plateau(law, 0.95, 143.0, false), InputError);
+  EXPECT_THROW(contact_modulus_from_plateau(law, 0.80, -1.0, false), InputError);
+}
+
 TEST(Material, RefusesVolumeFractionsOutsideTheSimulatedRange) {
   const Law law = testing::exact_law({});
   try {
