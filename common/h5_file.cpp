@@ -213,10 +213,28 @@ std::vector<std::size_t> shape(const Source& source) {
   return {dims.begin(), dims.end()};
 }
 
+// Deflate expands data at most ~1032:1, so no honest dataset holds more bytes
+// than this many times its file's size (the file may also be unfiltered).
+constexpr double kMaxExpansion = 1100.0;
+
 // `count` elements of a Container for the values of `source`. A damaged file
-// can claim any size: one that cannot be allocated is refused as input.
+// can claim any size. A claim that no data in the file can back is refused
+// before allocating (an allocation that large may not throw at all: the
+// address sanitizer aborts, and Linux may grant it and then kill the process
+// when it is filled); one that still cannot be allocated is refused too.
 template <class Container>
 Container allocate(std::size_t count, const Source& source) {
+  const auto file = own<InputError>(H5Iget_file_id(source.id.get()),
+                                    "cannot find the file of " + source.label);
+  hsize_t file_size = 0;
+  check<InputError>(H5Fget_filesize(file.get(), &file_size),
+                    "cannot read the size of the file of " + source.label);
+  const double element = double(H5Tget_size(source.type().get()));
+  if (double(count) * element > kMaxExpansion * double(file_size) + 1e6) {
+    throw InputError(source.label + " claims " + std::to_string(count) +
+                     " values, more than its file of " + std::to_string(file_size) +
+                     " bytes can hold");
+  }
   try {
     return Container(count, typename Container::value_type{});
   } catch (const std::bad_alloc&) {
