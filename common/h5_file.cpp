@@ -224,16 +224,20 @@ constexpr double kMaxExpansion = 1100.0;
 // when it is filled); one that still cannot be allocated is refused too.
 template <class Container>
 Container allocate(std::size_t count, const Source& source) {
-  const auto file = own<InputError>(H5Iget_file_id(source.id.get()),
-                                    "cannot find the file of " + source.label);
-  hsize_t file_size = 0;
-  check<InputError>(H5Fget_filesize(file.get(), &file_size),
-                    "cannot read the size of the file of " + source.label);
-  const double element = double(H5Tget_size(source.type().get()));
-  if (double(count) * element > kMaxExpansion * double(file_size) + 1e6) {
-    throw InputError(source.label + " claims " + std::to_string(count) +
-                     " values, more than its file of " + std::to_string(file_size) +
-                     " bytes can hold");
+  // Claims under a megabyte are allocated as they come (most reads are
+  // attributes and short series: no extra HDF5 calls for them).
+  const double bytes = double(count) * double(H5Tget_size(source.type().get()));
+  if (bytes > 1e6) {
+    const auto file = own<InputError>(H5Iget_file_id(source.id.get()),
+                                      "cannot find the file of " + source.label);
+    hsize_t file_size = 0;
+    check<InputError>(H5Fget_filesize(file.get(), &file_size),
+                      "cannot read the size of the file of " + source.label);
+    if (bytes > kMaxExpansion * double(file_size)) {
+      throw InputError(source.label + " claims " + std::to_string(count) +
+                       " values, more than its file of " + std::to_string(file_size) +
+                       " bytes can hold");
+    }
   }
   try {
     return Container(count, typename Container::value_type{});

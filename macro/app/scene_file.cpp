@@ -137,9 +137,9 @@ SceneInput read_scene_input(dealii::ParameterHandler& prm, const std::filesystem
   declare_scene_file(prm);
   parse_scene_file(prm, file);
   override_preset(prm, preset);
-  SceneInput input{.material = read_scene_material(prm, material), .settings = {}};
-  input.settings = fe::read_solver_settings(prm);
-  return input;
+  // Braced initialisers run in order: the material is read first.
+  return {.material = read_scene_material(prm, material),
+          .settings = fe::read_solver_settings(prm)};
 }
 
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {
@@ -153,16 +153,18 @@ std::vector<double> read_sweep(dealii::ParameterHandler& prm) {
     } catch (const dealii::ExceptionBase&) {
     }
     require(std::isfinite(v) && v > 0.0,
-            fmt::format("sweep: {} = {} is not allowed; allowed: a finite number > 0", what, text));
+            fmt::format("sweep: {} {}, which is not allowed; allowed: a finite number > 0", what,
+                        text));
     return v;
   };
   std::vector<double> points;
   const std::string values = prm.get("values");
   if (!values.empty()) {
     for (const std::string& item : dealii::Utilities::split_string_list(values))
-      points.push_back(number(item, "values contains an entry that"));
+      points.push_back(number(item, "values holds"));
   } else {
-    const double first = number(prm.get("first"), "first"), last = number(prm.get("last"), "last");
+    const double first = number(prm.get("first"), "first ="),
+                 last = number(prm.get("last"), "last =");
     const int n = prm.get_integer("points");
     const bool log = prm.get("spacing") == "log";
     for (int k = 0; k < n; ++k) {

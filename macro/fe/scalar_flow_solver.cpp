@@ -63,7 +63,6 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/error_estimator.h>
-#include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fmt/format.h>
 
@@ -75,6 +74,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "macro/fe/refine_and_transfer.h"
 #include "macro/material/regularised_law.h"
 
 namespace softglass::macro::fe {
@@ -603,14 +603,7 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
     if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
   }
 
-  triangulation_.prepare_coarsening_and_refinement();
-  SolutionTransfer<dim> transfer(dof_handler_);
-  transfer.prepare_for_coarsening_and_refinement(solution_);
-  triangulation_.execute_coarsening_and_refinement();
-  setup_system();
-  Vector<double> interpolated(dof_handler_.n_dofs());
-  transfer.interpolate(solution_, interpolated);
-  solution_ = interpolated;
+  refine_and_transfer(triangulation_, dof_handler_, solution_, [this] { setup_system(); });
   impose_boundary_values();
 }
 

@@ -31,7 +31,6 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/error_estimator.h>
-#include <deal.II/numerics/solution_transfer.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fmt/format.h>
 
@@ -41,6 +40,7 @@
 #include <set>
 
 #include "common/errors.h"
+#include "macro/fe/refine_and_transfer.h"
 #include "macro/material/regularised_law.h"
 
 namespace softglass::macro::fe {
@@ -94,7 +94,7 @@ class StokesFlowSolver::Implementation {
   unsigned solve_with_continuation(double target, double start);
   StokesOutputs evaluate(types::boundary_id force_id, types::boundary_id pressure_id) const;
   void refine_mesh(bool uniform);
-  void newton_after_refinement(unsigned& iterations);
+  unsigned newton_damped_on_failure(const RegularisedLaw& law);
 
   HerschelBulkley law_;
   SolverSettings settings_;
@@ -244,13 +244,7 @@ unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target
   double eps = std::max(start, target);
   while (true) {
     regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    const Vector<double> begin = solution_;
-    try {
-      iterations += solve_newton(*regularised_, false);
-    } catch (const NumericalError&) {
-      solution_ = begin;
-      iterations += settings_.max_newton_iterations + solve_newton(*regularised_, true);
-    }
+    iterations += newton_damped_on_failure(*regularised_);
     if (eps <= target * (1.0 + 1e-12)) return iterations;
     eps = std::max(eps / kContinuationFactor, target);
   }
@@ -336,24 +330,19 @@ void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
       if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
     }
   }
-  SolutionTransfer<2> transfer(dof_handler_);
-  triangulation_.prepare_coarsening_and_refinement();
-  transfer.prepare_for_coarsening_and_refinement(solution_);
-  triangulation_.execute_coarsening_and_refinement();
-  setup_system();
-  Vector<double> interpolated(dof_handler_.n_dofs());
-  transfer.interpolate(solution_, interpolated);
-  solution_ = interpolated;
+  refine_and_transfer(triangulation_, dof_handler_, solution_, [this] { setup_system(); });
   constraints_.distribute(solution_);
 }
 
-void StokesFlowSolver::Implementation::newton_after_refinement(unsigned& iterations) {
-  const Vector<double> transferred = solution_;
+// Plain Newton from the current solution; if it fails, damped Newton from the
+// same start (the failed attempt's iterations are counted as the maximum).
+unsigned StokesFlowSolver::Implementation::newton_damped_on_failure(const RegularisedLaw& law) {
+  const Vector<double> start = solution_;
   try {
-    iterations += solve_newton(*regularised_, false);
+    return solve_newton(law, false);
   } catch (const NumericalError&) {
-    solution_ = transferred;
-    iterations += settings_.max_newton_iterations + solve_newton(*regularised_, true);
+    solution_ = start;
+    return settings_.max_newton_iterations + solve_newton(law, true);
   }
 }
 
@@ -388,11 +377,11 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
   // over the last refinement.
   result.coarse = result.first_mesh;
   refine_mesh(true);
-  newton_after_refinement(result.iterations);
+  result.iterations += newton_damped_on_failure(*regularised_);
   for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
     result.coarse = evaluate(force_id, pressure_id);
     refine_mesh(false);
-    newton_after_refinement(result.iterations);
+    result.iterations += newton_damped_on_failure(*regularised_);
   }
   result.value = evaluate(force_id, pressure_id);
   result.cells = triangulation_.n_active_cells();

@@ -14,13 +14,10 @@ std::string one_line(const dealii::ExceptionBase& error) {
     std::string word;
     if (words >> word) text += (text.empty() ? "" : " ") + word;
   }
-  // Patterns in words a user reads.
-  for (const auto& [jargon, plain] :
-       {std::pair<std::string, std::string>{"[Double -MAX_DOUBLE...MAX_DOUBLE (inclusive)]",
-                                            "a number (without units)"}}) {
-    for (auto at = text.find(jargon); at != std::string::npos; at = text.find(jargon, at))
-      text.replace(at, jargon.size(), plain);
-  }
+  // The pattern of every number entry, in words a user reads.
+  const std::string jargon = "[Double -MAX_DOUBLE...MAX_DOUBLE (inclusive)]";
+  if (const auto at = text.find(jargon); at != std::string::npos)
+    text.replace(at, jargon.size(), "a number (without units)");
   return text;
 }
 

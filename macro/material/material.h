@@ -34,6 +34,8 @@ struct NormalStressLaw {
   double flow_index = 1.0;   ///< n_N [1], > 0
 
   double operator()(double rate) const;
+  /// N_y = K_N = 0: the material has no such normal stress difference.
+  bool vanishes() const { return yield == 0.0 && consistency == 0.0; }
 };
 
 struct Material {

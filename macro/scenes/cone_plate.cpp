@@ -80,7 +80,7 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
                      .boundary_values = {{3, omega}, {2, 0.0}},
                      .characteristic_rate = omega / std::tan(beta)};
   };
-  if (n1.consistency != 0.0 || n1.yield != 0.0) {
+  if (!n1.vanishes()) {
     spec.normal_force = {.id = 2, .integrand = [n1](double rate) { return 0.5 * n1(rate); }};
   }
   spec.reference = [law, cone](double omega) { return exact::torque(law, cone, omega); };

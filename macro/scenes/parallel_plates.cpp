@@ -53,8 +53,7 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Materia
   // F = π ∫ (N1 − N2)(γ̇) r dr (exact/parallel_plates.h): ½(N1 − N2) over the plate.
   const NormalStressLaw n1 = material.first_normal_stress_difference;
   const NormalStressLaw n2 = material.second_normal_stress_difference;
-  const auto nonzero = [](const NormalStressLaw& n) { return n.yield != 0.0 || n.consistency != 0.0; };
-  if (nonzero(n1) || nonzero(n2)) {
+  if (!n1.vanishes() || !n2.vanishes()) {
     spec.normal_force = {.id = 2,
                          .integrand = [n1, n2](double rate) { return 0.5 * (n1(rate) - n2(rate)); }};
   }

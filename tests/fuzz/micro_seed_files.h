@@ -7,12 +7,12 @@
 #include <filesystem>
 
 #include "micro/analysis/run_structure.h"
-#include "micro/analysis/shear_modulus.h"
 #include "micro/contact/contact_law.h"
 #include "micro/io/checkpoint_file.h"
 #include "micro/io/run_file.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
+#include "tests/micro/micro_test_support.h"
 
 namespace softglass::micro::testing {
 
@@ -30,14 +30,7 @@ inline SeedFiles write_seed_files(const std::filesystem::path& directory) {
   const std::shared_ptr<const ContactLaw> law = make_contact_law({});
   const Packing packing = make_packing(spec, law);
 
-  RunRecord record;
-  record.command = "run";
-  record.parameters = "subsection particles\n  set number = 150\nend\n";
-  record.packing = packing.report;
-  record.packing_particles = packing.particles;
-  record.packing_box = packing.box;
-  ContactSystem system(packing.particles, packing.box, law, spec.skin);
-  record.modulus = shear_modulus(system);
+  RunRecord record = packing_record(packing, law, spec.skin);
 
   ShearModel model;
   model.gamma_tilde = 1e-4;

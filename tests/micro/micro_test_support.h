@@ -26,8 +26,10 @@
 #include <utility>
 #include <vector>
 
+#include "micro/analysis/shear_modulus.h"
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/integrator.h"
+#include "micro/io/run_file.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
 #include "micro/system/lees_edwards_box.h"
@@ -65,6 +67,22 @@ inline std::shared_ptr<const ContactLaw> named_law(const std::string& name) {
   ContactLawSpec spec;
   spec.name = name;
   return make_contact_law(spec);
+}
+
+/// The run file's record of a fresh packing as `micro run` starts it: the
+/// command, a parameter text naming N, the packing and its shear modulus.
+inline RunRecord packing_record(const Packing& packing, std::shared_ptr<const ContactLaw> law,
+                                double skin) {
+  RunRecord record;
+  record.command = "run";
+  record.parameters =
+      "subsection particles\n  set number = " + std::to_string(packing.particles.size()) + "\nend\n";
+  record.packing = packing.report;
+  record.packing_particles = packing.particles;
+  record.packing_box = packing.box;
+  ContactSystem system(packing.particles, packing.box, std::move(law), skin);
+  record.modulus = shear_modulus(system);
+  return record;
 }
 
 /// Uniformly random centres and Gaussian radii (mean 1, sd `polydispersity`,

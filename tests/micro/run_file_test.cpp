@@ -5,7 +5,6 @@
 
 #include "common/errors.h"
 #include "common/h5_file.h"
-#include "micro/analysis/shear_modulus.h"
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/integrator.h"
 #include "micro/io/run_file.h"
@@ -31,17 +30,9 @@ RunRecord small_record() {
   const auto law = testing::named_law("seth2011");
   Packing packing = make_packing(spec, law);
 
-  RunRecord record;
-  record.command = "run";
-  record.parameters = "subsection particles\n  set number = 200\nend\n";
-  record.packing = packing.report;
-  record.packing_particles = packing.particles;
-  record.packing_box = packing.box;
+  RunRecord record = testing::packing_record(packing, law, spec.skin);
   // A non-zero strain with an integer part, so that its round trip is tested.
   record.packing_box.set_strain(2.375);
-
-  ContactSystem system(packing.particles, packing.box, law, spec.skin);
-  record.modulus = shear_modulus(system);
 
   testing::ShortShear run = testing::shear_briefly(packing, law, spec.skin, 0.3, 0.3);
   record.shear =
