@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libhdf5-dev hdf5-tools libboost-math-dev
   libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
   libdeal.ii-dev libopenmpi-dev openmpi-bin
+  libopenblas0-serial  # optimised BLAS for MUMPS's dense fronts (macro); single-threaded beside MPI
   gnuplot-nox python3-matplotlib python3-h5py python3-numpy
 )
 if [ "${1:-}" = bench ]; then

@@ -107,7 +107,7 @@ std::size_t column_index(const std::vector<Column>& columns, const std::string& 
 int compare(const CompareOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
-  const auto [material, settings] = read_scene_input(prm, o.scene_file, o.preset, o.material);
+  auto [material, settings] = read_scene_input(prm, o.scene_file, o.preset, o.material);
   const std::string scene_name = prm.get("scene");
   std::unique_ptr<Scene> scene = make_scene(prm, material, settings, o.scene_file.parent_path());
   const InstrumentConstants constants = instrument_constants(*scene, scene_name, o);
@@ -127,11 +127,18 @@ int compare(const CompareOptions& o) {
   ClaimedOutputs claimed =
       claim_outputs(directory, {"comparison.csv", "summary.txt", "comparison.png"}, o.force);
   if (claimed.refused) return kExitOutputExists;
+  // The number of points is known now; when ranks are to share meshes, the
+  // scene is made again on its group's ranks.
+  const RankGroups groups(measured.angular_velocity.size(), o.ranks_per_point);
+  if (groups.ranks_per_point() > 1) {
+    settings.mesh_communicator = groups.mesh_communicator();
+    scene = make_scene(prm, material, settings, o.scene_file.parent_path());
+  }
 
   // The scene at the measured angular velocities (increasing: each solve
   // warm-starts from the previous one).
   const std::vector<std::vector<double>> rows = solve_operating_points(
-      *scene, measured.angular_velocity,
+      *scene, measured.angular_velocity, groups,
       {.directory = directory,
        .vtu = "none",
        .label = fmt::format("macro compare {}", o.data_file.filename().string()),
@@ -222,8 +229,9 @@ int compare(const CompareOptions& o) {
   std::ofstream summary(summary_file.temporary_path());
   for (const std::string& line : header_lines) summary << line << "\n";
   for (const std::string& line : report) summary << line << "\n";
-  summary << fmt::format("wall time {:.2f} s on {} MPI rank(s)\n", wall,
-                         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+  summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
+                         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+                         groups.ranks_per_point());
   if (!plotted) summary << "no plot: gnuplot is not installed or failed\n";
   summary.close();
   if (!summary)

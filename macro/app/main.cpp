@@ -4,7 +4,7 @@
 //   macro compare FILE.prm DATA.csv [-o DIR] [--sample S] ...
 //                           predicted against measured torques, point by point
 //   macro template          a documented scene file with every entry and default
-//   mpirun -n N macro run|compare ...  the operating points split over N ranks
+//   mpirun -n N macro run|compare ...  operating points over N ranks (--ranks-per-point)
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
@@ -22,7 +22,8 @@
 
 int main(int argc, char** argv) {
   using namespace softglass;
-  // MPI (a no-op without mpirun): sweeps are split over the ranks (run.cpp).
+  // MPI (a no-op without mpirun): sweeps are split over groups of ranks, each
+  // group sharing its points' meshes (operating_points.h).
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   CLI::App app{
       "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
@@ -40,6 +41,10 @@ int main(int argc, char** argv) {
                   "override the file's solver preset: fast | standard | accurate");
   run->add_option("--material", options.material,
                   "material fragment (.prm, e.g. from `bridge material`) replacing the scene's");
+  run->add_option("--ranks-per-point", options.ranks_per_point,
+                  "MPI ranks that share each operating point's mesh (default: the points are "
+                  "spread over the ranks first, the ranks shared out when points are fewer)")
+      ->check(CLI::PositiveNumber);
   run->add_flag("-f,--force", options.force, "overwrite existing results");
   run->add_flag("-q,--quiet", options.quiet, "no progress display");
   macro::app::CompareOptions compare_options;
@@ -77,6 +82,9 @@ int main(int argc, char** argv) {
   compare->add_option("--material", compare_options.material,
                       "material fragment (.prm, e.g. from `bridge material`) replacing the "
                       "scene's");
+  compare->add_option("--ranks-per-point", compare_options.ranks_per_point,
+                      "MPI ranks that share each operating point's mesh (default: as for run)")
+      ->check(CLI::PositiveNumber);
   compare->add_flag("-f,--force", compare_options.force, "overwrite existing results");
   compare->add_flag("-q,--quiet", compare_options.quiet, "no progress display and no table");
   app.add_subcommand("template", "print a documented scene file with every entry");

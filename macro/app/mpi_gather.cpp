@@ -52,6 +52,15 @@ std::vector<std::string> gather_text(MPI_Comm comm, const std::string& text) {
   return result;
 }
 
+std::string broadcast_text(MPI_Comm comm, const std::string& text) {
+  unsigned long size = text.size();
+  MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG, 0, comm);
+  std::string result = text;
+  result.resize(size);
+  MPI_Bcast(result.data(), int(size), MPI_CHAR, 0, comm);
+  return result;
+}
+
 bool broadcast_flag(MPI_Comm comm, bool flag) {
   int value = flag ? 1 : 0;
   MPI_Bcast(&value, 1, MPI_INT, 0, comm);

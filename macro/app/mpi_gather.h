@@ -20,6 +20,9 @@ std::vector<std::vector<double>> gather_rows(MPI_Comm comm,
 /// Every rank's text, in rank order on rank 0; empty elsewhere.
 std::vector<std::string> gather_text(MPI_Comm comm, const std::string& text);
 
+/// Rank 0's text on every rank.
+std::string broadcast_text(MPI_Comm comm, const std::string& text);
+
 /// Rank 0's flag on every rank.
 bool broadcast_flag(MPI_Comm comm, bool flag);
 

@@ -3,6 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "common/errors.h"
 #include "common/progress.h"
 #include "macro/app/mpi_gather.h"
@@ -18,34 +20,67 @@ std::string describe_model(const Material& material, const fe::SolverSettings& s
                          : std::string("augmented Lagrangian"));
 }
 
+RankGroups::RankGroups(std::size_t points, unsigned ranks_per_point) {
+  const MPI_Comm world = MPI_COMM_WORLD;
+  const unsigned rank = dealii::Utilities::MPI::this_mpi_process(world);
+  const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(world);
+  if (ranks_per_point == 0) ranks_per_point = std::max<std::size_t>(1, ranks / std::max<std::size_t>(points, 1));
+  ranks_per_point_ = std::min(ranks_per_point, ranks);
+  groups_ = (ranks + ranks_per_point_ - 1) / ranks_per_point_;
+  group_index_ = rank / ranks_per_point_;
+  leader_ = rank % ranks_per_point_ == 0;
+  if (ranks_per_point_ > 1) MPI_Comm_split(world, int(group_index_), int(rank), &group_);
+}
+
+RankGroups::~RankGroups() {
+  if (group_ != MPI_COMM_SELF) MPI_Comm_free(&group_);
+}
+
+namespace {
+
+// Writes the fields of the scene's last point: every rank of the group writes
+// its cells into one file, under the leader's temporary name.
+void write_fields(const Scene& scene, const std::filesystem::path& file, const RankGroups& groups) {
+  std::unique_ptr<AtomicOutput> out;
+  std::string temporary;
+  if (groups.leader()) {
+    out = std::make_unique<AtomicOutput>(file, true);
+    temporary = out->temporary_path().string();
+  }
+  temporary = broadcast_text(groups.mesh_communicator(), temporary);
+  scene.write_vtu(temporary);
+  MPI_Barrier(groups.mesh_communicator());
+  if (out) out->commit();
+}
+
+}  // namespace
+
 std::vector<std::vector<double>> solve_operating_points(Scene& scene,
                                                         const std::vector<double>& points,
+                                                        const RankGroups& groups,
                                                         const SweepDisplay& display) {
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const unsigned rank = dealii::Utilities::MPI::this_mpi_process(comm);
-  const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+  const MPI_Comm world = MPI_COMM_WORLD;
+  const bool root = dealii::Utilities::MPI::this_mpi_process(world) == 0;
   const Column drive = scene.drive();
-  const std::size_t first = points.size() * rank / ranks;
-  const std::size_t last = points.size() * (rank + 1) / ranks;
-  Progress progress(display.label, double(last - first), display.quiet || rank != 0);
+  const std::size_t first = points.size() * groups.group() / groups.groups();
+  const std::size_t last = points.size() * (groups.group() + 1) / groups.groups();
+  Progress progress(display.label, double(last - first), display.quiet || !root);
   std::vector<std::vector<double>> mine;
   std::string failure;  // a rank that fails still joins the gather below
   for (std::size_t k = first; k < last && failure.empty(); ++k) {
     try {
-      mine.push_back(scene.solve(points[k]));
-      if (display.vtu == "all" || (display.vtu == "last" && k + 1 == points.size())) {
-        AtomicOutput out(display.directory / fmt::format("solution_{:03d}.vtu", k), true);
-        scene.write_vtu(out.temporary_path());
-        out.commit();
-      }
+      std::vector<double> row = scene.solve(points[k]);
+      if (groups.leader()) mine.push_back(std::move(row));
+      if (display.vtu == "all" || (display.vtu == "last" && k + 1 == points.size()))
+        write_fields(scene, display.directory / fmt::format("solution_{:03d}.vtu", k), groups);
     } catch (const std::exception& error) {
       failure = fmt::format("{} = {}: {}", drive.name, points[k], error.what());
     }
     progress.update(double(k + 1 - first), fmt::format("{} = {:.4g}", drive.name, points[k]));
   }
   progress.finish();
-  auto rows = gather_rows(comm, mine, scene.columns().size());
-  for (const std::string& f : gather_text(comm, failure))
+  auto rows = gather_rows(world, mine, scene.columns().size());
+  for (const std::string& f : gather_text(world, failure))
     if (!f.empty()) throw NumericalError(f);
   return rows;
 }

@@ -1,7 +1,11 @@
 // Solving a scene over a list of operating points, shared by `macro run` and
-// `macro compare`: the points are split into contiguous blocks over the MPI
-// ranks (each block warm-starts along itself) and the rows gathered on rank 0.
+// `macro compare`. The MPI ranks form groups of consecutive ranks; the points
+// are split into contiguous blocks, one per group (each block warm-starts
+// along itself); the ranks of a group share each point's mesh (a distributed
+// triangulation, scalar_flow_solver.cpp), and the rows are gathered on rank 0.
 #pragma once
+
+#include <mpi.h>
 
 #include <filesystem>
 #include <memory>
@@ -24,10 +28,37 @@ struct SweepDisplay {
   bool quiet = false;
 };
 
+/// The ranks of MPI_COMM_WORLD in groups of `ranks_per_point` consecutive
+/// ranks (the last group may be smaller). ranks_per_point = 0 chooses: points
+/// first — one rank per point while there are at least as many points as
+/// ranks, the ranks shared out over the points otherwise.
+class RankGroups {
+ public:
+  RankGroups(std::size_t points, unsigned ranks_per_point);
+  ~RankGroups();
+  RankGroups(const RankGroups&) = delete;
+  RankGroups& operator=(const RankGroups&) = delete;
+
+  /// This rank's group: the communicator its scenes' meshes are distributed over.
+  MPI_Comm mesh_communicator() const { return group_; }
+  unsigned group() const { return group_index_; }
+  unsigned groups() const { return groups_; }
+  unsigned ranks_per_point() const { return ranks_per_point_; }
+  /// The group's first rank, which reports the group's rows.
+  bool leader() const { return leader_; }
+
+ private:
+  MPI_Comm group_ = MPI_COMM_SELF;
+  unsigned group_index_ = 0, groups_ = 1, ranks_per_point_ = 1;
+  bool leader_ = true;
+};
+
 /// Every point's row on rank 0 (empty on the other ranks). A point that fails
-/// on any rank → NumericalError on rank 0 naming the point.
+/// on any rank → NumericalError on rank 0 naming the point. The scene must
+/// have been made with groups.mesh_communicator().
 std::vector<std::vector<double>> solve_operating_points(Scene& scene,
                                                         const std::vector<double>& points,
+                                                        const RankGroups& groups,
                                                         const SweepDisplay& display);
 
 /// Rank 0 claims the result files in `directory` (created if needed) before

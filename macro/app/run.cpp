@@ -29,9 +29,11 @@ std::string header(const Column& c) {
 int run(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
-  const auto [material, settings] =
+  auto [material, settings] =
       read_scene_input(prm, options.scene_file, options.preset, options.material);
   const std::vector<double> points = read_sweep(prm);
+  const RankGroups groups(points.size(), options.ranks_per_point);
+  settings.mesh_communicator = groups.mesh_communicator();
   prm.enter_subsection("output");
   const std::string vtu = prm.get("vtu");
   prm.leave_subsection();
@@ -50,7 +52,7 @@ int run(const RunOptions& options) {
   const Column drive = scene->drive();
   const std::vector<Column> columns = scene->columns();
   const auto rows = solve_operating_points(
-      *scene, points,
+      *scene, points, groups,
       {.directory = directory,
        .vtu = vtu,
        .label = fmt::format("macro {}", options.scene_file.filename().string()),
@@ -80,8 +82,9 @@ int run(const RunOptions& options) {
   summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
   summary << "scene file: " << options.scene_file.string() << "\n";
   summary << scene->description() << "\n";
-  summary << fmt::format("operating points: {} on {} MPI rank(s); wall time {:.3f} s\n",
-                         points.size(), ranks, wall);
+  summary << fmt::format(
+      "operating points: {} on {} MPI rank(s), {} per point's mesh; wall time {:.3f} s\n",
+      points.size(), ranks, groups.ranks_per_point(), wall);
   // The largest relative error estimates over the sweep (primary output).
   // Points where nothing yields (below the yield point) are left out: there
   // the regularised material only creeps at rates ~ε and the exact output is

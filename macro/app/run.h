@@ -18,6 +18,8 @@ struct RunOptions {
   std::string preset;
   /// A material fragment replacing the scene's material when not empty.
   std::filesystem::path material;
+  /// MPI ranks that share one operating point's mesh; 0 = chosen (operating_points.h).
+  unsigned ranks_per_point = 0;
 };
 
 /// Returns the exit code; throws InputError, OutputExistsError, NumericalError.

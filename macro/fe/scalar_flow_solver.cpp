@@ -46,9 +46,24 @@
 // is every cell the yield surface crosses (some quadrature points yielded and
 // some not). The discretisation error is estimated as the change of each output
 // over the last cycle.
+//
+// Parallel. The 2D sections live on a distributed triangulation (p4est) over
+// the ranks of settings.mesh_communicator: each rank assembles its own cells
+// into Trilinos' distributed matrix and vectors, the integrals are summed over
+// the ranks, and the linear systems are solved by MUMPS (direct_solver.h), a
+// parallel sparse direct solver — the Newton matrices span the
+// viscosity range of a regularised plug (τ_y/ε against K γ̇ⁿ⁻¹, 10⁴ and more),
+// which an iterative solver would have to be preconditioned for, and ALG2
+// reuses one factorisation thousands of times. Every decision (Newton's stop,
+// the line search, the cells to refine) is taken on global quantities, so all
+// ranks take the same path and the result does not depend on their number
+// beyond rounding. A 1D section (a few hundred unknowns) stays on one rank.
 #include "macro/fe/scalar_flow_solver.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -57,9 +72,9 @@
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/error_estimator.h>
@@ -67,13 +82,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <type_traits>
 
 #include "common/errors.h"
+#include "macro/fe/direct_solver.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/material/regularised_law.h"
 
@@ -93,6 +111,24 @@ constexpr int kLineSearchSteps = 12;
 // Modified Newton (solve_newton): τ' ≥ kTangentFloor·η (solver_settings.h)
 // after a step shorter than kFullStep.
 constexpr double kFullStep = 0.5;
+
+using VectorType = TrilinosWrappers::MPI::Vector;
+using MatrixType = TrilinosWrappers::SparseMatrix;
+
+// The mesh of a section: distributed in 2D; a 1D section stays serial (p4est
+// has no 1D forests, and a line of a few hundred cells gains nothing).
+template <int dim>
+using SectionMesh =
+    std::conditional_t<dim == 1, Triangulation<1>, parallel::distributed::Triangulation<dim>>;
+
+template <int dim>
+std::unique_ptr<SectionMesh<dim>> make_section_mesh(MPI_Comm communicator) {
+  if constexpr (dim == 1) {
+    return std::make_unique<Triangulation<1>>();
+  } else {
+    return std::make_unique<parallel::distributed::Triangulation<dim>>(communicator);
+  }
+}
 
 double power(double r, int k) {
   return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k));
@@ -117,11 +153,12 @@ class ScalarFlowSolver<dim>::Implementation {
       : weights_(weights),
         law_(law),
         settings_(settings),
+        communicator_(dim == 1 ? MPI_COMM_SELF : settings.mesh_communicator),
+        triangulation_(make_section_mesh<dim>(communicator_)),
         mapping_(mapping_degree),
         fe_(settings.fe_degree),
-        dof_handler_(triangulation_) {
-    base_.copy_triangulation(base_mesh);
-    base_.refine_global(settings.global_refinements);
+        dof_handler_(*triangulation_) {
+    coarse_.copy_triangulation(base_mesh);
   }
 
   PointResult run(const Drive& drive, const BoundaryFunctional& boundary);
@@ -129,14 +166,15 @@ class ScalarFlowSolver<dim>::Implementation {
 
  private:
   // --- setup -------------------------------------------------------------
-  void setup_system();
+  VectorType setup_system();
   void make_constraints();
   void impose_boundary_values();
+  /// `owned` with the values of the ghost cells' dofs, for evaluating fields.
+  const VectorType& readable(const VectorType& owned) const;
 
   // --- regularised method --------------------------------------------------
-  void assemble_system(const RegularisedLaw& law, bool with_matrix, double tangent_floor = 0.0);
-  double directional_derivative(const RegularisedLaw& law, const Vector<double>& trial,
-                                const Vector<double>& direction);
+  void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
+                       double tangent_floor = 0.0);
   unsigned solve_newton(const RegularisedLaw& law, bool allow_damping = false);
   unsigned solve_with_continuation(double target_scale, double start_scale);
 
@@ -156,9 +194,15 @@ class ScalarFlowSolver<dim>::Implementation {
   double rho(const Point<dim>& x) const { return power(x[0], weights_.radial_weight); }
   double s(const Point<dim>& x) const { return power(x[0], weights_.rate_radius_power); }
 
+  /// The cells this rank assembles and integrates over.
+  auto owned_cells() const {
+    return dof_handler_.active_cell_iterators() |
+           IteratorFilters::LocallyOwnedCell();
+  }
+
   /// Shear rate, stress and whether the material yields at quadrature point x
-  /// (number k over all cells): from the gradient while regularising; ALG2
-  /// keeps its rate field γ, exactly zero in rigid regions.
+  /// (number k over this rank's cells): from the gradient while regularising;
+  /// ALG2 keeps its rate field γ, exactly zero in rigid regions.
   struct LocalState {
     double rate, stress;
     bool yielded;
@@ -173,41 +217,52 @@ class ScalarFlowSolver<dim>::Implementation {
   HerschelBulkley law_;
   SolverSettings settings_;
   Drive drive_;
+  MPI_Comm communicator_;
 
-  Triangulation<dim> base_;
-  Triangulation<dim> triangulation_;
+  Triangulation<dim> coarse_;  // the scene's mesh, unrefined
+  std::unique_ptr<SectionMesh<dim>> triangulation_;
   MappingQ<dim> mapping_;
   FE_Q<dim> fe_;
   DoFHandler<dim> dof_handler_;
+  IndexSet owned_dofs_, relevant_dofs_;
   AffineConstraints<double> constraints_;       // hanging nodes + Dirichlet data
   AffineConstraints<double> zero_constraints_;  // hanging nodes + homogeneous Dirichlet
-  SparsityPattern sparsity_;
-  SparseMatrix<double> system_matrix_;
-  Vector<double> solution_, residual_;
+  MatrixType system_matrix_;
+  DirectSolver direct_;             // analysed once per mesh; destroyed before the matrix
+  VectorType solution_, residual_;  // owned entries only
+  mutable VectorType ghosted_;      // see readable()
 
   // The regularised law of the last solve (null for ALG2), and for ALG2 the
-  // rigid/yielded state per quadrature point (1 = yielded) for the outputs.
+  // rate |γ| per quadrature point of this rank's cells, cell by cell.
   std::unique_ptr<RegularisedLaw> regularised_;
-  std::vector<double> al_rate_;  // |γ| per quadrature point, cell by cell
+  std::vector<double> al_rate_;
   unsigned al_record_iteration_ = 0, al_iterations_ = 0;
 
   // The previous operating point's solution on the (refined) base mesh, and its
   // characteristic rate: the warm start of the next point.
-  Vector<double> previous_base_solution_;
+  VectorType previous_base_solution_;
   double previous_rate_ = 0.0;
 };
 
 // --- setup ----------------------------------------------------------------
 
+// Distributes the dofs, builds the constraints and the matrix's sparsity on
+// the current mesh, and returns a zero vector laid out for them.
 template <int dim>
-void ScalarFlowSolver<dim>::Implementation::setup_system() {
+VectorType ScalarFlowSolver<dim>::Implementation::setup_system() {
+  direct_.clear();
   dof_handler_.distribute_dofs(fe_);
+  owned_dofs_ = dof_handler_.locally_owned_dofs();
+  DoFTools::extract_locally_relevant_dofs(dof_handler_, relevant_dofs_);
   make_constraints();
-  DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+  DynamicSparsityPattern dsp(relevant_dofs_);
   DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints_, false);
-  sparsity_.copy_from(dsp);
-  system_matrix_.reinit(sparsity_);
-  residual_.reinit(dof_handler_.n_dofs());
+  SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs_, communicator_, relevant_dofs_);
+  system_matrix_.reinit(owned_dofs_, owned_dofs_, dsp, communicator_);
+  direct_.analyse(system_matrix_);
+  residual_.reinit(owned_dofs_, communicator_);
+  ghosted_.reinit(owned_dofs_, relevant_dofs_, communicator_);
+  return VectorType(owned_dofs_, communicator_);
 }
 
 template <int dim>
@@ -215,6 +270,7 @@ void ScalarFlowSolver<dim>::Implementation::make_constraints() {
   for (auto [constraints, homogeneous] :
        {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
     constraints->clear();
+    constraints->reinit(relevant_dofs_);
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, value] : drive_.boundary_values) {
       VectorTools::interpolate_boundary_values(
@@ -230,16 +286,23 @@ void ScalarFlowSolver<dim>::Implementation::impose_boundary_values() {
   constraints_.distribute(solution_);
 }
 
+template <int dim>
+const VectorType& ScalarFlowSolver<dim>::Implementation::readable(const VectorType& owned) const {
+  ghosted_ = owned;
+  return ghosted_;
+}
+
 // --- regularised method -----------------------------------------------------
 
-// Residual R(u)(φ_i) and, if asked, the Newton matrix, condensed with the
-// homogeneous constraints (the update vanishes on Dirichlet boundaries).
+// Residual R(u)(φ_i) at `u` and, if asked, the Newton matrix, condensed with
+// the homogeneous constraints (the update vanishes on Dirichlet boundaries).
 template <int dim>
 void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw& law,
-                                                            bool with_matrix,
+                                                            const VectorType& u, bool with_matrix,
                                                             double tangent_floor) {
   if (with_matrix) system_matrix_ = 0.0;
   residual_ = 0.0;
+  const VectorType& field = readable(u);
   const QGauss<dim> quadrature(fe_.degree + 1);
   FEValues<dim> fe_values(
       mapping_, fe_, quadrature,
@@ -250,9 +313,9 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::vector<types::global_dof_index> dofs(n);
 
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values.get_function_gradients(solution_, gradients);
+    fe_values.get_function_gradients(field, gradients);
     cell_matrix = 0.0;
     cell_residual = 0.0;
     for (const unsigned q : fe_values.quadrature_point_indices()) {
@@ -286,23 +349,14 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
       zero_constraints_.distribute_local_to_global(cell_residual, dofs, residual_);
     }
   }
-}
-
-// φ'(α) = R(u + αδ)(δ) for the trial u + αδ.
-template <int dim>
-double ScalarFlowSolver<dim>::Implementation::directional_derivative(
-    const RegularisedLaw& law, const Vector<double>& trial, const Vector<double>& direction) {
-  const Vector<double> saved = solution_;
-  solution_ = trial;
-  assemble_system(law, false);
-  solution_ = saved;
-  return residual_ * direction;
+  if (with_matrix) system_matrix_.compress(VectorOperation::add);
+  residual_.compress(VectorOperation::add);
 }
 
 template <int dim>
 unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law,
                                                              bool allow_damping) {
-  Vector<double> update(dof_handler_.n_dofs()), trial(dof_handler_.n_dofs());
+  VectorType update(owned_dofs_, communicator_), trial(owned_dofs_, communicator_);
   // After a step the line search had to cut short, the next one uses a
   // modified tangent. Where the material has just yielded, τ' = dτ/dγ̇ is
   // orders of magnitude below η = τ/γ̇ (n < 1, small ε), so the Newton step
@@ -314,35 +368,32 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
   // Newton converges it is faster.
   bool damped = false;
   for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
-    assemble_system(law, true, damped ? kTangentFloor : 0.0);
+    assemble_system(law, solution_, true, damped ? kTangentFloor : 0.0);
     const double residual_norm = residual_.l2_norm();
-    SparseDirectUMFPACK direct;
-    direct.initialize(system_matrix_);
-    update = residual_;
-    direct.solve(update);
+    direct_.factorise();
+    direct_.solve(update, residual_);
     update *= -1.0;
     zero_constraints_.distribute(update);
 
-    // Full step if it lowers the residual; else the exact line search on J.
-    double alpha = 1.0;
-    trial = solution_;
-    trial += update;
+    // Full step if it lowers the residual; else the exact line search on J,
+    // on φ'(α) = R(u + αδ)(δ).
     const double slope0 = residual_ * update;  // φ'(0) < 0: a descent direction
-    solution_.swap(trial);
-    assemble_system(law, false);
-    solution_.swap(trial);
-    if (residual_.l2_norm() > residual_norm && slope0 < 0.0) {
-      double lo = 0.0, hi = 1.0, d_lo = slope0, d_hi = residual_ * update;
-      if (d_hi > 0.0) {
-        for (int k = 0; k < kLineSearchSteps; ++k) {
-          alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
-          trial = solution_;
-          trial.add(alpha, update);
-          const double d = directional_derivative(law, trial, update);
-          if (std::abs(d) <= kLineSearchReduction * std::abs(slope0)) break;
-          (d < 0.0 ? lo : hi) = alpha;
-          (d < 0.0 ? d_lo : d_hi) = d;
-        }
+    const auto slope_at = [&](double alpha) {
+      trial = solution_;
+      trial.add(alpha, update);
+      assemble_system(law, trial, false);
+      return residual_ * update;
+    };
+    double alpha = 1.0;
+    const double d_full = slope_at(1.0);
+    if (residual_.l2_norm() > residual_norm && slope0 < 0.0 && d_full > 0.0) {
+      double lo = 0.0, hi = 1.0, d_lo = slope0, d_hi = d_full;
+      for (int k = 0; k < kLineSearchSteps; ++k) {
+        alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
+        const double d = slope_at(alpha);
+        if (std::abs(d) <= kLineSearchReduction * std::abs(slope0)) break;
+        (d < 0.0 ? lo : hi) = alpha;
+        (d < 0.0 ? d_lo : d_hi) = d;
       }
     }
     solution_.add(alpha, update);
@@ -369,11 +420,11 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double t
                                                                         double start_scale) {
   unsigned iterations = 0;
   double eps = std::max(start_scale, target_scale), converged_eps = 0.0;
-  Vector<double> converged = solution_;
+  VectorType converged = solution_;
   std::string failure;
   // One Newton solve at the current ε from `start`; false (and the solution
   // back at `start`) if it does not converge.
-  const auto attempt = [&](const Vector<double>& start, bool damping) {
+  const auto attempt = [&](const VectorType& start, bool damping) {
     solution_ = start;
     try {
       iterations += solve_newton(*regularised_, damping);
@@ -387,7 +438,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double t
   };
   while (true) {
     regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    const Vector<double> start = solution_;
+    const VectorType start = solution_;
     if (!attempt(start, false) && !attempt(start, true)) {
       // Retry halfway (in log ε) from the last converged stage, while the
       // step is still worth shrinking.
@@ -415,12 +466,14 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
       mapping_, fe_, quadrature,
       update_values | update_gradients | update_quadrature_points | update_JxW_values);
   const unsigned n = fe_.n_dofs_per_cell(), nq = quadrature.size();
-  const std::size_t points = triangulation_.n_active_cells() * nq;
+  const auto cells = owned_cells();
+  const std::size_t points = std::distance(cells.begin(), cells.end()) * nq;
   std::vector<Tensor<1, dim>> rate(points), multiplier(points), gradients(nq);
   al_rate_.assign(points, 0.0);
   std::vector<types::global_dof_index> dofs(n);
   FullMatrix<double> cell_matrix(n, n);
-  Vector<double> cell_rhs(n), rhs(dof_handler_.n_dofs());
+  Vector<double> cell_rhs(n);
+  VectorType rhs(owned_dofs_, communicator_);
 
   // The u-step matrix r∫ρs²∇φ_i·∇φ_j is the same at every iteration: factorise
   // it once. The Dirichlet data enter its right-hand side through the
@@ -429,7 +482,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
     rhs = 0.0;
     if (with_matrix) system_matrix_ = 0.0;
     std::size_t k = 0;
-    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    for (const auto& cell : owned_cells()) {
       fe_values.reinit(cell);
       cell_matrix = 0.0;
       cell_rhs = 0.0;
@@ -454,14 +507,17 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
       }
       k += nq;
     }
+    if (with_matrix) system_matrix_.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
   };
   // Start from the current u (a regularised solution, when there is one):
   // γ = s∇u and λ = its regularised stress, so ALG2 only corrects the plug.
   {
+    const VectorType& field = readable(solution_);
     std::size_t k = 0;
-    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    for (const auto& cell : owned_cells()) {
       fe_values.reinit(cell);
-      fe_values.get_function_gradients(solution_, gradients);
+      fe_values.get_function_gradients(field, gradients);
       for (const unsigned q : fe_values.quadrature_point_indices()) {
         rate[k] = s(fe_values.quadrature_point(q)) * gradients[q];
         if (start_law) multiplier[k] = start_law->viscosity(rate[k].norm()).value * rate[k];
@@ -471,24 +527,23 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
   }
   regularised_.reset();
   assemble(true);
-  SparseDirectUMFPACK direct;
-  direct.initialize(system_matrix_);
+  direct_.factorise();
 
   const BoundaryFunctional none;
   unsigned iteration = 0;
   unsigned next_record = 1;
   for (iteration = 1; iteration <= settings_.al_max_iterations; ++iteration) {
     if (iteration > 1) assemble(false);
-    direct.solve(rhs);
-    solution_ = rhs;
+    direct_.solve(solution_, rhs);
     constraints_.distribute(solution_);
 
     // Local steps 2 and 3, and the constraint residual ‖s∇u − γ‖ against ‖γ‖.
+    const VectorType& field = readable(solution_);
     double mismatch = 0.0, norm = 0.0, volume = 0.0;
     std::size_t k = 0;
-    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    for (const auto& cell : owned_cells()) {
       fe_values.reinit(cell);
-      fe_values.get_function_gradients(solution_, gradients);
+      fe_values.get_function_gradients(field, gradients);
       for (const unsigned q : fe_values.quadrature_point_indices()) {
         const Point<dim>& x = fe_values.quadrature_point(q);
         const Tensor<1, dim> strain = s(x) * gradients[q];
@@ -505,6 +560,9 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
         ++k;
       }
     }
+    mismatch = Utilities::MPI::sum(mismatch, communicator_);
+    norm = Utilities::MPI::sum(norm, communicator_);
+    volume = Utilities::MPI::sum(volume, communicator_);
     // Relative to the rate field, or to the scene's rate scale where the
     // material barely flows (a plug filling the section has γ = 0).
     const double scale = drive_.characteristic_rate * drive_.characteristic_rate * volume;
@@ -529,72 +587,78 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
 
 template <int dim>
 Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional& boundary) const {
-  Outputs out;
+  const VectorType& field = readable(solution_);
   const QGauss<dim> quadrature(fe_.degree + 1);
   FEValues<dim> fe_values(
       mapping_, fe_, quadrature,
       update_values | update_gradients | update_quadrature_points | update_JxW_values);
+  const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
+  FEFaceValues<dim> face_values(mapping_, fe_, face_quadrature,
+                                update_gradients | update_quadrature_points | update_JxW_values);
   std::vector<double> values(quadrature.size());
-  std::vector<Tensor<1, dim>> gradients(quadrature.size());
-  double volume = 0.0, yielded = 0.0;
+  std::vector<Tensor<1, dim>> gradients(quadrature.size()), face_gradients(face_quadrature.size());
+  // This rank's share of flow, dissipation, boundary integral, volume, yielded volume.
+  std::array<double, 5> sums{};
+  auto& [flow, dissipation, boundary_sum, volume, yielded] = sums;
   std::size_t k = 0;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values.get_function_values(solution_, values);
-    fe_values.get_function_gradients(solution_, gradients);
+    fe_values.get_function_values(field, values);
+    fe_values.get_function_gradients(field, gradients);
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       const Point<dim>& x = fe_values.quadrature_point(q);
       const double w = rho(x) * fe_values.JxW(q);
       const LocalState local = local_state(x, gradients[q], k);
-      out.flow += values[q] * w;
-      out.dissipation += local.stress * local.rate * w;
+      flow += values[q] * w;
+      dissipation += local.stress * local.rate * w;
       volume += w;
       if (local.yielded) yielded += w;
       ++k;
     }
-    if (boundary.integrand && cell->at_boundary()) {
-      for (const unsigned f : cell->face_indices()) {
-        if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != boundary.id) continue;
-        const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
-        FEFaceValues<dim> face_values(
-            mapping_, fe_, face_quadrature,
-            update_gradients | update_quadrature_points | update_JxW_values);
-        face_values.reinit(cell, f);
-        std::vector<Tensor<1, dim>> face_gradients(face_quadrature.size());
-        face_values.get_function_gradients(solution_, face_gradients);
-        for (const unsigned q : face_values.quadrature_point_indices()) {
-          const Point<dim>& x = face_values.quadrature_point(q);
-          out.boundary +=
-              boundary.integrand(s(x) * face_gradients[q].norm()) * rho(x) * face_values.JxW(q);
-        }
+    if (!boundary.integrand || !cell->at_boundary()) continue;
+    for (const unsigned f : cell->face_indices()) {
+      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != boundary.id) continue;
+      face_values.reinit(cell, f);
+      face_values.get_function_gradients(field, face_gradients);
+      for (const unsigned q : face_values.quadrature_point_indices()) {
+        const Point<dim>& x = face_values.quadrature_point(q);
+        boundary_sum +=
+            boundary.integrand(s(x) * face_gradients[q].norm()) * rho(x) * face_values.JxW(q);
       }
     }
   }
-  out.flow *= weights_.measure_factor;
-  out.dissipation *= weights_.measure_factor;
-  out.boundary *= weights_.measure_factor;
-  out.yielded_fraction = volume > 0.0 ? yielded / volume : 0.0;
-  out.max_value = solution_.linfty_norm();
-  return out;
+  Utilities::MPI::sum(ArrayView<const double>(sums), communicator_, ArrayView<double>(sums));
+  return {.flow = flow * weights_.measure_factor,
+          .dissipation = dissipation * weights_.measure_factor,
+          .yielded_fraction = volume > 0.0 ? yielded / volume : 0.0,
+          .boundary = boundary_sum * weights_.measure_factor,
+          .max_value = solution_.linfty_norm()};
 }
 
 template <int dim>
 void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
-  Vector<float> indicators(triangulation_.n_active_cells());
+  const VectorType& field = readable(solution_);
+  Vector<float> indicators(triangulation_->n_active_cells());
   KellyErrorEstimator<dim>::estimate(mapping_, dof_handler_, QGauss<dim - 1>(fe_.degree + 1),
-                                     std::map<types::boundary_id, const Function<dim>*>(),
-                                     solution_, indicators);
-  GridRefinement::refine_and_coarsen_fixed_number(triangulation_, indicators,
-                                                  settings_.refine_fraction, 0.0);
+                                     std::map<types::boundary_id, const Function<dim>*>(), field,
+                                     indicators);
+  // The top fraction of the cells of all ranks.
+  if constexpr (dim == 1) {
+    GridRefinement::refine_and_coarsen_fixed_number(*triangulation_, indicators,
+                                                    settings_.refine_fraction, 0.0);
+  } else {
+    parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        *triangulation_, indicators, settings_.refine_fraction, 0.0);
+  }
 
   // Cells a yield surface crosses: some quadrature points above τ_y, some below.
   const QGauss<dim> quadrature(fe_.degree + 1);
   FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_quadrature_points);
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::size_t k = 0;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values.get_function_gradients(solution_, gradients);
+    fe_values.get_function_gradients(field, gradients);
     bool above = false, below = false;
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       (local_state(fe_values.quadrature_point(q), gradients[q], k).yielded ? above : below) = true;
@@ -603,7 +667,8 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
     if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
   }
 
-  refine_and_transfer(triangulation_, dof_handler_, solution_, [this] { setup_system(); });
+  refine_and_transfer(*triangulation_, dof_handler_, field, solution_,
+                      [this] { return setup_system(); });
   impose_boundary_values();
 }
 
@@ -612,15 +677,18 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
                                                        const BoundaryFunctional& boundary) {
   const auto start = std::chrono::steady_clock::now();
   drive_ = drive;
-  triangulation_.clear();
-  triangulation_.copy_triangulation(base_);
-  setup_system();
-  solution_.reinit(dof_handler_.n_dofs());
+  // The same base mesh (and, distributed, the same partition) at every point,
+  // so that the previous point's solution is a valid start.
+  triangulation_->clear();
+  triangulation_->copy_triangulation(coarse_);
+  triangulation_->refine_global(settings_.global_refinements);
+  solution_ = setup_system();
   PointResult result;
 
   const double rate_c = drive.characteristic_rate;
   const double target = settings_.relative_rate_scale * rate_c;
-  const bool warm = previous_base_solution_.size() == solution_.size() && previous_rate_ > 0.0;
+  const bool warm = previous_rate_ > 0.0 &&
+                    previous_base_solution_.locally_owned_elements() == owned_dofs_;
   if (warm) {
     // The profile of the previous point, rescaled by the ratio of shear rates.
     solution_ = previous_base_solution_;
@@ -677,7 +745,7 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
     } else {
       // On the refined mesh Newton starts from the interpolated solution; if
       // that fails, from it again through one stage at 10ε.
-      const Vector<double> transferred = solution_;
+      const VectorType transferred = solution_;
       try {
         result.iterations += solve_newton(*regularised_);
       } catch (const NumericalError&) {
@@ -689,27 +757,30 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
     result.discretisation_error = difference(value, coarse_value, 1.0);
   }
   result.value = value;
-  result.cells = triangulation_.n_active_cells();
+  result.cells = triangulation_->n_global_active_cells();
   result.dofs = dof_handler_.n_dofs();
   result.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
+// One VTU file however many ranks share the mesh (MPI-IO); every rank of the
+// mesh's communicator calls this with the same file name.
 template <int dim>
 void ScalarFlowSolver<dim>::Implementation::output_results(
     const std::filesystem::path& file) const {
   // Cell averages of the derived fields (one value per cell keeps the file
   // small and shows the yield surface as the set of partly yielded cells).
-  const unsigned n_cells = triangulation_.n_active_cells();
+  const VectorType& field = readable(solution_);
+  const unsigned n_cells = triangulation_->n_active_cells();
   Vector<double> rate(n_cells), tau(n_cells), eta(n_cells), yielded(n_cells);
   const QGauss<dim> quadrature(fe_.degree + 1);
   FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_quadrature_points);
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::size_t k = 0;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values.get_function_gradients(solution_, gradients);
+    fe_values.get_function_gradients(field, gradients);
     const unsigned c = cell->active_cell_index();
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       const LocalState local = local_state(fe_values.quadrature_point(q), gradients[q], k);
@@ -722,16 +793,18 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
   }
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler_);
-  data_out.add_data_vector(solution_,
+  data_out.add_data_vector(field,
                            weights_.rate_radius_power == 1 ? "angular_velocity" : "velocity");
   data_out.add_data_vector(rate, "shear_rate");
   data_out.add_data_vector(tau, "stress");
   data_out.add_data_vector(eta, "viscosity");
   data_out.add_data_vector(yielded, "yielded");
   data_out.build_patches(mapping_, fe_.degree);
-  std::ofstream out(file);
-  data_out.write_vtu(out);
-  if (!out) throw NumericalError(fmt::format("cannot write {}", file.string()));
+  try {
+    data_out.write_vtu_in_parallel(file.string(), communicator_);
+  } catch (const std::exception&) {
+    throw NumericalError(fmt::format("cannot write {}", file.string()));
+  }
 }
 
 // --- the public face -------------------------------------------------------------

@@ -3,6 +3,8 @@
 // the `subsection solver` of a scene file may override any of them.
 #pragma once
 
+#include <mpi.h>
+
 #include <string>
 #include <vector>
 
@@ -50,6 +52,9 @@ struct SolverSettings {
   double al_relative_penalty = 1.0;
   unsigned al_max_iterations = 5000;
   double al_tolerance = 1e-6;
+  /// The ranks that share one operating point's mesh (2D sections of the
+  /// scalar scenes; 1D sections and the Stokes scenes solve on one rank).
+  MPI_Comm mesh_communicator = MPI_COMM_SELF;
 };
 
 /// The presets, by name: fast, standard, accurate.

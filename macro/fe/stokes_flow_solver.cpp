@@ -330,7 +330,10 @@ void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
       if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
     }
   }
-  refine_and_transfer(triangulation_, dof_handler_, solution_, [this] { setup_system(); });
+  refine_and_transfer(triangulation_, dof_handler_, solution_, solution_, [this] {
+    setup_system();
+    return Vector<double>(dof_handler_.n_dofs());
+  });
   constraints_.distribute(solution_);
 }
 
