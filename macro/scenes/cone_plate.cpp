@@ -2,8 +2,18 @@
 // turns at Ω above the fixed plate; ω(r, z) in the meridian plane, rim free.
 //
 // The closed form of exact/cone_plate.h — any angle, no truncation, spherical
-// rim — is reported beside the result, so the table says by how much the
-// truncation and the rim's shape change the torque.
+// rim, filled to the cone's radius — is reported beside the result, so the
+// table says by how much the truncation, the rim's shape and the fill level
+// change the torque.
+//
+// Fill level. An underfilled sample ends at r = fill·R under the cone (its
+// free surface shaped like the rim); its torque is about fill³ of the full
+// one. An overfilled sample is modelled as a collar of the rim's gap height
+// R tan β, from R out to fill·R, resting on the plate with its top and side
+// free; it is sheared only through the sample at the cone's edge (the
+// cone's edge face is taken as not wetted), so it adds the drag of a ring of
+// material dragged along at the rim — a lower bound of a real overfill,
+// which also wets the edge face.
 //
 // Normal force. The plate carries F = ∫ (−σ_zz) dA. For the steady simple
 // shear of the ideal cone (uniform rate) the radial momentum balance gives
@@ -37,6 +47,10 @@ void declare_cone_plate(ParameterHandler& prm) {
   prm.declare_entry(
       "rim", "spherical", Patterns::Selection("spherical|cylindrical"),
       "spherical (about the cone's apex, the closed form's rim) | cylindrical (r = R)");
+  prm.declare_entry("fill", "1", Patterns::Double(),
+                    "the sample's radius over R, in (0.5, 1.2): 1 filled to the rim; < 1 underfilled "
+                    "(a cylindrical or spherical free surface under the cone); > 1 overfilled (a "
+                    "collar of the rim's height beyond the cone's edge, top and side free)");
   prm.declare_entry("radial cells", "24", Patterns::Integer(2, 10000), "cells along the radius");
   prm.declare_entry("gap cells", "2", Patterns::Integer(1, 1000), "cells across the gap");
   prm.leave_subsection();
@@ -57,22 +71,32 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
           "cone-plate: truncation = 0 [m] is not allowed (the apex would be a degenerate "
           "cell); allowed: > 0 [m], e.g. 1e-6 R for an ideal cone");
   const bool spherical = prm.get("rim") == "spherical";
+  const double fill = entries::between(prm, "cone-plate", "fill", "1", 0.5, 1.2);
+  require(h_t < 0.5 * std::min(fill, 1.0) * R * std::tan(beta),
+          fmt::format("cone-plate: fill = {} leaves the truncation (h_t = {} m) more than half the "
+                      "gap at the sample's rim; allowed: fill > 2 h_t/(R tan(beta)) = {}",
+                      fill, h_t, 2.0 * h_t / (R * std::tan(beta))));
   const unsigned radial = prm.get_integer("radial cells"), gap = prm.get_integer("gap cells");
   prm.leave_subsection();
 
   dealii::Triangulation<2> mesh;
-  meshes::cone_plate(mesh, R, beta, h_t, spherical, radial, gap);
+  meshes::cone_plate(mesh, R, beta, h_t, spherical, fill, radial, gap);
   const HerschelBulkley law = material.shear;
   const NormalStressLaw n1 = material.first_normal_stress_difference;
   const exact::ConePlate cone{.radius = R, .angle = beta};
   ReducedSceneSpec<2> spec;
+  const std::string sample =
+      fill == 1.0 ? fmt::format("filled to a {} rim", spherical ? "spherical" : "cylindrical")
+      : fill < 1.0
+          ? fmt::format("underfilled to {} R, {} free surface", fill,
+                        spherical ? "spherical" : "cylindrical")
+          : fmt::format("overfilled: a collar out to {} R beyond the cone's edge", fill);
   spec.description = fmt::format(
-      "cone and plate R = {} m, beta = {} deg, truncation {} m, {} rim: omega(r, z) in the "
-      "meridian "
-      "plane, cone at Omega, plate fixed",
-      R, beta * 180.0 / std::numbers::pi, h_t, spherical ? "spherical" : "cylindrical");
+      "cone and plate R = {} m, beta = {} deg, truncation {} m, sample {}: omega(r, z) in the "
+      "meridian plane, cone at Omega, plate fixed",
+      R, beta * 180.0 / std::numbers::pi, h_t, sample);
   spec.kind = DriveKind::rotation;
-  spec.mapping_degree = spherical ? 2 : 1;  // curved cells at the spherical rim
+  spec.mapping_degree = spherical && fill <= 1.0 ? 2 : 1;  // curved cells at a spherical rim
   spec.weights = {
       .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = [beta](double omega) {

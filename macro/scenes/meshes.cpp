@@ -66,8 +66,14 @@ void gmsh(Triangulation<2>& mesh, const std::filesystem::path& file) {
 }
 
 void cone_plate(Triangulation<2>& mesh, double radius, double angle, double truncation,
-                bool spherical_rim, unsigned radial, unsigned gap) {
-  const double t = std::tan(angle), r_t = std::min(truncation / t, 0.5 * radius);
+                bool spherical_rim, double fill, unsigned radial, unsigned gap) {
+  const double t = std::tan(angle);
+  // The sample's extent under the cone (an underfilled sample stops short of
+  // the edge) and the collar beyond it (an overfilled one).
+  const double covered = std::min(fill, 1.0) * radius;
+  const double collar = std::max(fill - 1.0, 0.0) * radius;
+  const bool spherical = spherical_rim && collar == 0.0;
+  const double r_t = std::min(truncation / t, 0.5 * covered);
   // A vertex column at the edge of the truncation, r_t, where the cone's
   // surface has its kink; the flat part gets cells in proportion, at least 2.
   std::vector<double> r_steps;
@@ -75,27 +81,35 @@ void cone_plate(Triangulation<2>& mesh, double radius, double angle, double trun
     const unsigned inner = std::max(2u, cells_for(r_t, radius, radial));
     r_steps = steps(r_t, inner);
   }
-  for (double h : steps(radius - r_t, radial)) r_steps.push_back(h);
+  for (double h : steps(covered - r_t, cells_for(covered, radius, radial))) r_steps.push_back(h);
+  if (collar > 0.0)
+    for (double h : steps(collar, cells_for(collar, radius, radial))) r_steps.push_back(h);
+  const double outer = covered + collar;
   GridGenerator::subdivided_hyper_rectangle(mesh, {r_steps, steps(1.0, gap)}, Point<2>(0.0, 0.0),
-                                            Point<2>(radius, 1.0), true);
-  const auto height = [&](double r) { return std::max(truncation, r * t); };
+                                            Point<2>(outer, 1.0), true);
+  // The gap under the cone; the collar keeps the height of the cone's edge.
+  const auto height = [&](double r) { return std::max(truncation, std::min(r, radius) * t); };
   GridTools::transform(
       [&](const Point<2>& p) {
         const double r = p[0], eta = p[1];
         Point<2> q(r, eta * height(r));
-        if (spherical_rim && r > r_t) {
+        if (spherical && r > r_t) {
           // Slide the point along the ray from the virtual apex (the origin):
           // points of the plate stay on the plate and points of the cone on
           // the cone, and the rim column lands on |(r, z)| = R. The shift
           // fades in quadratically from the truncation edge.
           const double on_rim = 1.0 / std::sqrt(1.0 + eta * eta * t * t);
-          const double blend = std::pow((r - r_t) / (radius - r_t), 2);
+          const double blend = std::pow((r - r_t) / (covered - r_t), 2);
           q *= 1.0 + blend * (on_rim - 1.0);
         }
         return q;
       },
       mesh);
-  if (spherical_rim) {
+  // The collar's top is a free surface, not the cone.
+  for (const auto& face : mesh.active_face_iterators())
+    if (face->at_boundary() && face->boundary_id() == 3 && face->center()[0] > radius)
+      face->set_boundary_id(1);
+  if (spherical) {
     // Beyond the truncation every boundary is a ray from the apex (cone,
     // plate) or an arc about it (rim): a polar manifold keeps refined
     // vertices on them, so the rim stays spherical instead of keeping the

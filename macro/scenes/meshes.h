@@ -22,12 +22,17 @@ void disc(dealii::Triangulation<2>& mesh, double radius);
 /// A Gmsh .msh file (2D); InputError naming the file if it cannot be read.
 void gmsh(dealii::Triangulation<2>& mesh, const std::filesystem::path& file);
 
-/// The meridian section (r, z) of a cone and plate: plate z = 0 (id 2), cone
-/// z = r tan β truncated flat at the gap z = h_t for r < h_t/tan β (id 3), axis
-/// r = 0 (id 0) and the rim (id 1), either cylindrical (r = R) or spherical
-/// about the cone's virtual apex (|(r, z)| = R). `radial` and `gap` cells.
+/// The meridian section (r, z) of the sample in a cone and plate of radius R:
+/// plate z = 0 (id 2), cone z = r tan β truncated flat at the gap z = h_t for
+/// r < h_t/tan β (id 3), axis r = 0 (id 0) and the free surface (id 1). The
+/// sample reaches the radius `fill` R: filled (1), its rim is cylindrical
+/// (r = R) or spherical about the cone's virtual apex (|(r, z)| = R);
+/// underfilled (< 1), the same at r = fill R under the cone; overfilled (> 1),
+/// a collar of the rim's height R tan β out to r = fill R beyond the cone's
+/// edge, its top and side free. `radial` cells up to R (in proportion beyond),
+/// `gap` cells across the gap.
 void cone_plate(dealii::Triangulation<2>& mesh, double radius, double angle, double truncation,
-                bool spherical_rim, unsigned radial, unsigned gap);
+                bool spherical_rim, double fill, unsigned radial, unsigned gap);
 
 /// The meridian section of a Couette cell with its bottom: cup r = R2 and
 /// bottom z = 0 (id 1), bob r = R1 and its base z = h_b (id 0), axis (id 2),

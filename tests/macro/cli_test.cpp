@@ -43,6 +43,33 @@ class MacroCli : public ::testing::Test {
            extra + "end\nsubsection sweep\n set values = 0.1, 1\nend\n";
   }
 
+  static constexpr const char* kMpirun = "/usr/bin/mpirun";
+  static bool mpi_available() {
+    // OpenMPI refuses root unless told (CI containers run as root).
+    ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    return fs::exists(kMpirun);
+  }
+  // `mpirun -n 2 macro run scene.prm -q` with the given options.
+  softglass::testing::Outcome run_on_two_ranks(const std::string& options) {
+    return softglass::testing::run_tool(
+        kMpirun, "-n 2 --oversubscribe '" + std::string(MACRO_EXECUTABLE) + "' run scene.prm -q " + options,
+        dir_, dir_ / "capture2");
+  }
+  // The first `columns` values of every row of folder/results.csv.
+  std::vector<std::vector<double>> table(const std::string& folder, std::size_t columns = 4) const {
+    std::ifstream csv(dir_ / folder / "results.csv");
+    std::vector<std::vector<double>> rows;
+    for (std::string line; std::getline(csv, line);) {
+      if (line.empty() || line[0] == '#' || line[0] == 'r') continue;  // comments, header
+      std::istringstream cells(line);
+      std::vector<double>& row = rows.emplace_back();
+      for (std::string cell; row.size() < columns && std::getline(cells, cell, ',');)
+        row.push_back(std::stod(cell));
+    }
+    return rows;
+  }
+
   // Unique per process: concurrent suites (another build's ctest) never share it.
   softglass::testing::TemporaryDirectory temporary_;
   const fs::path& dir_ = temporary_.path();
@@ -134,32 +161,12 @@ TEST_F(MacroCli, MissingIncludeIsNamed) {
 // error estimates — differences of nearby solutions, so more sensitive — to
 // 1e-6. Skipped without mpirun.
 TEST_F(MacroCli, TwoRanksGiveTheSerialTable) {
-  const char* mpirun = "/usr/bin/mpirun";
-  if (!fs::exists(mpirun)) GTEST_SKIP() << "no " << mpirun;
-  // OpenMPI refuses root unless told (CI containers run as root).
-  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  if (!mpi_available()) GTEST_SKIP() << "no " << kMpirun;
   std::string scene = couette("");
   scene.replace(scene.find("0.1, 1"), 6, "0.1, 0.3, 1, 3");
   ASSERT_EQ(run(scene), 0) << error_;
-  const auto parallel = softglass::testing::run_tool(
-      mpirun,
-      "-n 2 --oversubscribe '" + std::string(MACRO_EXECUTABLE) + "' run scene.prm -o out2 -q",
-      dir_, dir_ / "capture2");
+  const auto parallel = run_on_two_ranks("-o out2");
   ASSERT_EQ(parallel.code, 0) << parallel.err;
-  // Rotation rate, torque and its two error estimates of every point.
-  const auto table = [&](const std::string& folder) {
-    std::ifstream csv(dir_ / folder / "results.csv");
-    std::vector<std::vector<double>> rows;
-    for (std::string line; std::getline(csv, line);) {
-      if (line.empty() || line[0] == '#' || line[0] == 'r') continue;  // comments, header
-      std::istringstream cells(line);
-      std::vector<double>& row = rows.emplace_back();
-      for (std::string cell; row.size() < 4 && std::getline(cells, cell, ',');)
-        row.push_back(std::stod(cell));
-    }
-    return rows;
-  };
   const auto serial = table("out"), split = table("out2");
   ASSERT_EQ(serial.size(), 4u);
   ASSERT_EQ(split.size(), serial.size());
@@ -168,6 +175,48 @@ TEST_F(MacroCli, TwoRanksGiveTheSerialTable) {
     EXPECT_NEAR(split[k][1], serial[k][1], 1e-9 * serial[k][1]) << k;
     for (int c : {2, 3}) EXPECT_NEAR(split[k][c], serial[k][c], 1e-6 * std::abs(serial[k][c])) << k;
   }
+}
+
+// Two ranks sharing one point's mesh (the Couette cell with its bottom: a 2D
+// meridian section, distributed over both ranks) follow the serial run's path
+// — same refinements, same Newton steps, every decision taken on global
+// sums — so the mesh is the same and the torque differs by rounding only
+// (measured: all 10 printed digits equal; 1e-9 allowed, as above). The VTU
+// file of the shared mesh holds every cell once.
+TEST_F(MacroCli, TwoRanksSharingOneMeshGiveTheSerialTorque) {
+  if (!mpi_available()) GTEST_SKIP() << "no " << kMpirun;
+  const std::string scene =
+      "set scene = couette\ninclude material.prm\nsubsection couette\n set inner radius = 0.02\n"
+      " set outer radius = 0.022\n set length = 0.01\n set end effects = true\n"
+      " set bottom gap = 0.002\nend\nsubsection solver\n set preset = fast\nend\n"
+      "subsection sweep\n set values = 0.5\nend\nsubsection output\n set vtu = last\nend\n";
+  ASSERT_EQ(run(scene), 0) << error_;
+  const auto parallel = run_on_two_ranks("-o out2 --ranks-per-point 2");
+  ASSERT_EQ(parallel.code, 0) << parallel.err;
+  const auto serial = table("out", 100), shared = table("out2", 100);  // every column
+  ASSERT_EQ(serial.size(), 1u);
+  ASSERT_EQ(shared.size(), 1u);
+  EXPECT_NEAR(shared[0][1], serial[0][1], 1e-9 * serial[0][1]);
+  // cells and dofs: fourth and third from the end (before iterations, wall time).
+  const std::size_t cells = serial[0].size() - 4, dofs = cells + 1;
+  EXPECT_EQ(shared[0][cells], serial[0][cells]);
+  EXPECT_EQ(shared[0][dofs], serial[0][dofs]);
+  std::ifstream summary(dir_ / "out2" / "summary.txt");
+  const std::string text{std::istreambuf_iterator<char>(summary), {}};
+  EXPECT_NE(text.find("2 MPI rank(s), 2 per point's mesh"), std::string::npos) << text;
+  // Cells of the shared mesh's VTU: the serial file's count (patches of Q2
+  // cells are subdivided alike in both).
+  const auto vtu_cells = [&](const std::string& folder) {
+    std::ifstream vtu(dir_ / folder / "solution_000.vtu");
+    const std::string xml{std::istreambuf_iterator<char>(vtu), {}};
+    long total = 0;
+    for (std::size_t at = xml.find("NumberOfCells=\""); at != std::string::npos;
+         at = xml.find("NumberOfCells=\"", at + 1))
+      total += std::stol(xml.substr(at + 15));
+    return total;
+  };
+  EXPECT_GT(vtu_cells("out"), 0);
+  EXPECT_EQ(vtu_cells("out2"), vtu_cells("out"));
 }
 
 }  // namespace

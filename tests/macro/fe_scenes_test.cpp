@@ -87,6 +87,34 @@ TEST(FeConePlate, NewtonianFiniteAngleRatio) {
   EXPECT_NEAR(rows[0][kValue] / small_angle, 0.999391, 2e-6);
 }
 
+// Fill level. An underfilled sample with a spherical free surface is the
+// finite-angle solution of radius fill·R, whose torque scales with the cube
+// of the radius for every law (the stress is a function of the polar angle
+// alone): T = fill³ T(R), required like every closed form (≤ 1e-3). An
+// overfilled one adds material with free boundaries: for a Newtonian fluid
+// the dissipation (= TΩ) is the minimum of ∫ 2μ D:D over velocity fields
+// with the walls' values, and the minimiser on the larger sample restricted
+// to the smaller one is admissible there, so the torque can only grow with
+// the fill — T(1) < T(1.05) ≤ T(1.1), an exact inequality.
+TEST(FeConePlate, FillLevelChangesTheTorqueAsItMust) {
+  const auto torque = [](double fill, const std::string& law) {
+    return run_scene("set scene = cone-plate\nsubsection cone-plate\n set radius = 0.025\n"
+                     " set angle = 4\n set truncation = 2.5e-9\n set fill = " +
+                         std::to_string(fill) + "\nend\n" + law,
+                     {0.5})[0];
+  };
+  for (const Law& l : kLaws) {
+    const auto under = torque(0.9, law_text(l));
+    EXPECT_NEAR(under[kValue] / under[kIdeal], 0.9 * 0.9 * 0.9, kRequired * 0.729)
+        << l.tau_y << " " << l.n;
+  }
+  const std::string newtonian = material(0.0, 2.0, 1.0);
+  const double filled = torque(1.0, newtonian)[kValue];
+  const double over = torque(1.05, newtonian)[kValue], more = torque(1.1, newtonian)[kValue];
+  EXPECT_GT(over, filled * (1.0 + 1e-4));
+  EXPECT_GE(more, over * (1.0 - 1e-9));
+}
+
 TEST(FeParallelPlates, MatchesTheClosedForm) {
   for (const Law& l : kLaws) {
     const auto rows = run_scene(
