@@ -26,7 +26,7 @@ void check(int status, const char* step) {
 
 }  // namespace
 
-DirectSolver::DirectSolver() = default;
+DirectSolver::DirectSolver(MatrixKind kind) : kind_(kind) {}
 DirectSolver::~DirectSolver() = default;
 
 void DirectSolver::clear() {
@@ -41,7 +41,8 @@ void DirectSolver::analyse(const dealii::TrilinosWrappers::SparseMatrix& matrix)
   problem_->SetOperator(const_cast<Epetra_CrsMatrix*>(&matrix.trilinos_matrix()));
   auto mumps = std::make_unique<Amesos_Mumps>(*problem_);
   Teuchos::ParameterList parameters;
-  parameters.set("MatrixProperty", "SPD");
+  parameters.set("MatrixProperty",
+                 kind_ == MatrixKind::positive_definite ? "SPD" : "symmetric");
   check(mumps->SetParameters(parameters), "setting its parameters");
   mumps->SetICNTL(kOrdering, kMetis);
   mumps->SetICNTL(kPrintLevel, 0);

@@ -6,7 +6,8 @@
 // matrix but never its pattern, so here the fill-reducing ordering (METIS) and
 // the symbolic analysis are done once per mesh, and each Newton step pays only
 // for the numeric factorisation — in symmetric mode (LDLᵀ), which halves it:
-// every matrix of the scalar problem is symmetric positive definite.
+// the scalar problem's matrices are symmetric positive definite, the Stokes
+// saddle-point matrices symmetric indefinite.
 #pragma once
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -19,15 +20,17 @@ class Epetra_LinearProblem;
 
 namespace softglass::macro::fe {
 
+enum class MatrixKind { positive_definite, symmetric_indefinite };
+
 class DirectSolver {
  public:
-  DirectSolver();
+  explicit DirectSolver(MatrixKind kind);
   ~DirectSolver();
   DirectSolver(const DirectSolver&) = delete;
   DirectSolver& operator=(const DirectSolver&) = delete;
 
-  /// Orders and analyses the pattern of `matrix` (symmetric positive definite),
-  /// which must stay alive, with this pattern, until clear().
+  /// Orders and analyses the pattern of `matrix` (of the solver's kind), which
+  /// must stay alive, with this pattern, until clear().
   void analyse(const dealii::TrilinosWrappers::SparseMatrix& matrix);
   /// Forgets the matrix: call it before the matrix is reinitialised or destroyed
   /// (MUMPS's clean-up uses the matrix's communicator).
@@ -39,6 +42,7 @@ class DirectSolver {
              const dealii::TrilinosWrappers::MPI::Vector& b);
 
  private:
+  MatrixKind kind_;
   std::unique_ptr<Epetra_LinearProblem> problem_;
   std::unique_ptr<Amesos_BaseSolver> solver_;
 };

@@ -228,7 +228,7 @@ class ScalarFlowSolver<dim>::Implementation {
   AffineConstraints<double> constraints_;       // hanging nodes + Dirichlet data
   AffineConstraints<double> zero_constraints_;  // hanging nodes + homogeneous Dirichlet
   MatrixType system_matrix_;
-  DirectSolver direct_;             // analysed once per mesh; destroyed before the matrix
+  DirectSolver direct_{MatrixKind::positive_definite};  // analysed once per mesh; destroyed before the matrix
   VectorType solution_, residual_;  // owned entries only
   mutable VectorType ghosted_;      // see readable()
 

@@ -6,18 +6,26 @@
 //     ∂τ/∂D = 2[η 𝕀 + (τ' − η) N⊗N],   so   J(δu)(v) = ∫ 2η D(δu):D(v)
 //             + 4 η'(γ̇)/γ̇ (D:D(δu))(D:D(v)) − ∫ δp ∇·v − ∫ q ∇·δu,
 //
-// a symmetric saddle-point matrix, factorised by UMFPACK (the problems here
-// have ≲ 10⁵ unknowns). τ' is floored at 0.1η after a step the line search cut
+// a symmetric saddle-point matrix, factorised by MUMPS (direct_solver.h; the
+// problems here have ≲ 10⁵ unknowns). τ' is floored at 0.1η after a step the line search cut
 // (as in the scalar solver), which keeps the velocity block positive definite
 // when the material has just yielded. The step length halves until the
 // residual decreases. When every boundary carries a velocity the pressure is
 // fixed up to a constant: one pressure unknown is pinned to zero.
+//
+// Parallel, as the scalar solver: the mesh is distributed (p4est) over the
+// ranks of settings.mesh_communicator, the matrix and vectors are Trilinos',
+// integrals are summed over the ranks and every decision is taken on global
+// quantities.
 #include "macro/fe/stokes_flow_solver.h"
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/mpi_remote_point_evaluation.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -26,20 +34,23 @@
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <deal.II/numerics/vector_tools_evaluate.h>
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
-#include <fstream>
-#include <set>
+#include <limits>
 
 #include "common/errors.h"
+#include "macro/fe/direct_solver.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/material/regularised_law.h"
 
@@ -50,6 +61,8 @@ using namespace dealii;
 namespace {
 
 constexpr int kHalvings = 12;
+
+using VectorType = TrilinosWrappers::MPI::Vector;
 
 // The boundary velocity as a deal.II function of the 3 components (u, v, p).
 class BoundaryVelocity : public Function<2> {
@@ -75,11 +88,12 @@ class StokesFlowSolver::Implementation {
                  const SolverSettings& settings)
       : law_(law),
         settings_(settings),
+        communicator_(settings.mesh_communicator),
+        triangulation_(communicator_),
         mapping_(2),
         fe_(FE_Q<2>(2), 2, FE_Q<2>(1), 1),
         dof_handler_(triangulation_) {
-    base_.copy_triangulation(base);
-    base_.refine_global(settings.global_refinements);
+    coarse_.copy_triangulation(base);
   }
 
   StokesResult run(const VelocityBoundaryValues& boundary, double rate_c,
@@ -88,8 +102,17 @@ class StokesFlowSolver::Implementation {
   void output_results(const std::filesystem::path& file) const;
 
  private:
-  void setup_system();
-  void assemble_system(const RegularisedLaw& law, bool with_matrix, bool damped);
+  VectorType setup_system();
+  /// `owned` with the values of the ghost cells' dofs, for evaluating fields.
+  const VectorType& readable(const VectorType& owned) const {
+    ghosted_ = owned;
+    return ghosted_;
+  }
+  auto owned_cells() const {
+    return dof_handler_.active_cell_iterators() | IteratorFilters::LocallyOwnedCell();
+  }
+  void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
+                       bool damped);
   unsigned solve_newton(const RegularisedLaw& law, bool allow_damping);
   unsigned solve_with_continuation(double target, double start);
   StokesOutputs evaluate(types::boundary_id force_id, types::boundary_id pressure_id) const;
@@ -98,35 +121,45 @@ class StokesFlowSolver::Implementation {
 
   HerschelBulkley law_;
   SolverSettings settings_;
+  MPI_Comm communicator_;
   VelocityBoundaryValues boundary_;
-  Triangulation<2> base_, triangulation_;
+  Triangulation<2> coarse_;  // the scene's mesh, unrefined
+  parallel::distributed::Triangulation<2> triangulation_;
   MappingQ<2> mapping_;
   FESystem<2> fe_;
   DoFHandler<2> dof_handler_;
+  IndexSet owned_dofs_, relevant_dofs_;
   AffineConstraints<double> constraints_, zero_constraints_;
-  SparsityPattern sparsity_;
-  SparseMatrix<double> matrix_;
-  Vector<double> solution_, residual_;
+  TrilinosWrappers::SparseMatrix matrix_;
+  DirectSolver direct_{MatrixKind::symmetric_indefinite};  // destroyed before the matrix
+  VectorType solution_, residual_;  // owned entries only
+  mutable VectorType ghosted_;
   std::unique_ptr<RegularisedLaw> regularised_;
-  Vector<double> previous_coarse_;
+  VectorType previous_coarse_;
   double previous_rate_ = 0.0;
 };
 
-void StokesFlowSolver::Implementation::setup_system() {
+VectorType StokesFlowSolver::Implementation::setup_system() {
+  direct_.clear();
   dof_handler_.distribute_dofs(fe_);
-  DoFRenumbering::Cuthill_McKee(dof_handler_);
+  owned_dofs_ = dof_handler_.locally_owned_dofs();
+  DoFTools::extract_locally_relevant_dofs(dof_handler_, relevant_dofs_);
   const FEValuesExtractors::Vector velocities(0);
   const FEValuesExtractors::Scalar pressure(2);
-  // Pin one pressure unknown when no boundary is free (closed domain).
-  std::set<types::boundary_id> ids;
-  for (const auto& face : triangulation_.active_face_iterators())
-    if (face->at_boundary()) ids.insert(face->boundary_id());
+  // Pin one pressure unknown when no boundary is free (closed domain): the
+  // lowest-numbered pressure dof of all ranks.
   bool closed = true;
-  for (auto id : ids) closed = closed && boundary_.count(id) > 0;
+  for (const auto id : triangulation_.get_boundary_ids())
+    closed = closed && boundary_.count(id) > 0;
   const IndexSet pressure_dofs = DoFTools::extract_dofs(dof_handler_, fe_.component_mask(pressure));
+  const types::global_dof_index pinned = Utilities::MPI::min(
+      pressure_dofs.n_elements() > 0 ? pressure_dofs.nth_index_in_set(0)
+                                     : std::numeric_limits<types::global_dof_index>::max(),
+      communicator_);
   for (auto [constraints, homogeneous] :
        {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
     constraints->clear();
+    constraints->reinit(relevant_dofs_);
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, f] : boundary_) {
       if (homogeneous) {
@@ -138,20 +171,25 @@ void StokesFlowSolver::Implementation::setup_system() {
                                                  *constraints, fe_.component_mask(velocities));
       }
     }
-    if (closed) constraints->add_line(pressure_dofs.nth_index_in_set(0));
+    if (closed && relevant_dofs_.is_element(pinned)) constraints->add_line(pinned);
     constraints->close();
   }
-  DynamicSparsityPattern dsp(dof_handler_.n_dofs());
+  DynamicSparsityPattern dsp(relevant_dofs_);
   DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints_, false);
-  sparsity_.copy_from(dsp);
-  matrix_.reinit(sparsity_);
-  residual_.reinit(dof_handler_.n_dofs());
+  SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs_, communicator_, relevant_dofs_);
+  matrix_.reinit(owned_dofs_, owned_dofs_, dsp, communicator_);
+  direct_.analyse(matrix_);
+  residual_.reinit(owned_dofs_, communicator_);
+  ghosted_.reinit(owned_dofs_, relevant_dofs_, communicator_);
+  return VectorType(owned_dofs_, communicator_);
 }
 
-void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law, bool with_matrix,
+void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law,
+                                                       const VectorType& u, bool with_matrix,
                                                        bool damped) {
   if (with_matrix) matrix_ = 0.0;
   residual_ = 0.0;
+  const VectorType& field = readable(u);
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature,
                         update_values | update_gradients | update_JxW_values);
@@ -163,11 +201,11 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
   std::vector<SymmetricTensor<2, 2>> strain(quadrature.size()), phi_d(n);
   std::vector<double> p(quadrature.size()), div_u(quadrature.size()), phi_div(n), phi_p(n);
   std::vector<types::global_dof_index> dofs(n);
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
-    fe_values[velocities].get_function_divergences(solution_, div_u);
-    fe_values[pressure].get_function_values(solution_, p);
+    fe_values[velocities].get_function_symmetric_gradients(field, strain);
+    fe_values[velocities].get_function_divergences(field, div_u);
+    fe_values[pressure].get_function_values(field, p);
     cell_matrix = 0.0;
     cell_residual = 0.0;
     for (const unsigned q : fe_values.quadrature_point_indices()) {
@@ -207,26 +245,26 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
       zero_constraints_.distribute_local_to_global(cell_residual, dofs, residual_);
     }
   }
+  if (with_matrix) matrix_.compress(VectorOperation::add);
+  residual_.compress(VectorOperation::add);
 }
 
 unsigned StokesFlowSolver::Implementation::solve_newton(const RegularisedLaw& law,
                                                         bool allow_damping) {
-  Vector<double> update(dof_handler_.n_dofs());
+  VectorType update(owned_dofs_, communicator_), trial(owned_dofs_, communicator_);
   bool damped = false;
   for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
-    assemble_system(law, true, damped);
+    assemble_system(law, solution_, true, damped);
     const double r0 = residual_.l2_norm();
-    SparseDirectUMFPACK direct;
-    direct.initialize(matrix_);
-    update = residual_;
-    direct.solve(update);
+    direct_.factorise();
+    direct_.solve(update, residual_);
     update *= -1.0;
     zero_constraints_.distribute(update);
     double alpha = 1.0;
     for (int k = 0; k < kHalvings; ++k, alpha *= 0.5) {
-      solution_.add(alpha, update);
-      assemble_system(law, false, false);
-      solution_.add(-alpha, update);
+      trial = solution_;
+      trial.add(alpha, update);
+      assemble_system(law, trial, false, false);
       if (residual_.l2_norm() < r0) break;
     }
     solution_.add(alpha, update);
@@ -252,7 +290,7 @@ unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target
 
 StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id force_id,
                                                          types::boundary_id pressure_id) const {
-  StokesOutputs out;
+  const VectorType& field = readable(solution_);
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
   const QGauss<1> face_quadrature(3);
@@ -263,14 +301,17 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
   const FEValuesExtractors::Scalar pressure(2);
   std::vector<SymmetricTensor<2, 2>> strain(quadrature.size()), face_strain(face_quadrature.size());
   std::vector<double> face_p(face_quadrature.size());
-  double area = 0.0, yielded = 0.0, pressure_length = 0.0;
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  // This rank's dissipation, area, yielded area, force (x, y), pressure
+  // integral and the length it is taken over.
+  std::array<double, 7> sums{};
+  auto& [dissipation, area, yielded, force_x, force_y, pressure_sum, pressure_length] = sums;
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+    fe_values[velocities].get_function_symmetric_gradients(field, strain);
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
       const double tau = regularised_->stress(rate);
-      out.dissipation += tau * rate * fe_values.JxW(q);
+      dissipation += tau * rate * fe_values.JxW(q);
       area += fe_values.JxW(q);
       if (tau > law_.yield_stress) yielded += fe_values.JxW(q);
     }
@@ -279,8 +320,8 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
       const auto id = cell->face(f)->boundary_id();
       if (id != force_id && id != pressure_id) continue;
       face_values.reinit(cell, f);
-      face_values[velocities].get_function_symmetric_gradients(solution_, face_strain);
-      face_values[pressure].get_function_values(solution_, face_p);
+      face_values[velocities].get_function_symmetric_gradients(field, face_strain);
+      face_values[pressure].get_function_values(field, face_p);
       for (const unsigned q : face_values.quadrature_point_indices()) {
         const double rate = std::sqrt(2.0 * (face_strain[q] * face_strain[q]));
         const double eta = regularised_->viscosity(rate).value;
@@ -289,39 +330,45 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
           // On the body: −σ n with n out of the fluid is the body's outward
           // normal reversed, so the force on the body is ∫ σ (−n_body) = −∫ σ n.
           const Tensor<1, 2> traction = -face_p[q] * normal + 2.0 * eta * (face_strain[q] * normal);
-          out.force -= traction * face_values.JxW(q);
+          force_x -= traction[0] * face_values.JxW(q);
+          force_y -= traction[1] * face_values.JxW(q);
         }
         if (id == pressure_id) {
-          out.mean_pressure += face_p[q] * face_values.JxW(q);
+          pressure_sum += face_p[q] * face_values.JxW(q);
           pressure_length += face_values.JxW(q);
         }
       }
     }
   }
+  Utilities::MPI::sum(ArrayView<const double>(sums), communicator_, ArrayView<double>(sums));
+  StokesOutputs out;
+  out.dissipation = dissipation;
   out.yielded_fraction = yielded / area;
-  if (pressure_length > 0.0) out.mean_pressure /= pressure_length;
+  out.force = Tensor<1, 2>({force_x, force_y});
+  if (pressure_length > 0.0) out.mean_pressure = pressure_sum / pressure_length;
   return out;
 }
 
 // Uniform, or the top fraction of the Kelly indicator of the velocity plus
 // every cell a yield surface crosses (as in the scalar solver).
 void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
+  const VectorType& field = readable(solution_);
   if (uniform) {
     triangulation_.set_all_refine_flags();
   } else {
     const FEValuesExtractors::Vector velocities(0);
     Vector<float> indicators(triangulation_.n_active_cells());
     KellyErrorEstimator<2>::estimate(mapping_, dof_handler_, QGauss<1>(3),
-                                     std::map<types::boundary_id, const Function<2>*>(), solution_,
+                                     std::map<types::boundary_id, const Function<2>*>(), field,
                                      indicators, fe_.component_mask(velocities));
-    GridRefinement::refine_and_coarsen_fixed_number(triangulation_, indicators,
-                                                    settings_.refine_fraction, 0.0);
+    parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        triangulation_, indicators, settings_.refine_fraction, 0.0);
     const QGauss<2> quadrature(3);
     FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients);
     std::vector<SymmetricTensor<2, 2>> strain(quadrature.size());
-    for (const auto& cell : dof_handler_.active_cell_iterators()) {
+    for (const auto& cell : owned_cells()) {
       fe_values.reinit(cell);
-      fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+      fe_values[velocities].get_function_symmetric_gradients(field, strain);
       bool above = false, below = false;
       for (const unsigned q : fe_values.quadrature_point_indices()) {
         const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
@@ -330,17 +377,15 @@ void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
       if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
     }
   }
-  refine_and_transfer(triangulation_, dof_handler_, solution_, solution_, [this] {
-    setup_system();
-    return Vector<double>(dof_handler_.n_dofs());
-  });
+  refine_and_transfer(triangulation_, dof_handler_, field, solution_,
+                      [this] { return setup_system(); });
   constraints_.distribute(solution_);
 }
 
 // Plain Newton from the current solution; if it fails, damped Newton from the
 // same start (the failed attempt's iterations are counted as the maximum).
 unsigned StokesFlowSolver::Implementation::newton_damped_on_failure(const RegularisedLaw& law) {
-  const Vector<double> start = solution_;
+  const VectorType start = solution_;
   try {
     return solve_newton(law, false);
   } catch (const NumericalError&) {
@@ -355,12 +400,15 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
   const auto start = std::chrono::steady_clock::now();
   boundary_ = boundary;
   StokesResult result;
+  // The same first mesh (and partition) at every point: the previous point's
+  // solution on it is a valid start.
   triangulation_.clear();
-  triangulation_.copy_triangulation(base_);
-  setup_system();
-  solution_.reinit(dof_handler_.n_dofs());
+  triangulation_.copy_triangulation(coarse_);
+  triangulation_.refine_global(settings_.global_refinements);
+  solution_ = setup_system();
   const double target = settings_.relative_rate_scale * rate_c;
-  const bool warm = previous_coarse_.size() == solution_.size() && previous_rate_ > 0.0;
+  const bool warm =
+      previous_rate_ > 0.0 && previous_coarse_.locally_owned_elements() == owned_dofs_;
   if (warm) {
     solution_ = previous_coarse_;
     solution_ *= rate_c / previous_rate_;
@@ -387,34 +435,39 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
     result.iterations += newton_damped_on_failure(*regularised_);
   }
   result.value = evaluate(force_id, pressure_id);
-  result.cells = triangulation_.n_active_cells();
+  result.cells = triangulation_.n_global_active_cells();
   result.dofs = dof_handler_.n_dofs();
   result.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
+// Every rank gets the velocity at every point, wherever its cell lives.
 std::vector<Tensor<1, 2>> StokesFlowSolver::Implementation::velocity_at(
     const std::vector<Point<2>>& points) const {
+  Utilities::MPI::RemotePointEvaluation<2> cache;
+  const auto values =
+      VectorTools::point_values<3>(mapping_, dof_handler_, readable(solution_), points, cache);
+  if (!cache.all_points_found())
+    throw NumericalError("velocity requested at a point outside the domain");
   std::vector<Tensor<1, 2>> result;
-  Vector<double> value(3);
-  for (const Point<2>& x : points) {
-    VectorTools::point_value(mapping_, dof_handler_, solution_, x, value);
-    result.push_back(Tensor<1, 2>({value(0), value(1)}));
-  }
+  for (const auto& v : values) result.push_back(Tensor<1, 2>({v[0], v[1]}));
   return result;
 }
 
+// One VTU file however many ranks share the mesh (MPI-IO); every rank of the
+// mesh's communicator calls this with the same file name.
 void StokesFlowSolver::Implementation::output_results(const std::filesystem::path& file) const {
+  const VectorType& field = readable(solution_);
   const unsigned n_cells = triangulation_.n_active_cells();
   Vector<double> rate(n_cells), tau(n_cells), yielded(n_cells);
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients);
   const FEValuesExtractors::Vector velocities(0);
   std::vector<SymmetricTensor<2, 2>> strain(quadrature.size());
-  for (const auto& cell : dof_handler_.active_cell_iterators()) {
+  for (const auto& cell : owned_cells()) {
     fe_values.reinit(cell);
-    fe_values[velocities].get_function_symmetric_gradients(solution_, strain);
+    fe_values[velocities].get_function_symmetric_gradients(field, strain);
     const unsigned c = cell->active_cell_index();
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       const double g = std::sqrt(2.0 * (strain[q] * strain[q])), t = regularised_->stress(g);
@@ -430,14 +483,16 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
       DataComponentInterpretation::component_is_scalar};
   DataOut<2> data_out;
   data_out.attach_dof_handler(dof_handler_);
-  data_out.add_data_vector(solution_, names, DataOut<2>::type_dof_data, kinds);
+  data_out.add_data_vector(field, names, DataOut<2>::type_dof_data, kinds);
   data_out.add_data_vector(rate, "shear_rate");
   data_out.add_data_vector(tau, "stress");
   data_out.add_data_vector(yielded, "yielded");
   data_out.build_patches(mapping_, 2);
-  std::ofstream out(file);
-  data_out.write_vtu(out);
-  if (!out) throw NumericalError(fmt::format("cannot write {}", file.string()));
+  try {
+    data_out.write_vtu_in_parallel(file.string(), communicator_);
+  } catch (const std::exception&) {
+    throw NumericalError(fmt::format("cannot write {}", file.string()));
+  }
 }
 
 StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const HerschelBulkley& law,
