@@ -71,10 +71,6 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/error_estimator.h>
@@ -91,7 +87,7 @@
 #include <type_traits>
 
 #include "common/errors.h"
-#include "macro/fe/direct_solver.h"
+#include "macro/fe/distributed_system.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/material/regularised_law.h"
 
@@ -111,9 +107,6 @@ constexpr int kLineSearchSteps = 12;
 // Modified Newton (solve_newton): τ' ≥ kTangentFloor·η (solver_settings.h)
 // after a step shorter than kFullStep.
 constexpr double kFullStep = 0.5;
-
-using VectorType = TrilinosWrappers::MPI::Vector;
-using MatrixType = TrilinosWrappers::SparseMatrix;
 
 // The mesh of a section: distributed in 2D; a 1D section stays serial (p4est
 // has no 1D forests, and a line of a few hundred cells gains nothing).
@@ -154,6 +147,7 @@ class ScalarFlowSolver<dim>::Implementation {
         law_(law),
         settings_(settings),
         communicator_(dim == 1 ? MPI_COMM_SELF : settings.mesh_communicator),
+        system_(communicator_, MatrixKind::positive_definite),
         triangulation_(make_section_mesh<dim>(communicator_)),
         mapping_(mapping_degree),
         fe_(settings.fe_degree),
@@ -169,8 +163,6 @@ class ScalarFlowSolver<dim>::Implementation {
   VectorType setup_system();
   void make_constraints();
   void impose_boundary_values();
-  /// `owned` with the values of the ghost cells' dofs, for evaluating fields.
-  const VectorType& readable(const VectorType& owned) const;
 
   // --- regularised method --------------------------------------------------
   void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
@@ -218,19 +210,16 @@ class ScalarFlowSolver<dim>::Implementation {
   SolverSettings settings_;
   Drive drive_;
   MPI_Comm communicator_;
+  DistributedSystem system_;  // matrix, factorisation, residual of the current mesh
 
   Triangulation<dim> coarse_;  // the scene's mesh, unrefined
   std::unique_ptr<SectionMesh<dim>> triangulation_;
   MappingQ<dim> mapping_;
   FE_Q<dim> fe_;
   DoFHandler<dim> dof_handler_;
-  IndexSet owned_dofs_, relevant_dofs_;
   AffineConstraints<double> constraints_;       // hanging nodes + Dirichlet data
   AffineConstraints<double> zero_constraints_;  // hanging nodes + homogeneous Dirichlet
-  MatrixType system_matrix_;
-  DirectSolver direct_{MatrixKind::positive_definite};  // analysed once per mesh; destroyed before the matrix
-  VectorType solution_, residual_;  // owned entries only
-  mutable VectorType ghosted_;      // see readable()
+  VectorType solution_;                         // owned entries only
 
   // The regularised law of the last solve (null for ALG2), and for ALG2 the
   // rate |γ| per quadrature point of this rank's cells, cell by cell.
@@ -250,19 +239,10 @@ class ScalarFlowSolver<dim>::Implementation {
 // the current mesh, and returns a zero vector laid out for them.
 template <int dim>
 VectorType ScalarFlowSolver<dim>::Implementation::setup_system() {
-  direct_.clear();
   dof_handler_.distribute_dofs(fe_);
-  owned_dofs_ = dof_handler_.locally_owned_dofs();
-  DoFTools::extract_locally_relevant_dofs(dof_handler_, relevant_dofs_);
+  system_.set_dofs(dof_handler_);
   make_constraints();
-  DynamicSparsityPattern dsp(relevant_dofs_);
-  DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints_, false);
-  SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs_, communicator_, relevant_dofs_);
-  system_matrix_.reinit(owned_dofs_, owned_dofs_, dsp, communicator_);
-  direct_.analyse(system_matrix_);
-  residual_.reinit(owned_dofs_, communicator_);
-  ghosted_.reinit(owned_dofs_, relevant_dofs_, communicator_);
-  return VectorType(owned_dofs_, communicator_);
+  return system_.make_matrix(dof_handler_, zero_constraints_);
 }
 
 template <int dim>
@@ -270,7 +250,7 @@ void ScalarFlowSolver<dim>::Implementation::make_constraints() {
   for (auto [constraints, homogeneous] :
        {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
     constraints->clear();
-    constraints->reinit(relevant_dofs_);
+    constraints->reinit(system_.relevant);
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, value] : drive_.boundary_values) {
       VectorTools::interpolate_boundary_values(
@@ -286,12 +266,6 @@ void ScalarFlowSolver<dim>::Implementation::impose_boundary_values() {
   constraints_.distribute(solution_);
 }
 
-template <int dim>
-const VectorType& ScalarFlowSolver<dim>::Implementation::readable(const VectorType& owned) const {
-  ghosted_ = owned;
-  return ghosted_;
-}
-
 // --- regularised method -----------------------------------------------------
 
 // Residual R(u)(φ_i) at `u` and, if asked, the Newton matrix, condensed with
@@ -300,9 +274,9 @@ template <int dim>
 void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw& law,
                                                             const VectorType& u, bool with_matrix,
                                                             double tangent_floor) {
-  if (with_matrix) system_matrix_ = 0.0;
-  residual_ = 0.0;
-  const VectorType& field = readable(u);
+  if (with_matrix) system_.matrix = 0.0;
+  system_.residual = 0.0;
+  const VectorType& field = system_.readable(u);
   const QGauss<dim> quadrature(fe_.degree + 1);
   FEValues<dim> fe_values(
       mapping_, fe_, quadrature,
@@ -343,20 +317,20 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
     }
     cell->get_dof_indices(dofs);
     if (with_matrix) {
-      zero_constraints_.distribute_local_to_global(cell_matrix, cell_residual, dofs, system_matrix_,
-                                                   residual_);
+      zero_constraints_.distribute_local_to_global(cell_matrix, cell_residual, dofs, system_.matrix,
+                                                   system_.residual);
     } else {
-      zero_constraints_.distribute_local_to_global(cell_residual, dofs, residual_);
+      zero_constraints_.distribute_local_to_global(cell_residual, dofs, system_.residual);
     }
   }
-  if (with_matrix) system_matrix_.compress(VectorOperation::add);
-  residual_.compress(VectorOperation::add);
+  if (with_matrix) system_.matrix.compress(VectorOperation::add);
+  system_.residual.compress(VectorOperation::add);
 }
 
 template <int dim>
 unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law,
                                                              bool allow_damping) {
-  VectorType update(owned_dofs_, communicator_), trial(owned_dofs_, communicator_);
+  VectorType update = system_.vector(), trial = system_.vector();
   // After a step the line search had to cut short, the next one uses a
   // modified tangent. Where the material has just yielded, τ' = dτ/dγ̇ is
   // orders of magnitude below η = τ/γ̇ (n < 1, small ε), so the Newton step
@@ -369,24 +343,24 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLa
   bool damped = false;
   for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
     assemble_system(law, solution_, true, damped ? kTangentFloor : 0.0);
-    const double residual_norm = residual_.l2_norm();
-    direct_.factorise();
-    direct_.solve(update, residual_);
+    const double residual_norm = system_.residual.l2_norm();
+    system_.factorise();
+    system_.solve(update, system_.residual);
     update *= -1.0;
     zero_constraints_.distribute(update);
 
     // Full step if it lowers the residual; else the exact line search on J,
     // on φ'(α) = R(u + αδ)(δ).
-    const double slope0 = residual_ * update;  // φ'(0) < 0: a descent direction
+    const double slope0 = system_.residual * update;  // φ'(0) < 0: a descent direction
     const auto slope_at = [&](double alpha) {
       trial = solution_;
       trial.add(alpha, update);
       assemble_system(law, trial, false);
-      return residual_ * update;
+      return system_.residual * update;
     };
     double alpha = 1.0;
     const double d_full = slope_at(1.0);
-    if (residual_.l2_norm() > residual_norm && slope0 < 0.0 && d_full > 0.0) {
+    if (system_.residual.l2_norm() > residual_norm && slope0 < 0.0 && d_full > 0.0) {
       double lo = 0.0, hi = 1.0, d_lo = slope0, d_hi = d_full;
       for (int k = 0; k < kLineSearchSteps; ++k) {
         alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
@@ -473,14 +447,14 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
   std::vector<types::global_dof_index> dofs(n);
   FullMatrix<double> cell_matrix(n, n);
   Vector<double> cell_rhs(n);
-  VectorType rhs(owned_dofs_, communicator_);
+  VectorType rhs = system_.vector();
 
   // The u-step matrix r∫ρs²∇φ_i·∇φ_j is the same at every iteration: factorise
   // it once. The Dirichlet data enter its right-hand side through the
   // inhomogeneous constraints, so the local matrices are needed for that too.
   const auto assemble = [&](bool with_matrix) {
     rhs = 0.0;
-    if (with_matrix) system_matrix_ = 0.0;
+    if (with_matrix) system_.matrix = 0.0;
     std::size_t k = 0;
     for (const auto& cell : owned_cells()) {
       fe_values.reinit(cell);
@@ -501,19 +475,19 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
       }
       cell->get_dof_indices(dofs);
       if (with_matrix) {
-        constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix_, rhs);
+        constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_.matrix, rhs);
       } else {
         constraints_.distribute_local_to_global(cell_rhs, dofs, rhs, cell_matrix);
       }
       k += nq;
     }
-    if (with_matrix) system_matrix_.compress(VectorOperation::add);
+    if (with_matrix) system_.matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
   };
   // Start from the current u (a regularised solution, when there is one):
   // γ = s∇u and λ = its regularised stress, so ALG2 only corrects the plug.
   {
-    const VectorType& field = readable(solution_);
+    const VectorType& field = system_.readable(solution_);
     std::size_t k = 0;
     for (const auto& cell : owned_cells()) {
       fe_values.reinit(cell);
@@ -527,18 +501,18 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
   }
   regularised_.reset();
   assemble(true);
-  direct_.factorise();
+  system_.factorise();
 
   const BoundaryFunctional none;
   unsigned iteration = 0;
   unsigned next_record = 1;
   for (iteration = 1; iteration <= settings_.al_max_iterations; ++iteration) {
     if (iteration > 1) assemble(false);
-    direct_.solve(solution_, rhs);
+    system_.solve(solution_, rhs);
     constraints_.distribute(solution_);
 
     // Local steps 2 and 3, and the constraint residual ‖s∇u − γ‖ against ‖γ‖.
-    const VectorType& field = readable(solution_);
+    const VectorType& field = system_.readable(solution_);
     double mismatch = 0.0, norm = 0.0, volume = 0.0;
     std::size_t k = 0;
     for (const auto& cell : owned_cells()) {
@@ -587,7 +561,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
 
 template <int dim>
 Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional& boundary) const {
-  const VectorType& field = readable(solution_);
+  const VectorType& field = system_.readable(solution_);
   const QGauss<dim> quadrature(fe_.degree + 1);
   FEValues<dim> fe_values(
       mapping_, fe_, quadrature,
@@ -637,7 +611,7 @@ Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional
 
 template <int dim>
 void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
-  const VectorType& field = readable(solution_);
+  const VectorType& field = system_.readable(solution_);
   Vector<float> indicators(triangulation_->n_active_cells());
   KellyErrorEstimator<dim>::estimate(mapping_, dof_handler_, QGauss<dim - 1>(fe_.degree + 1),
                                      std::map<types::boundary_id, const Function<dim>*>(), field,
@@ -688,7 +662,7 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
   const double rate_c = drive.characteristic_rate;
   const double target = settings_.relative_rate_scale * rate_c;
   const bool warm = previous_rate_ > 0.0 &&
-                    previous_base_solution_.locally_owned_elements() == owned_dofs_;
+                    previous_base_solution_.locally_owned_elements() == system_.owned;
   if (warm) {
     // The profile of the previous point, rescaled by the ratio of shear rates.
     solution_ = previous_base_solution_;
@@ -771,7 +745,7 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
     const std::filesystem::path& file) const {
   // Cell averages of the derived fields (one value per cell keeps the file
   // small and shows the yield surface as the set of partly yielded cells).
-  const VectorType& field = readable(solution_);
+  const VectorType& field = system_.readable(solution_);
   const unsigned n_cells = triangulation_->n_active_cells();
   Vector<double> rate(n_cells), tau(n_cells), eta(n_cells), yielded(n_cells);
   const QGauss<dim> quadrature(fe_.degree + 1);
@@ -800,6 +774,8 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
   data_out.add_data_vector(eta, "viscosity");
   data_out.add_data_vector(yielded, "yielded");
   data_out.build_patches(mapping_, fe_.degree);
+  // A 1D section is solved whole on every rank of its group: one writes it.
+  if (dim == 1 && Utilities::MPI::this_mpi_process(settings_.mesh_communicator) != 0) return;
   try {
     data_out.write_vtu_in_parallel(file.string(), communicator_);
   } catch (const std::exception&) {

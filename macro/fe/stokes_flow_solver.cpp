@@ -33,10 +33,6 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/error_estimator.h>
@@ -50,7 +46,7 @@
 #include <limits>
 
 #include "common/errors.h"
-#include "macro/fe/direct_solver.h"
+#include "macro/fe/distributed_system.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/material/regularised_law.h"
 
@@ -61,8 +57,6 @@ using namespace dealii;
 namespace {
 
 constexpr int kHalvings = 12;
-
-using VectorType = TrilinosWrappers::MPI::Vector;
 
 // The boundary velocity as a deal.II function of the 3 components (u, v, p).
 class BoundaryVelocity : public Function<2> {
@@ -89,6 +83,7 @@ class StokesFlowSolver::Implementation {
       : law_(law),
         settings_(settings),
         communicator_(settings.mesh_communicator),
+        system_(communicator_, MatrixKind::symmetric_indefinite),
         triangulation_(communicator_),
         mapping_(2),
         fe_(FE_Q<2>(2), 2, FE_Q<2>(1), 1),
@@ -103,11 +98,6 @@ class StokesFlowSolver::Implementation {
 
  private:
   VectorType setup_system();
-  /// `owned` with the values of the ghost cells' dofs, for evaluating fields.
-  const VectorType& readable(const VectorType& owned) const {
-    ghosted_ = owned;
-    return ghosted_;
-  }
   auto owned_cells() const {
     return dof_handler_.active_cell_iterators() | IteratorFilters::LocallyOwnedCell();
   }
@@ -122,28 +112,23 @@ class StokesFlowSolver::Implementation {
   HerschelBulkley law_;
   SolverSettings settings_;
   MPI_Comm communicator_;
+  DistributedSystem system_;  // matrix, factorisation, residual of the current mesh
   VelocityBoundaryValues boundary_;
   Triangulation<2> coarse_;  // the scene's mesh, unrefined
   parallel::distributed::Triangulation<2> triangulation_;
   MappingQ<2> mapping_;
   FESystem<2> fe_;
   DoFHandler<2> dof_handler_;
-  IndexSet owned_dofs_, relevant_dofs_;
   AffineConstraints<double> constraints_, zero_constraints_;
-  TrilinosWrappers::SparseMatrix matrix_;
-  DirectSolver direct_{MatrixKind::symmetric_indefinite};  // destroyed before the matrix
-  VectorType solution_, residual_;  // owned entries only
-  mutable VectorType ghosted_;
+  VectorType solution_;  // owned entries only
   std::unique_ptr<RegularisedLaw> regularised_;
   VectorType previous_coarse_;
   double previous_rate_ = 0.0;
 };
 
 VectorType StokesFlowSolver::Implementation::setup_system() {
-  direct_.clear();
   dof_handler_.distribute_dofs(fe_);
-  owned_dofs_ = dof_handler_.locally_owned_dofs();
-  DoFTools::extract_locally_relevant_dofs(dof_handler_, relevant_dofs_);
+  system_.set_dofs(dof_handler_);
   const FEValuesExtractors::Vector velocities(0);
   const FEValuesExtractors::Scalar pressure(2);
   // Pin one pressure unknown when no boundary is free (closed domain): the
@@ -159,7 +144,7 @@ VectorType StokesFlowSolver::Implementation::setup_system() {
   for (auto [constraints, homogeneous] :
        {std::pair{&constraints_, false}, std::pair{&zero_constraints_, true}}) {
     constraints->clear();
-    constraints->reinit(relevant_dofs_);
+    constraints->reinit(system_.relevant);
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, f] : boundary_) {
       if (homogeneous) {
@@ -171,25 +156,18 @@ VectorType StokesFlowSolver::Implementation::setup_system() {
                                                  *constraints, fe_.component_mask(velocities));
       }
     }
-    if (closed && relevant_dofs_.is_element(pinned)) constraints->add_line(pinned);
+    if (closed && system_.relevant.is_element(pinned)) constraints->add_line(pinned);
     constraints->close();
   }
-  DynamicSparsityPattern dsp(relevant_dofs_);
-  DoFTools::make_sparsity_pattern(dof_handler_, dsp, zero_constraints_, false);
-  SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs_, communicator_, relevant_dofs_);
-  matrix_.reinit(owned_dofs_, owned_dofs_, dsp, communicator_);
-  direct_.analyse(matrix_);
-  residual_.reinit(owned_dofs_, communicator_);
-  ghosted_.reinit(owned_dofs_, relevant_dofs_, communicator_);
-  return VectorType(owned_dofs_, communicator_);
+  return system_.make_matrix(dof_handler_, zero_constraints_);
 }
 
 void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law,
                                                        const VectorType& u, bool with_matrix,
                                                        bool damped) {
-  if (with_matrix) matrix_ = 0.0;
-  residual_ = 0.0;
-  const VectorType& field = readable(u);
+  if (with_matrix) system_.matrix = 0.0;
+  system_.residual = 0.0;
+  const VectorType& field = system_.readable(u);
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature,
                         update_values | update_gradients | update_JxW_values);
@@ -239,25 +217,25 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
     }
     cell->get_dof_indices(dofs);
     if (with_matrix) {
-      zero_constraints_.distribute_local_to_global(cell_matrix, cell_residual, dofs, matrix_,
-                                                   residual_);
+      zero_constraints_.distribute_local_to_global(cell_matrix, cell_residual, dofs, system_.matrix,
+                                                   system_.residual);
     } else {
-      zero_constraints_.distribute_local_to_global(cell_residual, dofs, residual_);
+      zero_constraints_.distribute_local_to_global(cell_residual, dofs, system_.residual);
     }
   }
-  if (with_matrix) matrix_.compress(VectorOperation::add);
-  residual_.compress(VectorOperation::add);
+  if (with_matrix) system_.matrix.compress(VectorOperation::add);
+  system_.residual.compress(VectorOperation::add);
 }
 
 unsigned StokesFlowSolver::Implementation::solve_newton(const RegularisedLaw& law,
                                                         bool allow_damping) {
-  VectorType update(owned_dofs_, communicator_), trial(owned_dofs_, communicator_);
+  VectorType update = system_.vector(), trial = system_.vector();
   bool damped = false;
   for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
     assemble_system(law, solution_, true, damped);
-    const double r0 = residual_.l2_norm();
-    direct_.factorise();
-    direct_.solve(update, residual_);
+    const double r0 = system_.residual.l2_norm();
+    system_.factorise();
+    system_.solve(update, system_.residual);
     update *= -1.0;
     zero_constraints_.distribute(update);
     double alpha = 1.0;
@@ -265,7 +243,7 @@ unsigned StokesFlowSolver::Implementation::solve_newton(const RegularisedLaw& la
       trial = solution_;
       trial.add(alpha, update);
       assemble_system(law, trial, false, false);
-      if (residual_.l2_norm() < r0) break;
+      if (system_.residual.l2_norm() < r0) break;
     }
     solution_.add(alpha, update);
     damped = allow_damping && alpha < 0.5;
@@ -290,7 +268,7 @@ unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target
 
 StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id force_id,
                                                          types::boundary_id pressure_id) const {
-  const VectorType& field = readable(solution_);
+  const VectorType& field = system_.readable(solution_);
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
   const QGauss<1> face_quadrature(3);
@@ -352,7 +330,7 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
 // Uniform, or the top fraction of the Kelly indicator of the velocity plus
 // every cell a yield surface crosses (as in the scalar solver).
 void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
-  const VectorType& field = readable(solution_);
+  const VectorType& field = system_.readable(solution_);
   if (uniform) {
     triangulation_.set_all_refine_flags();
   } else {
@@ -408,7 +386,7 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
   solution_ = setup_system();
   const double target = settings_.relative_rate_scale * rate_c;
   const bool warm =
-      previous_rate_ > 0.0 && previous_coarse_.locally_owned_elements() == owned_dofs_;
+      previous_rate_ > 0.0 && previous_coarse_.locally_owned_elements() == system_.owned;
   if (warm) {
     solution_ = previous_coarse_;
     solution_ *= rate_c / previous_rate_;
@@ -447,7 +425,7 @@ std::vector<Tensor<1, 2>> StokesFlowSolver::Implementation::velocity_at(
     const std::vector<Point<2>>& points) const {
   Utilities::MPI::RemotePointEvaluation<2> cache;
   const auto values =
-      VectorTools::point_values<3>(mapping_, dof_handler_, readable(solution_), points, cache);
+      VectorTools::point_values<3>(mapping_, dof_handler_, system_.readable(solution_), points, cache);
   if (!cache.all_points_found())
     throw NumericalError("velocity requested at a point outside the domain");
   std::vector<Tensor<1, 2>> result;
@@ -458,7 +436,7 @@ std::vector<Tensor<1, 2>> StokesFlowSolver::Implementation::velocity_at(
 // One VTU file however many ranks share the mesh (MPI-IO); every rank of the
 // mesh's communicator calls this with the same file name.
 void StokesFlowSolver::Implementation::output_results(const std::filesystem::path& file) const {
-  const VectorType& field = readable(solution_);
+  const VectorType& field = system_.readable(solution_);
   const unsigned n_cells = triangulation_.n_active_cells();
   Vector<double> rate(n_cells), tau(n_cells), yielded(n_cells);
   const QGauss<2> quadrature(3);
