@@ -92,7 +92,8 @@ class StokesFlowSolver::Implementation {
   }
 
   StokesResult run(const VelocityBoundaryValues& boundary, double rate_c,
-                   types::boundary_id force_id, types::boundary_id pressure_id);
+                   types::boundary_id force_id, types::boundary_id pressure_id,
+                   const std::vector<Point<2>>& probe_points);
   std::vector<Tensor<1, 2>> velocity_at(const std::vector<Point<2>>& points) const;
   void output_results(const std::filesystem::path& file) const;
 
@@ -114,6 +115,7 @@ class StokesFlowSolver::Implementation {
   MPI_Comm communicator_;
   DistributedSystem system_;  // matrix, factorisation, residual of the current mesh
   VelocityBoundaryValues boundary_;
+  std::vector<Point<2>> probe_points_;
   Triangulation<2> coarse_;  // the scene's mesh, unrefined
   parallel::distributed::Triangulation<2> triangulation_;
   MappingQ<2> mapping_;
@@ -324,6 +326,7 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
   out.yielded_fraction = yielded / area;
   out.force = Tensor<1, 2>({force_x, force_y});
   if (pressure_length > 0.0) out.mean_pressure = pressure_sum / pressure_length;
+  if (!probe_points_.empty()) out.probes = velocity_at(probe_points_);
   return out;
 }
 
@@ -374,9 +377,11 @@ unsigned StokesFlowSolver::Implementation::newton_damped_on_failure(const Regula
 
 StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues& boundary,
                                                    double rate_c, types::boundary_id force_id,
-                                                   types::boundary_id pressure_id) {
+                                                   types::boundary_id pressure_id,
+                                                   const std::vector<Point<2>>& probe_points) {
   const auto start = std::chrono::steady_clock::now();
   boundary_ = boundary;
+  probe_points_ = probe_points;
   StokesResult result;
   // The same first mesh (and partition) at every point: the previous point's
   // solution on it is a valid start.
@@ -481,8 +486,10 @@ StokesFlowSolver::~StokesFlowSolver() = default;
 
 StokesResult StokesFlowSolver::run(const VelocityBoundaryValues& boundary,
                                    double characteristic_rate, types::boundary_id force_boundary,
-                                   types::boundary_id pressure_boundary) {
-  return impl_->run(boundary, characteristic_rate, force_boundary, pressure_boundary);
+                                   types::boundary_id pressure_boundary,
+                                   const std::vector<Point<2>>& probe_points) {
+  return impl_->run(boundary, characteristic_rate, force_boundary, pressure_boundary,
+                    probe_points);
 }
 
 std::vector<Tensor<1, 2>> StokesFlowSolver::velocity_at(const std::vector<Point<2>>& points) const {

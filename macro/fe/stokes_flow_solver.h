@@ -39,6 +39,8 @@ struct StokesOutputs {
   dealii::Tensor<1, 2> force;
   /// Mean pressure on the boundary `pressure_boundary` [Pa].
   double mean_pressure = 0.0;
+  /// The velocity at the run's probe points [m/s].
+  std::vector<dealii::Tensor<1, 2>> probes;
 };
 
 struct StokesResult {
@@ -57,10 +59,12 @@ class StokesFlowSolver {
 
   /// Solves with the given boundary velocities; γ̇_c sets the regularisation
   /// scale. Forces are integrated over `force_boundary`, the mean pressure
-  /// over `pressure_boundary` (invalid id: none).
+  /// over `pressure_boundary` (invalid id: none); the velocity is sampled at
+  /// `probe_points` on every mesh (so that point values get error estimates).
   StokesResult run(const VelocityBoundaryValues& boundary, double characteristic_rate,
                    dealii::types::boundary_id force_boundary,
-                   dealii::types::boundary_id pressure_boundary);
+                   dealii::types::boundary_id pressure_boundary,
+                   const std::vector<dealii::Point<2>>& probe_points = {});
 
   /// u at points of the domain (last solve, fine mesh).
   std::vector<dealii::Tensor<1, 2>> velocity_at(const std::vector<dealii::Point<2>>& points) const;
