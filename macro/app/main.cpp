@@ -16,6 +16,7 @@
 
 #include "common/command_line.h"
 #include "common/errors.h"
+#include "common/mpi_launch.h"
 #include "common/version.h"
 #include "macro/app/compare.h"
 #include "macro/app/run.h"
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   using namespace softglass;
   // MPI (a no-op without mpirun): sweeps are split over groups of ranks, each
   // group sharing its points' meshes (operating_points.h).
+  prefer_lean_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   CLI::App app{
       "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "

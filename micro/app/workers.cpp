@@ -4,18 +4,9 @@
 
 #include <cstdlib>
 
+#include "common/mpi_launch.h"
+
 namespace softglass::micro {
-
-namespace {
-
-// Set by Open MPI's, MPICH's (Hydra) and Slurm's starters respectively.
-bool launched_by_mpi() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"})
-    if (std::getenv(variable)) return true;
-  return false;
-}
-
-}  // namespace
 
 Workers::Workers() : mpi_(launched_by_mpi()) {
   if (!mpi_) return;
