@@ -12,6 +12,7 @@
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/operating_points.h"
+#include "macro/app/results_file.h"
 #include "macro/app/scene_file.h"
 #include "macro/material/material_parameters.h"
 #include "macro/scenes/scene.h"
@@ -47,7 +48,8 @@ int run(const RunOptions& options) {
   // behind; rank 0 alone then claims the output and writes the tables.
   std::unique_ptr<Scene> scene =
       make_scene(prm, material, settings, options.scene_file.parent_path());
-  ClaimedOutputs claimed = claim_outputs(directory, {"results.csv", "summary.txt"}, options.force);
+  ClaimedOutputs claimed =
+      claim_outputs(directory, {"results.csv", "summary.txt", "results.h5"}, options.force);
   if (claimed.refused) return kExitOutputExists;
   const Column drive = scene->drive();
   const std::vector<Column> columns = scene->columns();
@@ -60,6 +62,7 @@ int run(const RunOptions& options) {
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0) return kExitOk;
   AtomicOutput& csv_file = *claimed.files[0];
   AtomicOutput& summary_file = *claimed.files[1];
+  AtomicOutput& h5_file = *claimed.files[2];
   const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
   std::ofstream csv(csv_file.temporary_path());
@@ -111,11 +114,22 @@ int run(const RunOptions& options) {
         "of order eps (zero for the exact law)\n",
         unyielded);
   }
-  summary << "\nfull parameter set:\n";
-  prm.print_parameters(summary, dealii::ParameterHandler::Text);
+  std::ostringstream parameters;
+  prm.print_parameters(parameters, dealii::ParameterHandler::Text);
+  summary << "\nfull parameter set:\n" << parameters.str();
   summary.close();
+  write_results_h5(h5_file.temporary_path(), drive, columns, points, rows,
+                   {.software = fmt::format("softglass macro {} ({})", kVersion, kGitRevision),
+                    .scene_file = options.scene_file.string(),
+                    .description = scene->description(),
+                    .model = describe_model(material, settings),
+                    .parameters = parameters.str(),
+                    .wall_time = wall,
+                    .mpi_ranks = ranks,
+                    .ranks_per_point = groups.ranks_per_point()});
   csv_file.commit();
   summary_file.commit();
+  h5_file.commit();
   if (!options.quiet) {
     std::cout << fmt::format("{} operating points in {:.2f} s; results in {}\n", points.size(),
                              wall, directory.string());

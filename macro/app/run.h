@@ -1,6 +1,6 @@
 // `macro run FILE.prm`: solve the scene at every operating point of the sweep
-// and write results.csv, summary.txt and ParaView files into the output
-// directory.
+// and write results.csv, results.h5, summary.txt and ParaView files into the
+// output directory.
 #pragma once
 
 #include <filesystem>

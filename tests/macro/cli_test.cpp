@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "common/h5_file.h"
 #include "tests/common/command_line.h"
 
 namespace {
@@ -86,6 +87,20 @@ TEST_F(MacroCli, RunsAndWritesResults) {
   EXPECT_EQ(rows, 3);  // header + 2 operating points
   EXPECT_TRUE(fs::exists(dir_ / "out" / "summary.txt"));
   EXPECT_TRUE(fs::exists(dir_ / "out" / "solution_001.vtu"));
+  // results.h5 holds the CSV's table, column by column, with units and the
+  // parameter set (the CSV prints 10 significant digits).
+  const softglass::H5Group h5 = softglass::H5File::open(dir_ / "out" / "results.h5").root();
+  const auto csv_rows = table("out");
+  const std::vector<double> omega = h5.read_array("results/rotation_rate").data;
+  const std::vector<double> torque = h5.read_array("results/torque").data;
+  ASSERT_EQ(torque.size(), csv_rows.size());
+  for (std::size_t k = 0; k < torque.size(); ++k) {
+    EXPECT_EQ(omega[k], csv_rows[k][0]);
+    EXPECT_NEAR(torque[k], csv_rows[k][1], 1e-9 * std::abs(csv_rows[k][1]));
+  }
+  EXPECT_EQ(h5.dataset_attribute("results/torque", "units"), "N m");
+  EXPECT_NE(h5.read_string("parameters").find("set inner radius = 0.02"), std::string::npos);
+  EXPECT_EQ(h5.attribute_int("operating_points"), 2);
 }
 
 TEST_F(MacroCli, ExistingOutputNeedsForce) {

@@ -1,0 +1,31 @@
+#include "macro/app/results_file.h"
+
+#include "common/h5_file.h"
+
+namespace softglass::macro::app {
+
+void write_results_h5(const std::filesystem::path& path, const Column& drive,
+                      const std::vector<Column>& columns, const std::vector<double>& points,
+                      const std::vector<std::vector<double>>& rows, const RunProvenance& run) {
+  H5File file = H5File::create(path);
+  H5Group root = file.root();
+  root.set_attribute("software", run.software);
+  root.set_attribute("scene_file", run.scene_file);
+  root.set_attribute("wall_time", run.wall_time);
+  root.set_attribute("mpi_ranks", run.mpi_ranks);
+  root.set_attribute("ranks_per_point", run.ranks_per_point);
+  root.set_attribute("operating_points", points.size());
+  root.write_string("description", run.description);
+  root.write_string("model", run.model);
+  root.write_string("parameters", run.parameters);
+  H5Group results = root.create_group("results");
+  results.write(drive.name, points, {}, {.units = drive.unit, .description = "operating point"});
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    std::vector<double> column;
+    for (const auto& row : rows) column.push_back(row[c]);
+    results.write(columns[c].name, column, {}, {.units = columns[c].unit});
+  }
+  file.close();
+}
+
+}  // namespace softglass::macro::app
