@@ -9,12 +9,14 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "bridge/io/csv_table.h"
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/measured_torques.h"
 #include "macro/app/operating_points.h"
+#include "macro/app/results_file.h"
 #include "macro/app/scene_file.h"
 #include "macro/io/overlay_plot.h"
 #include "macro/material/material_parameters.h"
@@ -125,7 +127,8 @@ int compare(const CompareOptions& o) {
                                                            o.scene_file.stem().string()))
                        : o.output;
   ClaimedOutputs claimed =
-      claim_outputs(directory, {"comparison.csv", "summary.txt", "comparison.png"}, o.force);
+      claim_outputs(directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"},
+                    o.force);
   if (claimed.refused) return kExitOutputExists;
   // The number of points is known now; when ranks are to share meshes, the
   // scene is made again on its group's ranks.
@@ -170,15 +173,30 @@ int compare(const CompareOptions& o) {
   }
 
   // The table, point by point.
-  std::vector<std::string> names{"angular_velocity [rad/s]", "shear_rate [1/s]",
-                                 "measured_torque [N m]",    "predicted_torque [N m]",
-                                 "relative_error [1]",       "predicted_torque_error_estimate [N m]",
-                                 "measured_stress [Pa]",     "predicted_stress [Pa]",
-                                 "yielded_fraction [1]"};
+  std::vector<Column> table{{"angular_velocity", "rad/s"},
+                            {"shear_rate", "1/s"},
+                            {"measured_torque", "N m"},
+                            {"predicted_torque", "N m"},
+                            {"relative_error", "1"},
+                            {"predicted_torque_error_estimate", "N m"},
+                            {"measured_stress", "Pa"},
+                            {"predicted_stress", "Pa"},
+                            {"yielded_fraction", "1"}};
   if (compare_force) {
-    for (const char* c : {"measured_normal_force [N]", "predicted_normal_force [N]",
-                          "normal_force_relative_error [1]"})
-      names.push_back(c);
+    table.insert(table.end(), {{"measured_normal_force", "N"},
+                               {"predicted_normal_force", "N"},
+                               {"normal_force_relative_error", "1"}});
+  }
+  std::vector<std::vector<double>> table_rows;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<double>& v = table_rows.emplace_back(std::vector<double>{
+        measured.angular_velocity[i], measured.shear_rate[i], measured.torque[i], predicted[i],
+        predicted[i] / measured.torque[i] - 1.0, std::abs(rows[i][disc]) + std::abs(rows[i][reg]),
+        measured.stress[i], constants.stress_constant * predicted[i], rows[i][yielded]});
+    if (compare_force) {
+      v.insert(v.end(), {(*measured.normal_force)[i], predicted_force[i],
+                         predicted_force[i] / (*measured.normal_force)[i] - 1.0});
+    }
   }
   std::vector<std::string> header_lines{
       fmt::format("softglass macro compare {} ({})", kVersion, kGitRevision),
@@ -191,23 +209,9 @@ int compare(const CompareOptions& o) {
   AtomicOutput& csv_file = *claimed.files[0];
   std::ofstream csv(csv_file.temporary_path());
   for (const std::string& line : header_lines) csv << "# " << line << "\n";
-  csv << fmt::format("{}\n", fmt::join(names, ","));
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<double> v{measured.angular_velocity[i],
-                          measured.shear_rate[i],
-                          measured.torque[i],
-                          predicted[i],
-                          predicted[i] / measured.torque[i] - 1.0,
-                          std::abs(rows[i][disc]) + std::abs(rows[i][reg]),
-                          measured.stress[i],
-                          constants.stress_constant * predicted[i],
-                          rows[i][yielded]};
-    if (compare_force) {
-      v.insert(v.end(), {(*measured.normal_force)[i], predicted_force[i],
-                         predicted_force[i] / (*measured.normal_force)[i] - 1.0});
-    }
-    csv << fmt::format("{:.8g}\n", fmt::join(v, ","));
-  }
+  for (std::size_t c = 0; c < table.size(); ++c) csv << (c ? "," : "") << csv_header(table[c]);
+  csv << "\n";
+  for (const auto& v : table_rows) csv << fmt::format("{:.8g}\n", fmt::join(v, ","));
   csv.close();
   if (!csv) throw NumericalError(fmt::format("cannot write {}", csv_file.final_path().string()));
 
@@ -236,8 +240,22 @@ int compare(const CompareOptions& o) {
   summary.close();
   if (!summary)
     throw NumericalError(fmt::format("cannot write {}", summary_file.final_path().string()));
+  std::ostringstream parameters;
+  prm.print_parameters(parameters, dealii::ParameterHandler::Text);
+  AtomicOutput& h5_file = *claimed.files[3];
+  write_results_h5(h5_file.temporary_path(), table, table_rows,
+                   {.software = header_lines[0],
+                    .scene_file = o.scene_file.string(),
+                    .description = fmt::format("{}\n", fmt::join(header_lines.begin() + 1,
+                                                                 header_lines.end(), "\n")),
+                    .model = describe_model(material, settings),
+                    .parameters = parameters.str(),
+                    .wall_time = wall,
+                    .mpi_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+                    .ranks_per_point = groups.ranks_per_point()});
   csv_file.commit();
   summary_file.commit();
+  h5_file.commit();
 
   if (!o.quiet) {
     std::cout << fmt::format("{:>14} {:>12} {:>14} {:>14} {:>8}\n", "Omega [rad/s]",

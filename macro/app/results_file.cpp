@@ -4,8 +4,11 @@
 
 namespace softglass::macro::app {
 
-void write_results_h5(const std::filesystem::path& path, const Column& drive,
-                      const std::vector<Column>& columns, const std::vector<double>& points,
+std::string csv_header(const Column& column) {
+  return column.name + " [" + column.unit + "]";
+}
+
+void write_results_h5(const std::filesystem::path& path, const std::vector<Column>& columns,
                       const std::vector<std::vector<double>>& rows, const RunProvenance& run) {
   H5File file = H5File::create(path);
   H5Group root = file.root();
@@ -14,12 +17,11 @@ void write_results_h5(const std::filesystem::path& path, const Column& drive,
   root.set_attribute("wall_time", run.wall_time);
   root.set_attribute("mpi_ranks", run.mpi_ranks);
   root.set_attribute("ranks_per_point", run.ranks_per_point);
-  root.set_attribute("operating_points", points.size());
+  root.set_attribute("operating_points", rows.size());
   root.write_string("description", run.description);
   root.write_string("model", run.model);
   root.write_string("parameters", run.parameters);
   H5Group results = root.create_group("results");
-  results.write(drive.name, points, {}, {.units = drive.unit, .description = "operating point"});
   for (std::size_t c = 0; c < columns.size(); ++c) {
     std::vector<double> column;
     for (const auto& row : rows) column.push_back(row[c]);

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <fstream>
@@ -18,14 +19,6 @@
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
-
-namespace {
-
-std::string header(const Column& c) {
-  return fmt::format("{} [{}]", c.name, c.unit);
-}
-
-}  // namespace
 
 int run(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -65,17 +58,21 @@ int run(const RunOptions& options) {
   AtomicOutput& h5_file = *claimed.files[2];
   const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
+  // The table of results.csv and results.h5: the operating point, then the row.
+  std::vector<Column> table{drive};
+  table.insert(table.end(), columns.begin(), columns.end());
+  std::vector<std::vector<double>> table_rows;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    table_rows.push_back({points[k]});
+    table_rows.back().insert(table_rows.back().end(), rows[k].begin(), rows[k].end());
+  }
+
   std::ofstream csv(csv_file.temporary_path());
   csv << "# " << scene->description() << "\n";
   csv << "# " << describe_model(material, settings) << "\n";
-  csv << header(drive);
-  for (const Column& c : columns) csv << "," << header(c);
+  for (std::size_t c = 0; c < table.size(); ++c) csv << (c ? "," : "") << csv_header(table[c]);
   csv << "\n";
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    csv << fmt::format("{:.10g}", points[k]);
-    for (double v : rows[k]) csv << fmt::format(",{:.10g}", v);
-    csv << "\n";
-  }
+  for (const auto& row : table_rows) csv << fmt::format("{:.10g}\n", fmt::join(row, ","));
   csv.close();
   if (!csv) throw NumericalError(fmt::format("cannot write {}", csv_file.final_path().string()));
 
@@ -118,7 +115,7 @@ int run(const RunOptions& options) {
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
   summary << "\nfull parameter set:\n" << parameters.str();
   summary.close();
-  write_results_h5(h5_file.temporary_path(), drive, columns, points, rows,
+  write_results_h5(h5_file.temporary_path(), table, table_rows,
                    {.software = fmt::format("softglass macro {} ({})", kVersion, kGitRevision),
                     .scene_file = options.scene_file.string(),
                     .description = scene->description(),

@@ -6,11 +6,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <sstream>
 
+#include "common/h5_file.h"
 #include "macro/exact/cone_plate.h"
 #include "tests/common/command_line.h"
 #include "tests/common/test_files.h"
@@ -97,6 +99,13 @@ TEST_F(MacroCompare, RecoversTheExactConePlateTorquesAndNormalForces) {
   // the small-angle uniform rate, which the finite angle changes by O(β²) ~ 1e-3.
   for (double e : column("normal_force_relative_error")) EXPECT_LT(std::abs(e), 5e-3);
   EXPECT_TRUE(fs::exists(dir_.path() / "out" / "summary.txt"));
+  // comparison.h5 holds the same table (the CSV prints 8 significant digits).
+  const softglass::H5Group h5 = softglass::H5File::open(dir_.path() / "out" / "comparison.h5").root();
+  const std::vector<double> stored = h5.read_array("results/relative_error").data;
+  ASSERT_EQ(stored.size(), torque_error.size());
+  for (std::size_t k = 0; k < stored.size(); ++k)
+    EXPECT_NEAR(stored[k], torque_error[k], 1e-7 * std::max(std::abs(stored[k]), 1e-3));
+  EXPECT_EQ(h5.dataset_attribute("results/measured_torque", "units"), "N m");
 }
 
 TEST_F(MacroCompare, MaterialOptionReplacesTheScenesMaterial) {
