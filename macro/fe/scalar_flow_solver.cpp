@@ -89,6 +89,7 @@
 #include "common/errors.h"
 #include "macro/fe/distributed_system.h"
 #include "macro/fe/refine_and_transfer.h"
+#include "macro/io/vtu_output.h"
 #include "macro/material/regularised_law.h"
 
 namespace softglass::macro::fe {
@@ -776,11 +777,7 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
   data_out.build_patches(mapping_, fe_.degree);
   // A 1D section is solved whole on every rank of its group: one writes it.
   if (dim == 1 && Utilities::MPI::this_mpi_process(settings_.mesh_communicator) != 0) return;
-  try {
-    data_out.write_vtu_in_parallel(file.string(), communicator_);
-  } catch (const std::exception&) {
-    throw NumericalError(fmt::format("cannot write {}", file.string()));
-  }
+  io::write_vtu(data_out, file, communicator_);
 }
 
 // --- the public face -------------------------------------------------------------

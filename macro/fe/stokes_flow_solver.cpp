@@ -48,6 +48,7 @@
 #include "common/errors.h"
 #include "macro/fe/distributed_system.h"
 #include "macro/fe/refine_and_transfer.h"
+#include "macro/io/vtu_output.h"
 #include "macro/material/regularised_law.h"
 
 namespace softglass::macro::fe {
@@ -91,9 +92,7 @@ class StokesFlowSolver::Implementation {
     coarse_.copy_triangulation(base);
   }
 
-  StokesResult run(const VelocityBoundaryValues& boundary, double rate_c,
-                   types::boundary_id force_id, types::boundary_id pressure_id,
-                   const std::vector<Point<2>>& probe_points);
+  StokesResult run(const StokesDrive& drive);
   std::vector<Tensor<1, 2>> velocity_at(const std::vector<Point<2>>& points) const;
   void output_results(const std::filesystem::path& file) const;
 
@@ -106,7 +105,7 @@ class StokesFlowSolver::Implementation {
                        bool damped);
   unsigned solve_newton(const RegularisedLaw& law, bool allow_damping);
   unsigned solve_with_continuation(double target, double start);
-  StokesOutputs evaluate(types::boundary_id force_id, types::boundary_id pressure_id) const;
+  StokesOutputs evaluate() const;
   void refine_mesh(bool uniform);
   unsigned newton_damped_on_failure(const RegularisedLaw& law);
 
@@ -114,8 +113,7 @@ class StokesFlowSolver::Implementation {
   SolverSettings settings_;
   MPI_Comm communicator_;
   DistributedSystem system_;  // matrix, factorisation, residual of the current mesh
-  VelocityBoundaryValues boundary_;
-  std::vector<Point<2>> probe_points_;
+  StokesDrive drive_;
   Triangulation<2> coarse_;  // the scene's mesh, unrefined
   parallel::distributed::Triangulation<2> triangulation_;
   MappingQ<2> mapping_;
@@ -132,12 +130,12 @@ VectorType StokesFlowSolver::Implementation::setup_system() {
   dof_handler_.distribute_dofs(fe_);
   system_.set_dofs(dof_handler_);
   const FEValuesExtractors::Vector velocities(0);
-  const FEValuesExtractors::Scalar pressure(2);
+  const FEValuesExtractors::Scalar transverse(1), pressure(2);
   // Pin one pressure unknown when no boundary is free (closed domain): the
   // lowest-numbered pressure dof of all ranks.
   bool closed = true;
   for (const auto id : triangulation_.get_boundary_ids())
-    closed = closed && boundary_.count(id) > 0;
+    closed = closed && drive_.velocity.count(id) > 0;
   const IndexSet pressure_dofs = DoFTools::extract_dofs(dof_handler_, fe_.component_mask(pressure));
   const types::global_dof_index pinned = Utilities::MPI::min(
       pressure_dofs.n_elements() > 0 ? pressure_dofs.nth_index_in_set(0)
@@ -148,7 +146,7 @@ VectorType StokesFlowSolver::Implementation::setup_system() {
     constraints->clear();
     constraints->reinit(system_.relevant);
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
-    for (const auto& [id, f] : boundary_) {
+    for (const auto& [id, f] : drive_.velocity) {
       if (homogeneous) {
         VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id,
                                                  Functions::ZeroFunction<2>(3), *constraints,
@@ -157,6 +155,11 @@ VectorType StokesFlowSolver::Implementation::setup_system() {
         VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id, BoundaryVelocity(f),
                                                  *constraints, fe_.component_mask(velocities));
       }
+    }
+    for (const auto id : drive_.straight_outflow) {
+      VectorTools::interpolate_boundary_values(mapping_, dof_handler_, id,
+                                               Functions::ZeroFunction<2>(3), *constraints,
+                                               fe_.component_mask(transverse));
     }
     if (closed && system_.relevant.is_element(pinned)) constraints->add_line(pinned);
     constraints->close();
@@ -268,8 +271,8 @@ unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target
   }
 }
 
-StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id force_id,
-                                                         types::boundary_id pressure_id) const {
+StokesOutputs StokesFlowSolver::Implementation::evaluate() const {
+  const types::boundary_id force_id = drive_.force_boundary, pressure_id = drive_.pressure_boundary;
   const VectorType& field = system_.readable(solution_);
   const QGauss<2> quadrature(3);
   FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients | update_JxW_values);
@@ -326,7 +329,7 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate(types::boundary_id forc
   out.yielded_fraction = yielded / area;
   out.force = Tensor<1, 2>({force_x, force_y});
   if (pressure_length > 0.0) out.mean_pressure = pressure_sum / pressure_length;
-  if (!probe_points_.empty()) out.probes = velocity_at(probe_points_);
+  if (!drive_.probes.empty()) out.probes = velocity_at(drive_.probes);
   return out;
 }
 
@@ -375,13 +378,10 @@ unsigned StokesFlowSolver::Implementation::newton_damped_on_failure(const Regula
   }
 }
 
-StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues& boundary,
-                                                   double rate_c, types::boundary_id force_id,
-                                                   types::boundary_id pressure_id,
-                                                   const std::vector<Point<2>>& probe_points) {
+StokesResult StokesFlowSolver::Implementation::run(const StokesDrive& drive) {
   const auto start = std::chrono::steady_clock::now();
-  boundary_ = boundary;
-  probe_points_ = probe_points;
+  drive_ = drive;
+  const double rate_c = drive.characteristic_rate;
   StokesResult result;
   // The same first mesh (and partition) at every point: the previous point's
   // solution on it is a valid start.
@@ -400,9 +400,9 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
   // Nested iteration: the continuation on the coarse mesh down to 10ε and ε.
   result.iterations += solve_with_continuation(kContinuationFactor * target,
                                                warm ? kContinuationFactor * target : rate_c);
-  result.at_ten_epsilon = evaluate(force_id, pressure_id);
+  result.at_ten_epsilon = evaluate();
   result.iterations += solve_with_continuation(target, target);
-  result.first_mesh = evaluate(force_id, pressure_id);
+  result.first_mesh = evaluate();
   previous_coarse_ = solution_;
   previous_rate_ = rate_c;
 
@@ -413,11 +413,11 @@ StokesResult StokesFlowSolver::Implementation::run(const VelocityBoundaryValues&
   refine_mesh(true);
   result.iterations += newton_damped_on_failure(*regularised_);
   for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
-    result.coarse = evaluate(force_id, pressure_id);
+    result.coarse = evaluate();
     refine_mesh(false);
     result.iterations += newton_damped_on_failure(*regularised_);
   }
-  result.value = evaluate(force_id, pressure_id);
+  result.value = evaluate();
   result.cells = triangulation_.n_global_active_cells();
   result.dofs = dof_handler_.n_dofs();
   result.wall_time =
@@ -471,11 +471,7 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
   data_out.add_data_vector(tau, "stress");
   data_out.add_data_vector(yielded, "yielded");
   data_out.build_patches(mapping_, 2);
-  try {
-    data_out.write_vtu_in_parallel(file.string(), communicator_);
-  } catch (const std::exception&) {
-    throw NumericalError(fmt::format("cannot write {}", file.string()));
-  }
+  io::write_vtu(data_out, file, communicator_);
 }
 
 StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const HerschelBulkley& law,
@@ -484,12 +480,8 @@ StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const Hers
 
 StokesFlowSolver::~StokesFlowSolver() = default;
 
-StokesResult StokesFlowSolver::run(const VelocityBoundaryValues& boundary,
-                                   double characteristic_rate, types::boundary_id force_boundary,
-                                   types::boundary_id pressure_boundary,
-                                   const std::vector<Point<2>>& probe_points) {
-  return impl_->run(boundary, characteristic_rate, force_boundary, pressure_boundary,
-                    probe_points);
+StokesResult StokesFlowSolver::run(const StokesDrive& drive) {
+  return impl_->run(drive);
 }
 
 std::vector<Tensor<1, 2>> StokesFlowSolver::velocity_at(const std::vector<Point<2>>& points) const {

@@ -19,6 +19,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "macro/fe/solver_settings.h"
@@ -26,11 +27,31 @@
 
 namespace softglass::macro::fe {
 
-/// Velocity boundary data: a function of the position per boundary id; ids not
-/// listed are outflow boundaries (zero traction, "do nothing").
+/// Velocity boundary data: a function of the position per boundary id.
 using VelocityBoundaryValues =
     std::map<dealii::types::boundary_id,
              std::function<dealii::Tensor<1, 2>(const dealii::Point<2>&)>>;
+
+/// What one solve imposes and measures.
+struct StokesDrive {
+  /// Walls and inflow: the velocity.
+  VelocityBoundaryValues velocity{};
+  /// Outflow boundaries, each a straight line x = const: the transverse
+  /// velocity vanishes and the normal traction −p + 2η ∂u/∂x is zero, which
+  /// fully developed (Poiseuille) flow satisfies with p = 0 there. Ids in
+  /// neither list are free (zero traction, which developed flow does not
+  /// satisfy with the symmetric-gradient form: it has shear stress there).
+  std::set<dealii::types::boundary_id> straight_outflow{};
+  /// γ̇_c: sets the regularisation scale ε = ε_rel γ̇_c.
+  double characteristic_rate = 1.0;
+  /// Forces are integrated over this boundary, the mean pressure over the
+  /// other (invalid id: none).
+  dealii::types::boundary_id force_boundary = dealii::numbers::invalid_boundary_id;
+  dealii::types::boundary_id pressure_boundary = dealii::numbers::invalid_boundary_id;
+  /// The velocity is sampled here on every mesh (so that point values get
+  /// error estimates).
+  std::vector<dealii::Point<2>> probes{};
+};
 
 struct StokesOutputs {
   double dissipation = 0.0;       ///< ∫ τ:D dA (per unit depth) [W/m]
@@ -57,14 +78,8 @@ class StokesFlowSolver {
                    const SolverSettings& settings);
   ~StokesFlowSolver();
 
-  /// Solves with the given boundary velocities; γ̇_c sets the regularisation
-  /// scale. Forces are integrated over `force_boundary`, the mean pressure
-  /// over `pressure_boundary` (invalid id: none); the velocity is sampled at
-  /// `probe_points` on every mesh (so that point values get error estimates).
-  StokesResult run(const VelocityBoundaryValues& boundary, double characteristic_rate,
-                   dealii::types::boundary_id force_boundary,
-                   dealii::types::boundary_id pressure_boundary,
-                   const std::vector<dealii::Point<2>>& probe_points = {});
+  /// Solves one operating point (warm-started from the previous one).
+  StokesResult run(const StokesDrive& drive);
 
   /// u at points of the domain (last solve, fine mesh).
   std::vector<dealii::Tensor<1, 2>> velocity_at(const std::vector<dealii::Point<2>>& points) const;

@@ -6,11 +6,11 @@
 // obstacle: a channel of height 0.41 D/0.1 with a cylinder of diameter D
 //           (deal.II's channel_with_cylinder, the DFG benchmark's geometry,
 //           scaled), mean inflow speed U (the drive) with a parabolic inflow
-//           profile, free outflow. Reports the pressure drop inflow → outflow
+//           profile, straight outflow (StokesDrive). Reports the pressure drop inflow → outflow
 //           and the drag and lift on the cylinder, per unit depth.
 // contraction: a planar channel of height R h narrowing abruptly to h
 //           (ratio R), each part 10 h long, mean inflow speed U (the drive),
-//           parabolic inflow, free outflow. Reports the pressure drop and the
+//           parabolic inflow, straight outflow. Reports the pressure drop and the
 //           yielded fraction (dead zones in the corners).
 // cylinder: a cylinder of diameter D in a square box of side `box` D whose
 //           walls move at U (the drive): the unbounded-flow benchmark of
@@ -98,9 +98,9 @@ class Cavity final : public Scene {
     // belong to the walls.
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto moving = [lid](const Point<2>&) { return Tensor<1, 2>({lid, 0.0}); };
-    const dealii::types::boundary_id none = dealii::numbers::invalid_boundary_id;
-    const auto r = solver_.run({{3, moving}, {0, zero}, {1, zero}, {2, zero}}, lid / side_, none,
-                               none, centreline_);
+    const auto r = solver_.run({.velocity = {{3, moving}, {0, zero}, {1, zero}, {2, zero}},
+                                .characteristic_rate = lid / side_,
+                                .probes = centreline_});
     // The minimum on each mesh: its change over the last refinement and
     // (at 10ε − at ε)/9 on the first mesh are its error estimates.
     const auto u_min = [this](const fe::StokesOutputs& o) { return centreline_minimum(o).first; };
@@ -165,7 +165,11 @@ class Obstacle final : public Scene {
       return Tensor<1, 2>({6.0 * speed * p[1] * (H - p[1]) / (H * H), 0.0});
     };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
-    const auto r = solver_.run({{0, inflow}, {2, zero}, {3, zero}}, 6.0 * speed / H, 2, 0);
+    const auto r = solver_.run({.velocity = {{0, inflow}, {2, zero}, {3, zero}},
+                                .straight_outflow = {1},
+                                .characteristic_rate = 6.0 * speed / H,
+                                .force_boundary = 2,
+                                .pressure_boundary = 0});
     return report_row(r, mean_pressure, {r.value.force[0], r.value.force[1]});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
@@ -217,8 +221,10 @@ class Cylinder final : public Scene {
   std::vector<double> solve(double speed) override {
     const auto uniform = [speed](const Point<2>&) { return Tensor<1, 2>({speed, 0.0}); };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
-    const auto r = solver_.run({{0, uniform}, {1, uniform}, {2, uniform}, {3, uniform}, {4, zero}},
-                               speed / diameter_, 4, dealii::numbers::invalid_boundary_id);
+    const auto r = solver_.run(
+        {.velocity = {{0, uniform}, {1, uniform}, {2, uniform}, {3, uniform}, {4, zero}},
+         .characteristic_rate = speed / diameter_,
+         .force_boundary = 4});
     const auto power_drag = [speed](const fe::StokesOutputs& o) { return o.dissipation / speed; };
     return report_row(r, power_drag,
                       {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
@@ -265,8 +271,10 @@ class Contraction final : public Scene {
     };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     // γ̇_c: the Newtonian wall rate downstream, 6 U_down/h with U_down = R U.
-    const auto r = solver_.run({{0, inflow}, {2, zero}}, 6.0 * ratio_ * speed / h_,
-                               dealii::numbers::invalid_boundary_id, 0);
+    const auto r = solver_.run({.velocity = {{0, inflow}, {2, zero}},
+                                .straight_outflow = {1},
+                                .characteristic_rate = 6.0 * ratio_ * speed / h_,
+                                .pressure_boundary = 0});
     return report_row(r, mean_pressure, {speed * H});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
