@@ -1,9 +1,11 @@
 // stiff_tradeoff: cost and accuracy of the integrators across γ̃ (issue 4).
 //
 // One packing, then each requested run from it: a scheme and tolerance
-// (`--run euler:1e-4`, `--run implicit:1e-3`, …) or quasi-static shear
-// (`--run aqs:2e-4`, the number being the strain step), over the same strain
-// window [0, --strain]. Each prints one line
+// (`--run euler:1e-4`, `--run implicit:1e-3`, …), optionally a third number —
+// the fraction of the stability limit for `euler` (`euler:1e-5:0.4`), the
+// largest step in strain for `implicit` (`implicit:1e-3:5e-4`) — or
+// quasi-static shear (`--run aqs:2e-4`, the number being the strain step),
+// over the same strain window [0, --strain]. Each prints one line
 //   run <scheme> <tol> gamma <γ̃> sigma <σ> N1 <N1> N2 <N2> seconds <s>
 //       per_strain <s/strain> steps <n> rejected <n> strain <done> complete <0|1>
 // where σ, N1, N2 are means of the total stress over samples every 0.01 strain
@@ -37,7 +39,9 @@ int main(int argc, char** argv) {
   app.add_option("--preshear", preshear,
                  "strain of quasi-static shear (AQS, step 1e-3) applied to the packing first");
   app.add_option("--time-limit", time_limit, "seconds per run before it is cut short");
-  app.add_option("--run", runs, "scheme:tolerance (euler, implicit) or aqs:strain_step")
+  app.add_option("--run", runs,
+                 "scheme:tolerance[:stability fraction (euler) | max step (implicit)] or "
+                 "aqs:strain_step")
       ->required();
   CLI11_PARSE(app, argc, argv);
 
@@ -60,7 +64,7 @@ int main(int argc, char** argv) {
   std::fflush(stdout);
 
   for (const std::string& run : runs) {
-    // scheme:value[:stability fraction]
+    // scheme:value[:third]
     std::vector<std::string> parts;
     for (std::size_t from = 0;;) {
       const auto colon = run.find(':', from);
@@ -70,7 +74,10 @@ int main(int argc, char** argv) {
     }
     const std::string scheme = parts[0];
     const double value = parts.size() > 1 ? std::stod(parts[1]) : 0.0;
-    const double stability = parts.size() > 2 ? std::stod(parts[2]) : IntegratorSpec{}.stability_fraction;
+    const bool implicit = scheme == "implicit";
+    const double third = parts.size() > 2 ? std::stod(parts[2])
+                                          : (implicit ? IntegratorSpec{}.max_step
+                                                      : IntegratorSpec{}.stability_fraction);
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -103,7 +110,7 @@ int main(int argc, char** argv) {
         IntegratorSpec ispec;
         ispec.name = scheme;
         ispec.tolerance = value;
-        ispec.stability_fraction = stability;
+        (implicit ? ispec.max_step : ispec.stability_fraction) = third;
         const auto integrator = make_integrator(ispec);
         const double origin = flow.strain();
         double next = origin + sample;
@@ -128,7 +135,7 @@ int main(int argc, char** argv) {
         linear = integrator->stats().linear_iterations;
       }
     } catch (const std::exception& e) {
-      fmt::print("run {} {:.0e}:{} failed \"{}\"\n", scheme, value, stability, e.what());
+      fmt::print("run {} {:.0e}:{} failed \"{}\"\n", scheme, value, third, e.what());
       std::fflush(stdout);
       continue;
     }
@@ -137,7 +144,7 @@ int main(int argc, char** argv) {
     fmt::print(
         "run {} {:.0e}:{} gamma {:.0e} sigma {:.6e} N1 {:.6e} N2 {:.6e} seconds {:.2f} per_strain "
         "{:.4g} steps {} rejected {} newton {} cg {} strain {:.4f} complete {}\n",
-        scheme, value, stability, gamma_tilde, sigma * k, n1 * k, n2 * k, seconds,
+        scheme, value, third, gamma_tilde, sigma * k, n1 * k, n2 * k, seconds,
         seconds / std::max(done, 1e-12), steps, rejected, newton, linear, done, complete ? 1 : 0);
     std::fflush(stdout);
   }
