@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   run->add_option("--ranks-per-point", options.ranks_per_point,
                   "MPI ranks that share each operating point's mesh (default: the points are "
                   "spread over the ranks first, the ranks shared out when points are fewer)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive);
   run->add_flag("-f,--force", options.force, "overwrite existing results");
   run->add_flag("-q,--quiet", options.quiet, "no progress display");
   macro::app::CompareOptions compare_options;
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
                       "scene's");
   compare->add_option("--ranks-per-point", compare_options.ranks_per_point,
                       "MPI ranks that share each operating point's mesh (default: as for run)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive);
   compare->add_flag("-f,--force", compare_options.force, "overwrite existing results");
   compare->add_flag("-q,--quiet", compare_options.quiet, "no progress display and no table");
   app.add_subcommand("template", "print a documented scene file with every entry");

@@ -62,8 +62,12 @@ std::vector<std::vector<double>> solve_operating_points(Scene& scene,
   const MPI_Comm world = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(world) == 0;
   const Column drive = scene.drive();
-  const std::size_t first = points.size() * groups.group() / groups.groups();
-  const std::size_t last = points.size() * (groups.group() + 1) / groups.groups();
+  // Contiguous blocks, rounded up so that with fewer points than groups the
+  // first groups (the whole ones; only the last may be short of ranks) work.
+  const auto boundary = [&](std::size_t g) {
+    return (points.size() * g + groups.groups() - 1) / groups.groups();
+  };
+  const std::size_t first = boundary(groups.group()), last = boundary(groups.group() + 1);
   Progress progress(display.label, double(last - first), display.quiet || !root);
   std::vector<std::vector<double>> mine;
   std::string failure;  // a rank that fails still joins the gather below
