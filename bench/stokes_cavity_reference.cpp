@@ -58,7 +58,8 @@ CentrelineMinimum solve(int cells) {
         add(i + a, j + b, -8.0);
         add(i + 2 * a, j + 2 * b, 1.0);
       }
-      for (const auto& [a, b] : {std::pair{1, 1}, {1, -1}, {-1, 1}, {-1, -1}}) add(i + a, j + b, 2.0);
+      for (const auto& [a, b] : {std::pair{1, 1}, {1, -1}, {-1, 1}, {-1, -1}})
+        add(i + a, j + b, 2.0);
     }
   }
   Eigen::SparseMatrix<double> matrix(n * n, n * n);

@@ -8,7 +8,8 @@ namespace softglass {
 
 /// Set by Open MPI's, MPICH's (Hydra) and Slurm's starters respectively.
 inline bool launched_by_mpi() {
-  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"})
+  for (const char* variable :
+       {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"})
     if (std::getenv(variable)) return true;
   return false;
 }

@@ -126,9 +126,8 @@ int compare(const CompareOptions& o) {
       o.output.empty() ? std::filesystem::path(fmt::format("{}_vs_{}", o.data_file.stem().string(),
                                                            o.scene_file.stem().string()))
                        : o.output;
-  ClaimedOutputs claimed =
-      claim_outputs(directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"},
-                    o.force);
+  ClaimedOutputs claimed = claim_outputs(
+      directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"}, o.force);
   if (claimed.refused) return kExitOutputExists;
   // The number of points is known now; when ranks are to share meshes, the
   // scene is made again on its group's ranks.
@@ -173,15 +172,12 @@ int compare(const CompareOptions& o) {
   }
 
   // The table, point by point.
-  std::vector<Column> table{{"angular_velocity", "rad/s"},
-                            {"shear_rate", "1/s"},
-                            {"measured_torque", "N m"},
-                            {"predicted_torque", "N m"},
-                            {"relative_error", "1"},
-                            {"predicted_torque_error_estimate", "N m"},
-                            {"measured_stress", "Pa"},
-                            {"predicted_stress", "Pa"},
-                            {"yielded_fraction", "1"}};
+  std::vector<Column> table{
+      {"angular_velocity", "rad/s"}, {"shear_rate", "1/s"},
+      {"measured_torque", "N m"},    {"predicted_torque", "N m"},
+      {"relative_error", "1"},       {"predicted_torque_error_estimate", "N m"},
+      {"measured_stress", "Pa"},     {"predicted_stress", "Pa"},
+      {"yielded_fraction", "1"}};
   if (compare_force) {
     table.insert(table.end(), {{"measured_normal_force", "N"},
                                {"predicted_normal_force", "N"},
@@ -222,7 +218,8 @@ int compare(const CompareOptions& o) {
       .abscissa = "angular velocity {/Symbol W} [rad/s]",
       .x = measured.angular_velocity,
       .panels = {{"torque [N m]", measured.torque, predicted}}};
-  if (compare_force) plot.panels.push_back({"normal force [N]", *measured.normal_force, predicted_force});
+  if (compare_force)
+    plot.panels.push_back({"normal force [N]", *measured.normal_force, predicted_force});
   AtomicOutput& png_file = *claimed.files[2];
   const bool plotted = io::write_overlay_png(plot, png_file.temporary_path());
   if (plotted) png_file.commit();
@@ -246,8 +243,8 @@ int compare(const CompareOptions& o) {
   write_results_h5(h5_file.temporary_path(), table, table_rows,
                    {.software = header_lines[0],
                     .scene_file = o.scene_file.string(),
-                    .description = fmt::format("{}\n", fmt::join(header_lines.begin() + 1,
-                                                                 header_lines.end(), "\n")),
+                    .description = fmt::format(
+                        "{}\n", fmt::join(header_lines.begin() + 1, header_lines.end(), "\n")),
                     .model = describe_model(material, settings),
                     .parameters = parameters.str(),
                     .wall_time = wall,
@@ -258,8 +255,8 @@ int compare(const CompareOptions& o) {
   h5_file.commit();
 
   if (!o.quiet) {
-    std::cout << fmt::format("{:>14} {:>12} {:>14} {:>14} {:>8}\n", "Omega [rad/s]",
-                             "rate [1/s]", "measured [N m]", "predicted", "error");
+    std::cout << fmt::format("{:>14} {:>12} {:>14} {:>14} {:>8}\n", "Omega [rad/s]", "rate [1/s]",
+                             "measured [N m]", "predicted", "error");
     for (std::size_t i = 0; i < n; ++i) {
       std::cout << fmt::format("{:>14.4e} {:>12.4g} {:>14.4e} {:>14.4e} {:>+7.1f}%\n",
                                measured.angular_velocity[i], measured.shear_rate[i],

@@ -54,12 +54,14 @@ int main(int argc, char** argv) {
       "compare",
       "predict the torques (and normal forces) of a measured rheometer curve with a scene file "
       "and compare them point by point");
-  compare->add_option("scene", compare_options.scene_file,
-                      "scene file (.prm) of the instrument: couette, cone-plate or parallel-plates")
+  compare
+      ->add_option("scene", compare_options.scene_file,
+                   "scene file (.prm) of the instrument: couette, cone-plate or parallel-plates")
       ->required();
-  compare->add_option("data", compare_options.data_file,
-                      "measured curve (CSV): torque or stress against angular velocity or shear "
-                      "rate, units in the header")
+  compare
+      ->add_option("data", compare_options.data_file,
+                   "measured curve (CSV): torque or stress against angular velocity or shear "
+                   "rate, units in the header")
       ->required();
   compare->add_option("-o,--output", compare_options.output,
                       "output directory (default: <data stem>_vs_<scene stem>)");
@@ -84,8 +86,9 @@ int main(int argc, char** argv) {
   compare->add_option("--material", compare_options.material,
                       "material fragment (.prm, e.g. from `bridge material`) replacing the "
                       "scene's");
-  compare->add_option("--ranks-per-point", compare_options.ranks_per_point,
-                      "MPI ranks that share each operating point's mesh (default: as for run)")
+  compare
+      ->add_option("--ranks-per-point", compare_options.ranks_per_point,
+                   "MPI ranks that share each operating point's mesh (default: as for run)")
       ->check(positive);
   compare->add_flag("-f,--force", compare_options.force, "overwrite existing results");
   compare->add_flag("-q,--quiet", compare_options.quiet, "no progress display and no table");

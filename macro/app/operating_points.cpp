@@ -24,7 +24,8 @@ RankGroups::RankGroups(std::size_t points, unsigned ranks_per_point) {
   const MPI_Comm world = MPI_COMM_WORLD;
   const unsigned rank = dealii::Utilities::MPI::this_mpi_process(world);
   const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(world);
-  if (ranks_per_point == 0) ranks_per_point = std::max<std::size_t>(1, ranks / std::max<std::size_t>(points, 1));
+  if (ranks_per_point == 0)
+    ranks_per_point = std::max<std::size_t>(1, ranks / std::max<std::size_t>(points, 1));
   ranks_per_point_ = std::min(ranks_per_point, ranks);
   groups_ = (ranks + ranks_per_point_ - 1) / ranks_per_point_;
   group_index_ = rank / ranks_per_point_;

@@ -13,9 +13,9 @@ namespace softglass::macro::fe {
 namespace {
 
 // MUMPS's control parameters (ICNTL, Fortran numbering).
-constexpr int kOrdering = 7;   // fill-reducing ordering of a sequential analysis:
-constexpr int kMetis = 5;      //   METIS nested dissection
-constexpr int kPrintLevel = 4; // 0: no messages
+constexpr int kOrdering = 7;    // fill-reducing ordering of a sequential analysis:
+constexpr int kMetis = 5;       //   METIS nested dissection
+constexpr int kPrintLevel = 4;  // 0: no messages
 
 // (No fmt here: Trilinos' Teuchos headers make fmt's unqualified calls ambiguous.)
 void check(int status, const char* step) {
@@ -41,8 +41,7 @@ void DirectSolver::analyse(const dealii::TrilinosWrappers::SparseMatrix& matrix)
   problem_->SetOperator(const_cast<Epetra_CrsMatrix*>(&matrix.trilinos_matrix()));
   auto mumps = std::make_unique<Amesos_Mumps>(*problem_);
   Teuchos::ParameterList parameters;
-  parameters.set("MatrixProperty",
-                 kind_ == MatrixKind::positive_definite ? "SPD" : "symmetric");
+  parameters.set("MatrixProperty", kind_ == MatrixKind::positive_definite ? "SPD" : "symmetric");
   check(mumps->SetParameters(parameters), "setting its parameters");
   mumps->SetICNTL(kOrdering, kMetis);
   mumps->SetICNTL(kPrintLevel, 0);

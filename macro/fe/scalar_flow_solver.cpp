@@ -189,8 +189,7 @@ class ScalarFlowSolver<dim>::Implementation {
 
   /// The cells this rank assembles and integrates over.
   auto owned_cells() const {
-    return dof_handler_.active_cell_iterators() |
-           IteratorFilters::LocallyOwnedCell();
+    return dof_handler_.active_cell_iterators() | IteratorFilters::LocallyOwnedCell();
   }
 
   /// Shear rate, stress and whether the material yields at quadrature point x
@@ -662,8 +661,8 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
 
   const double rate_c = drive.characteristic_rate;
   const double target = settings_.relative_rate_scale * rate_c;
-  const bool warm = previous_rate_ > 0.0 &&
-                    previous_base_solution_.locally_owned_elements() == system_.owned;
+  const bool warm =
+      previous_rate_ > 0.0 && previous_base_solution_.locally_owned_elements() == system_.owned;
   if (warm) {
     // The profile of the previous point, rescaled by the ratio of shear rates.
     solution_ = previous_base_solution_;

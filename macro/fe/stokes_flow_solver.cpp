@@ -429,8 +429,8 @@ StokesResult StokesFlowSolver::Implementation::run(const StokesDrive& drive) {
 std::vector<Tensor<1, 2>> StokesFlowSolver::Implementation::velocity_at(
     const std::vector<Point<2>>& points) const {
   Utilities::MPI::RemotePointEvaluation<2> cache;
-  const auto values =
-      VectorTools::point_values<3>(mapping_, dof_handler_, system_.readable(solution_), points, cache);
+  const auto values = VectorTools::point_values<3>(mapping_, dof_handler_,
+                                                   system_.readable(solution_), points, cache);
   if (!cache.all_points_found())
     throw NumericalError("velocity requested at a point outside the domain");
   std::vector<Tensor<1, 2>> result;

@@ -47,10 +47,11 @@ void declare_cone_plate(ParameterHandler& prm) {
   prm.declare_entry(
       "rim", "spherical", Patterns::Selection("spherical|cylindrical"),
       "spherical (about the cone's apex, the closed form's rim) | cylindrical (r = R)");
-  prm.declare_entry("fill", "1", Patterns::Double(),
-                    "the sample's radius over R, in (0.5, 1.2): 1 filled to the rim; < 1 underfilled "
-                    "(a cylindrical or spherical free surface under the cone); > 1 overfilled (a "
-                    "collar of the rim's height beyond the cone's edge, top and side free)");
+  prm.declare_entry(
+      "fill", "1", Patterns::Double(),
+      "the sample's radius over R, in (0.5, 1.2): 1 filled to the rim; < 1 underfilled "
+      "(a cylindrical or spherical free surface under the cone); > 1 overfilled (a "
+      "collar of the rim's height beyond the cone's edge, top and side free)");
   prm.declare_entry("radial cells", "24", Patterns::Integer(2, 10000), "cells along the radius");
   prm.declare_entry("gap cells", "2", Patterns::Integer(1, 1000), "cells across the gap");
   prm.leave_subsection();
@@ -86,11 +87,10 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
   const exact::ConePlate cone{.radius = R, .angle = beta};
   ReducedSceneSpec<2> spec;
   const std::string sample =
-      fill == 1.0 ? fmt::format("filled to a {} rim", spherical ? "spherical" : "cylindrical")
-      : fill < 1.0
-          ? fmt::format("underfilled to {} R, {} free surface", fill,
-                        spherical ? "spherical" : "cylindrical")
-          : fmt::format("overfilled: a collar out to {} R beyond the cone's edge", fill);
+      fill == 1.0  ? fmt::format("filled to a {} rim", spherical ? "spherical" : "cylindrical")
+      : fill < 1.0 ? fmt::format("underfilled to {} R, {} free surface", fill,
+                                 spherical ? "spherical" : "cylindrical")
+                   : fmt::format("overfilled: a collar out to {} R beyond the cone's edge", fill);
   spec.description = fmt::format(
       "cone and plate R = {} m, beta = {} deg, truncation {} m, sample {}: omega(r, z) in the "
       "meridian plane, cone at Omega, plate fixed",
@@ -109,9 +109,10 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
   }
   spec.reference = [law, cone](double omega) { return exact::torque(law, cone, omega); };
   // The cone's uniform rate Ω/β and the stress 3M/(2πR³) of a small angle.
-  spec.instrument = InstrumentConstants{.strain_constant = 1.0 / beta,
-                                        .stress_constant = 3.0 / (2.0 * std::numbers::pi * R * R * R),
-                                        .convention = "small-angle cone: rate Omega/beta, stress 3M/(2 pi R^3)"};
+  spec.instrument =
+      InstrumentConstants{.strain_constant = 1.0 / beta,
+                          .stress_constant = 3.0 / (2.0 * std::numbers::pi * R * R * R),
+                          .convention = "small-angle cone: rate Omega/beta, stress 3M/(2 pi R^3)"};
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 

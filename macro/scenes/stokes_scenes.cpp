@@ -77,8 +77,12 @@ std::vector<double> report_row(const fe::StokesResult& r,
                     std::abs(quantity(r.first_mesh) - quantity(r.at_ten_epsilon)) / 9.0, own);
 }
 
-double mean_pressure(const fe::StokesOutputs& o) { return o.mean_pressure; }
-double drag(const fe::StokesOutputs& o) { return o.force[0]; }
+double mean_pressure(const fe::StokesOutputs& o) {
+  return o.mean_pressure;
+}
+double drag(const fe::StokesOutputs& o) {
+  return o.force[0];
+}
 
 class Cavity final : public Scene {
  public:
@@ -211,7 +215,7 @@ class Cylinder final : public Scene {
   Column drive() const override { return {"speed", "m/s"}; }
   std::vector<Column> columns() const override {
     return report_columns({"drag_per_depth", "N/m"}, {{"drag_coefficient_F_over_KU", "1"},
-                                                       {"drag_from_surface_traction", "N/m"}});
+                                                      {"drag_from_surface_traction", "N/m"}});
   }
   // The drag from the power balance: the walls (moving at U) do work F U on
   // the material, all dissipated, while the cylinder (at rest) does none — so
@@ -226,8 +230,7 @@ class Cylinder final : public Scene {
          .characteristic_rate = speed / diameter_,
          .force_boundary = 4});
     const auto power_drag = [speed](const fe::StokesOutputs& o) { return o.dissipation / speed; };
-    return report_row(r, power_drag,
-                      {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
+    return report_row(r, power_drag, {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 

@@ -54,7 +54,8 @@ class MacroCli : public ::testing::Test {
   // `mpirun -n 2 macro run scene.prm -q` with the given options.
   softglass::testing::Outcome run_on_two_ranks(const std::string& options) {
     return softglass::testing::run_tool(
-        kMpirun, "-n 2 --oversubscribe '" + std::string(MACRO_EXECUTABLE) + "' run scene.prm -q " + options,
+        kMpirun,
+        "-n 2 --oversubscribe '" + std::string(MACRO_EXECUTABLE) + "' run scene.prm -q " + options,
         dir_, dir_ / "capture2");
   }
   // The first `columns` values of every row of folder/results.csv.

@@ -100,7 +100,8 @@ TEST_F(MacroCompare, RecoversTheExactConePlateTorquesAndNormalForces) {
   for (double e : column("normal_force_relative_error")) EXPECT_LT(std::abs(e), 5e-3);
   EXPECT_TRUE(fs::exists(dir_.path() / "out" / "summary.txt"));
   // comparison.h5 holds the same table (the CSV prints 8 significant digits).
-  const softglass::H5Group h5 = softglass::H5File::open(dir_.path() / "out" / "comparison.h5").root();
+  const softglass::H5Group h5 =
+      softglass::H5File::open(dir_.path() / "out" / "comparison.h5").root();
   const std::vector<double> stored = h5.read_array("results/relative_error").data;
   ASSERT_EQ(stored.size(), torque_error.size());
   for (std::size_t k = 0; k < stored.size(); ++k)
@@ -159,8 +160,8 @@ namespace {
 // latter with an end-effect factor 1.1. The Couette scene's ISO 3219
 // constants, computed from the geometry alone, must reproduce both.
 TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
-  const fs::path data = fs::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry" /
-                        "castoroil85_couette_flow_sweep.csv";
+  const fs::path data =
+      fs::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry" / "castoroil85_couette_flow_sweep.csv";
   if (!fs::exists(data)) GTEST_SKIP() << data << " is absent";
   TemporaryDirectory dir;
   write_text(dir.path() / "material.prm", material_text(10.0));
@@ -169,8 +170,9 @@ TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
              " set inner radius = 0.014\n set outer radius = 0.0152\n set length = 0.042\n"
              "end\nsubsection solver\n set preset = fast\nend\n");
   const auto o = softglass::testing::run_tool(
-      MACRO_EXECUTABLE, fmt::format("compare cell.prm '{}' -o out -q --min-rate 300", data.string()),
-      dir.path(), dir.path() / "capture");
+      MACRO_EXECUTABLE,
+      fmt::format("compare cell.prm '{}' -o out -q --min-rate 300", data.string()), dir.path(),
+      dir.path() / "capture");
   ASSERT_EQ(o.code, 0) << o.err;
   std::istringstream csv(read_text(dir.path() / "out" / "comparison.csv"));
   std::string line;

@@ -98,10 +98,11 @@ TEST(FeConePlate, NewtonianFiniteAngleRatio) {
 // the fill — T(1) < T(1.05) ≤ T(1.1), an exact inequality.
 TEST(FeConePlate, FillLevelChangesTheTorqueAsItMust) {
   const auto torque = [](double fill, const std::string& law) {
-    return run_scene("set scene = cone-plate\nsubsection cone-plate\n set radius = 0.025\n"
-                     " set angle = 4\n set truncation = 2.5e-9\n set fill = " +
-                         std::to_string(fill) + "\nend\n" + law,
-                     {0.5})[0];
+    return run_scene(
+        "set scene = cone-plate\nsubsection cone-plate\n set radius = 0.025\n"
+        " set angle = 4\n set truncation = 2.5e-9\n set fill = " +
+            std::to_string(fill) + "\nend\n" + law,
+        {0.5})[0];
   };
   for (const Law& l : kLaws) {
     const auto under = torque(0.9, law_text(l));
@@ -139,10 +140,11 @@ TEST(FeParallelPlates, NormalForceMatchesTheClosedForm) {
   const auto rows = run_scene(
       "set scene = parallel-plates\nsubsection parallel-plates\n set radius = 0.02\n set gap = "
       "0.001\nend\n" +
-          material(10.0, 5.0, 0.5).replace(
-              material(10.0, 5.0, 0.5).find("end\n"), 4,
-              " set N1 yield = 2\n set N1 consistency = 3\n set N1 flow index = 0.6\n"
-              " set N2 yield = -1\n set N2 consistency = -1.5\n set N2 flow index = 0.5\nend\n"),
+          material(10.0, 5.0, 0.5)
+              .replace(material(10.0, 5.0, 0.5).find("end\n"), 4,
+                       " set N1 yield = 2\n set N1 consistency = 3\n set N1 flow index = 0.6\n"
+                       " set N2 yield = -1\n set N2 consistency = -1.5\n set N2 flow index = "
+                       "0.5\nend\n"),
       {0.1, 10.0});
   constexpr int kNormalForce = kDeviation + 1;  // after the ideal geometry's columns
   for (std::size_t k = 0; k < rows.size(); ++k) {

@@ -43,7 +43,9 @@ SolverSettings channel_settings() {
 
 // The exact developed profile of `law` as boundary data; no slip.
 std::function<Tensor<1, 2>(const Point<2>&)> developed(const HerschelBulkley& law) {
-  return [law](const Point<2>& p) { return Tensor<1, 2>({exact::velocity(law, channel, p[1]), 0.0}); };
+  return [law](const Point<2>& p) {
+    return Tensor<1, 2>({exact::velocity(law, channel, p[1]), 0.0});
+  };
 }
 const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
 
@@ -52,11 +54,10 @@ TEST(FeStokes, PoiseuilleFlowOfAHerschelBulkleyMaterial) {
     StokesFlowSolver solver(channel_mesh(), law, channel_settings());
     const auto inflow = developed(law);
     const double wall_rate = law.rate(G * H);
-    const StokesResult r =
-        solver.run({.velocity = {{0, inflow}, {1, inflow}, {2, zero}, {3, zero}},
-                    .characteristic_rate = wall_rate,
-                    .force_boundary = 1,
-                    .pressure_boundary = 0});
+    const StokesResult r = solver.run({.velocity = {{0, inflow}, {1, inflow}, {2, zero}, {3, zero}},
+                                       .characteristic_rate = wall_rate,
+                                       .force_boundary = 1,
+                                       .pressure_boundary = 0});
     // On the outlet the force on the boundary is ∫ p ds along x (∂u/∂x = 0
     // there), so the mean outlet pressure is force_x / 2H.
     const double drop = r.value.mean_pressure - r.value.force[0] / (2.0 * H);
