@@ -203,13 +203,7 @@ int compare(const CompareOptions& o) {
   for (const std::string& c : measured.conversions) header_lines.push_back("derived: " + c);
 
   AtomicOutput& csv_file = *claimed.files[0];
-  std::ofstream csv(csv_file.temporary_path());
-  for (const std::string& line : header_lines) csv << "# " << line << "\n";
-  for (std::size_t c = 0; c < table.size(); ++c) csv << (c ? "," : "") << csv_header(table[c]);
-  csv << "\n";
-  for (const auto& v : table_rows) csv << fmt::format("{:.8g}\n", fmt::join(v, ","));
-  csv.close();
-  if (!csv) throw NumericalError(fmt::format("cannot write {}", csv_file.final_path().string()));
+  write_results_csv(csv_file.temporary_path(), header_lines, table, table_rows, 8);
 
   io::OverlayPlot plot{
       .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),

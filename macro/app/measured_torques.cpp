@@ -17,9 +17,8 @@ MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
   const bool has_stress = curve.has(Measured::stress);
   MeasuredTorques m;
   if (!has_omega) {
-    m.conversions.push_back(fmt::format(
-        "angular velocity = shear rate / {:.6g} 1/rad ({})", constants.strain_constant,
-        constants.convention));
+    m.conversions.push_back(fmt::format("angular velocity = shear rate / {:.6g} 1/rad ({})",
+                                        constants.strain_constant, constants.convention));
   }
   if (!has_torque) {
     m.conversions.push_back(fmt::format("torque = stress / {:.6g} Pa/(N m) ({})",
@@ -29,17 +28,19 @@ MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
   for (std::size_t i = 0; i < curve.size(); ++i) {
     const double omega = has_omega ? curve[Measured::angular_velocity][i]
                                    : curve[Measured::shear_rate][i] / constants.strain_constant;
-    const double rate = has_rate ? curve[Measured::shear_rate][i] : constants.strain_constant * omega;
+    const double rate =
+        has_rate ? curve[Measured::shear_rate][i] : constants.strain_constant * omega;
     if (rate < min_rate || rate > max_rate) {
       ++m.left_out;
       continue;
     }
-    const double torque =
-        has_torque ? curve[Measured::torque][i] : curve[Measured::stress][i] / constants.stress_constant;
+    const double torque = has_torque ? curve[Measured::torque][i]
+                                     : curve[Measured::stress][i] / constants.stress_constant;
     m.angular_velocity.push_back(omega);
     m.shear_rate.push_back(rate);
     m.torque.push_back(torque);
-    m.stress.push_back(has_stress ? curve[Measured::stress][i] : constants.stress_constant * torque);
+    m.stress.push_back(has_stress ? curve[Measured::stress][i]
+                                  : constants.stress_constant * torque);
     if (m.normal_force) m.normal_force->push_back(curve[Measured::normal_force][i]);
   }
   require(m.angular_velocity.size() >= 2,

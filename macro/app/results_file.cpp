@@ -1,11 +1,26 @@
 #include "macro/app/results_file.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <fstream>
+
+#include "common/errors.h"
 #include "common/h5_file.h"
 
 namespace softglass::macro::app {
 
-std::string csv_header(const Column& column) {
-  return column.name + " [" + column.unit + "]";
+void write_results_csv(const std::filesystem::path& path, const std::vector<std::string>& comments,
+                       const std::vector<Column>& columns,
+                       const std::vector<std::vector<double>>& rows, int digits) {
+  std::ofstream csv(path);
+  for (const std::string& line : comments) csv << "# " << line << "\n";
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    csv << (c ? "," : "") << columns[c].name << " [" << columns[c].unit << "]";
+  csv << "\n";
+  for (const auto& row : rows) csv << fmt::format("{:.{}g}\n", fmt::join(row, ","), digits);
+  csv.close();
+  if (!csv) throw NumericalError(fmt::format("cannot write {}", path.string()));
 }
 
 void write_results_h5(const std::filesystem::path& path, const std::vector<Column>& columns,

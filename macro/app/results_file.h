@@ -1,6 +1,7 @@
-// The HDF5 file of a `macro` run (product.md: one HDF5 file per run) —
-// results.h5 of `macro run`, comparison.h5 of `macro compare`: the table of
-// the run's CSV, one dataset per column, and the run's provenance.
+// The table files of a `macro` run — results.csv/.h5 of `macro run`,
+// comparison.csv/.h5 of `macro compare` (product.md: one HDF5 file per run,
+// CSV with units in every header). The HDF5 file holds the CSV's table, one
+// dataset per column, and the run's provenance:
 //
 //   /                  attributes software, scene_file, wall_time [s],
 //                      mpi_ranks, ranks_per_point, operating_points
@@ -28,8 +29,12 @@ struct RunProvenance {
   unsigned mpi_ranks = 1, ranks_per_point = 1;
 };
 
-/// A column's CSV header, "name [unit]".
-std::string csv_header(const Column& column);
+/// Writes `path`: each of `comments` as a `# ` line, the header "name [unit]"
+/// per column, then `rows` with `digits` significant digits; NumericalError
+/// if the file cannot be written.
+void write_results_csv(const std::filesystem::path& path, const std::vector<std::string>& comments,
+                       const std::vector<Column>& columns,
+                       const std::vector<std::vector<double>>& rows, int digits);
 
 /// Writes `path` (a new file): column c of `rows` under the name of `columns[c]`.
 void write_results_h5(const std::filesystem::path& path, const std::vector<Column>& columns,

@@ -2,7 +2,6 @@
 
 #include <deal.II/base/mpi.h>
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <chrono>
 #include <fstream>
@@ -67,14 +66,9 @@ int run(const RunOptions& options) {
     table_rows.back().insert(table_rows.back().end(), rows[k].begin(), rows[k].end());
   }
 
-  std::ofstream csv(csv_file.temporary_path());
-  csv << "# " << scene->description() << "\n";
-  csv << "# " << describe_model(material, settings) << "\n";
-  for (std::size_t c = 0; c < table.size(); ++c) csv << (c ? "," : "") << csv_header(table[c]);
-  csv << "\n";
-  for (const auto& row : table_rows) csv << fmt::format("{:.10g}\n", fmt::join(row, ","));
-  csv.close();
-  if (!csv) throw NumericalError(fmt::format("cannot write {}", csv_file.final_path().string()));
+  write_results_csv(csv_file.temporary_path(),
+                    {scene->description(), describe_model(material, settings)}, table, table_rows,
+                    10);
 
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -109,8 +109,7 @@ namespace {
 
 // The scene's material, or the fragment file `override` when it is not empty
 // (`prm` then states it instead, for the summary's parameter listing).
-Material read_scene_material(dealii::ParameterHandler& prm,
-                             const std::filesystem::path& override) {
+Material read_scene_material(dealii::ParameterHandler& prm, const std::filesystem::path& override) {
   if (override.empty()) return read_material(prm);
   const Material material = read_material_file(override);
   set_material(prm, material);

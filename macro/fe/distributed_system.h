@@ -22,6 +22,12 @@ namespace softglass::macro::fe {
 
 using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
+/// The cells this rank assembles and integrates over.
+template <int dim>
+auto owned_cells(const dealii::DoFHandler<dim>& dof_handler) {
+  return dof_handler.active_cell_iterators() | dealii::IteratorFilters::LocallyOwnedCell();
+}
+
 class DistributedSystem {
  public:
   DistributedSystem(MPI_Comm communicator, MatrixKind kind)

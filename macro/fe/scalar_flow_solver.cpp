@@ -82,7 +82,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <string>
 #include <type_traits>
 
@@ -187,11 +186,6 @@ class ScalarFlowSolver<dim>::Implementation {
   double rho(const Point<dim>& x) const { return power(x[0], weights_.radial_weight); }
   double s(const Point<dim>& x) const { return power(x[0], weights_.rate_radius_power); }
 
-  /// The cells this rank assembles and integrates over.
-  auto owned_cells() const {
-    return dof_handler_.active_cell_iterators() | IteratorFilters::LocallyOwnedCell();
-  }
-
   /// Shear rate, stress and whether the material yields at quadrature point x
   /// (number k over this rank's cells): from the gradient while regularising;
   /// ALG2 keeps its rate field γ, exactly zero in rigid regions.
@@ -287,7 +281,7 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::vector<types::global_dof_index> dofs(n);
 
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values.get_function_gradients(field, gradients);
     cell_matrix = 0.0;
@@ -440,7 +434,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
       mapping_, fe_, quadrature,
       update_values | update_gradients | update_quadrature_points | update_JxW_values);
   const unsigned n = fe_.n_dofs_per_cell(), nq = quadrature.size();
-  const auto cells = owned_cells();
+  const auto cells = owned_cells(dof_handler_);
   const std::size_t points = std::distance(cells.begin(), cells.end()) * nq;
   std::vector<Tensor<1, dim>> rate(points), multiplier(points), gradients(nq);
   al_rate_.assign(points, 0.0);
@@ -456,7 +450,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
     rhs = 0.0;
     if (with_matrix) system_.matrix = 0.0;
     std::size_t k = 0;
-    for (const auto& cell : owned_cells()) {
+    for (const auto& cell : owned_cells(dof_handler_)) {
       fe_values.reinit(cell);
       cell_matrix = 0.0;
       cell_rhs = 0.0;
@@ -489,7 +483,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
   {
     const VectorType& field = system_.readable(solution_);
     std::size_t k = 0;
-    for (const auto& cell : owned_cells()) {
+    for (const auto& cell : owned_cells(dof_handler_)) {
       fe_values.reinit(cell);
       fe_values.get_function_gradients(field, gradients);
       for (const unsigned q : fe_values.quadrature_point_indices()) {
@@ -515,7 +509,7 @@ unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
     const VectorType& field = system_.readable(solution_);
     double mismatch = 0.0, norm = 0.0, volume = 0.0;
     std::size_t k = 0;
-    for (const auto& cell : owned_cells()) {
+    for (const auto& cell : owned_cells(dof_handler_)) {
       fe_values.reinit(cell);
       fe_values.get_function_gradients(field, gradients);
       for (const unsigned q : fe_values.quadrature_point_indices()) {
@@ -575,7 +569,7 @@ Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional
   std::array<double, 5> sums{};
   auto& [flow, dissipation, boundary_sum, volume, yielded] = sums;
   std::size_t k = 0;
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values.get_function_values(field, values);
     fe_values.get_function_gradients(field, gradients);
@@ -630,7 +624,7 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
   FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_quadrature_points);
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::size_t k = 0;
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values.get_function_gradients(field, gradients);
     bool above = false, below = false;
@@ -743,6 +737,8 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
 template <int dim>
 void ScalarFlowSolver<dim>::Implementation::output_results(
     const std::filesystem::path& file) const {
+  // A 1D section is solved whole on every rank of its group: one writes it.
+  if (dim == 1 && Utilities::MPI::this_mpi_process(settings_.mesh_communicator) != 0) return;
   // Cell averages of the derived fields (one value per cell keeps the file
   // small and shows the yield surface as the set of partly yielded cells).
   const VectorType& field = system_.readable(solution_);
@@ -752,7 +748,7 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
   FEValues<dim> fe_values(mapping_, fe_, quadrature, update_gradients | update_quadrature_points);
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::size_t k = 0;
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values.get_function_gradients(field, gradients);
     const unsigned c = cell->active_cell_index();
@@ -774,8 +770,6 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
   data_out.add_data_vector(eta, "viscosity");
   data_out.add_data_vector(yielded, "yielded");
   data_out.build_patches(mapping_, fe_.degree);
-  // A 1D section is solved whole on every rank of its group: one writes it.
-  if (dim == 1 && Utilities::MPI::this_mpi_process(settings_.mesh_communicator) != 0) return;
   io::write_vtu(data_out, file, communicator_);
 }
 

@@ -98,9 +98,6 @@ class StokesFlowSolver::Implementation {
 
  private:
   VectorType setup_system();
-  auto owned_cells() const {
-    return dof_handler_.active_cell_iterators() | IteratorFilters::LocallyOwnedCell();
-  }
   void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
                        bool damped);
   unsigned solve_newton(const RegularisedLaw& law, bool allow_damping);
@@ -184,7 +181,7 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
   std::vector<SymmetricTensor<2, 2>> strain(quadrature.size()), phi_d(n);
   std::vector<double> p(quadrature.size()), div_u(quadrature.size()), phi_div(n), phi_p(n);
   std::vector<types::global_dof_index> dofs(n);
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values[velocities].get_function_symmetric_gradients(field, strain);
     fe_values[velocities].get_function_divergences(field, div_u);
@@ -288,7 +285,7 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate() const {
   // integral and the length it is taken over.
   std::array<double, 7> sums{};
   auto& [dissipation, area, yielded, force_x, force_y, pressure_sum, pressure_length] = sums;
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values[velocities].get_function_symmetric_gradients(field, strain);
     for (const unsigned q : fe_values.quadrature_point_indices()) {
@@ -350,7 +347,7 @@ void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
     const QGauss<2> quadrature(3);
     FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients);
     std::vector<SymmetricTensor<2, 2>> strain(quadrature.size());
-    for (const auto& cell : owned_cells()) {
+    for (const auto& cell : owned_cells(dof_handler_)) {
       fe_values.reinit(cell);
       fe_values[velocities].get_function_symmetric_gradients(field, strain);
       bool above = false, below = false;
@@ -448,7 +445,7 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
   FEValues<2> fe_values(mapping_, fe_, quadrature, update_gradients);
   const FEValuesExtractors::Vector velocities(0);
   std::vector<SymmetricTensor<2, 2>> strain(quadrature.size());
-  for (const auto& cell : owned_cells()) {
+  for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
     fe_values[velocities].get_function_symmetric_gradients(field, strain);
     const unsigned c = cell->active_cell_index();
