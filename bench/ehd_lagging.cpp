@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
     ShearModel lagged_model = model;
     lagged_model.drag.coupling = DragCoupling::lagged;
     EhdDrag lagged(lagged_model.drag);
-    const auto integrator = make_integrator({});
+    const auto integrator = make_integrator({.name = "euler"});
     flow.sample_stress_from(1e300);
     flow.evaluate();
     double worst = 0.0, sum2 = 0.0;
@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
       ShearModel m = model;
       m.drag.coupling = coupling;
       OverdampedShear flow(ContactSystem(packing.particles, packing.box, law, spec.skin), m);
-      const auto integrator = make_integrator({});
+      const auto integrator = make_integrator({.name = "euler"});
       try {
         const ShearResult r = run_shear(flow, *integrator, protocol);
         for (const char* q : {"sigma", "N1", "N2", "sigma_viscous"}) {

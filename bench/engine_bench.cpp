@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
   model.gamma_tilde = gamma_tilde;
   model.drag.enabled = ehd;
   OverdampedShear flow(ContactSystem(packing.particles, packing.box, law, spec.skin), model);
-  IntegratorSpec integrator_spec;
+  IntegratorSpec integrator_spec{.name = "euler"};
   integrator_spec.max_step = strain_per_step;
   integrator_spec.tolerance = 0.1;  // the fixed step decides; no rejections
   const auto integrator = make_integrator(integrator_spec);

@@ -42,7 +42,7 @@ OUT=${OUT:-$(mktemp -d)/stiff_tradeoff.txt}
 : > "$OUT"
 for seed in $SEEDS; do
   for g in $GAMMAS; do
-    runs=(--run implicit:1e-1 --run implicit:3e-2 --run implicit:1e-3)
+    runs=(--run implicit:1e-1 --run implicit:3e-2 --run implicit:1e-2 --run implicit:3e-3 --run implicit:1e-3)
     case $g in
       # default; reference; the implicit scheme with its step capped (its
       # first-order error at the 0.01 sampling step is ~1 % here)

@@ -8,8 +8,8 @@
 // γ̃ → 0 (σ^v ∝ γ̃^{2/3}), so the stationary mean of σ^e is the dynamic yield
 // stress σ_y(φ): the low end of every flow curve (spec model.md §8).
 //
-// The minimiser is incremental_minimiser.h with Φ = E (Newton, sparse Cholesky,
-// shifted when indefinite, Armijo line search): the energy falls monotonically
+// The minimiser is incremental_minimiser.h with Φ = E (Newton–CG, damped when
+// indefinite, Armijo line search): the energy falls monotonically
 // within every step. The guess for each step's non-affine displacement is the
 // previous step's (linear response between events), so an elastic step takes
 // one or two Newton iterations.

@@ -31,8 +31,10 @@ void Integrator::record_accepted(double dt) {
 }
 
 void IntegratorSpec::validate() const {
-  require(tolerance > 0.0 && tolerance <= 0.1,
-          fmt::format("integrator tolerance = {} is outside (0, 0.1] (units of R)", tolerance));
+  require(tolerance >= 0.0 && tolerance <= 0.1,
+          fmt::format("integrator tolerance = {} is outside [0, 0.1] (units of R; 0: the "
+                      "scheme's default)",
+                      tolerance));
   require(stability_fraction > 0.0 && stability_fraction < 1.0,
           fmt::format("stability fraction = {} is outside (0, 1)", stability_fraction));
   require(max_step > 0.0 && max_step <= 1.0,
@@ -47,12 +49,26 @@ std::vector<std::string> integrator_names() {
   return names;
 }
 
+double default_tolerance(const std::string& scheme) {
+  return scheme == "implicit" ? 1e-3 : 1e-4;
+}
+
+IntegratorSpec IntegratorSpec::resolved_for(double gamma_tilde) const {
+  IntegratorSpec spec = *this;
+  if (spec.name == "auto") spec.name = gamma_tilde >= kAutoImplicitBelow ? "euler" : "implicit";
+  if (spec.tolerance == 0.0) spec.tolerance = default_tolerance(spec.name);
+  return spec;
+}
+
 std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec) {
+  require(spec.name != "auto",
+          "integrator 'auto' depends on the shear rate: resolve it first (resolved_for)");
   spec.validate();
+  const IntegratorSpec resolved = spec.resolved_for(0.0);  // the default tolerance, if 0
   for (const auto& i : kRegistry) {
-    if (spec.name == i.name) return i.make(spec);
+    if (spec.name == i.name) return i.make(resolved);
   }
-  throw InputError(fmt::format("integrator '{}' is unknown; allowed: {}", spec.name,
+  throw InputError(fmt::format("integrator '{}' is unknown; allowed: auto, {}", spec.name,
                                fmt::join(integrator_names(), ", ")));
 }
 

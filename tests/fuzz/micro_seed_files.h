@@ -47,9 +47,10 @@ inline SeedFiles write_seed_files(const std::filesystem::path& directory) {
     if (!saved) write_checkpoint(files.checkpoint, c);
     saved = true;
   };
-  const auto integrator = make_integrator({});
-  ShearResult result = run_shear(flow, *integrator, protocol, {},
-                                 {20, save, [] { return make_integrator({}); }, nullptr});
+  const auto integrator = make_integrator({.name = "euler"});
+  ShearResult result =
+      run_shear(flow, *integrator, protocol, {},
+                {20, save, [] { return make_integrator({.name = "euler"}); }, nullptr});
   const Particles final_particles = flow.system().wrapped_in_label_order();
   const std::vector<Snapshot> stationary = stationary_snapshots(result);
   StructureSettings settings;

@@ -8,8 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "micro/io/checkpoint_file.h"
 #include "common/errors.h"
+#include "micro/io/checkpoint_file.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {
@@ -44,8 +44,9 @@ class Checkpoints : public ::testing::Test {
     ShearModel model;
     model.gamma_tilde = 1e-4;
     OverdampedShear flow(ContactSystem(packing_.particles, packing_.box, law_, spec_.skin), model);
-    const auto integrator = make_integrator({});
-    ShearCheckpointing checkpointing{150, save, [] { return make_integrator({}); }, resume_from};
+    const auto integrator = make_integrator({.name = "euler"});
+    ShearCheckpointing checkpointing{150, save, [] { return make_integrator({.name = "euler"}); },
+                                     resume_from};
     return run_shear(flow, *integrator, protocol_, {}, checkpointing);
   }
 

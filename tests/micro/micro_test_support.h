@@ -51,7 +51,7 @@ inline ShortShear shear_briefly(const Packing& packing, std::shared_ptr<const Co
   ShearModel model;
   model.gamma_tilde = 1e-4;
   OverdampedShear flow(ContactSystem(packing.particles, packing.box, std::move(law), skin), model);
-  const auto integrator = make_integrator({});
+  const auto integrator = make_integrator({.name = "euler"});
   ShearProtocol protocol;
   protocol.check_interval = check_interval;
   protocol.min_strain = protocol.max_strain = strain;
@@ -76,7 +76,8 @@ inline RunRecord packing_record(const Packing& packing, std::shared_ptr<const Co
   RunRecord record;
   record.command = "run";
   record.parameters =
-      "subsection particles\n  set number = " + std::to_string(packing.particles.size()) + "\nend\n";
+      "subsection particles\n  set number = " + std::to_string(packing.particles.size()) +
+      "\nend\n";
   record.packing = packing.report;
   record.packing_particles = packing.particles;
   record.packing_box = packing.box;

@@ -66,10 +66,28 @@ TEST(StiffIntegrators, RegisteredByName) {
   const auto names = integrator_names();
   EXPECT_NE(std::find(names.begin(), names.end(), "implicit"), names.end());
   EXPECT_EQ(make_integrator({.name = "implicit"})->name(), "implicit");
-  EXPECT_EQ(make_integrator({})->name(), "euler");  // the default is unchanged
   IntegratorSpec bad;
   bad.solver_tolerance = 0.1;
   EXPECT_THROW(bad.validate(), InputError);
+}
+
+// `auto` (the default) is the explicit scheme where it is accurate and cheap
+// and the implicit one below kAutoImplicitBelow; it must be resolved before an
+// integrator is made, and a zero tolerance becomes the chosen scheme's default.
+TEST(StiffIntegrators, AutoPicksTheSchemeByRate) {
+  const IntegratorSpec spec{.name = "auto", .tolerance = 0.0};
+  EXPECT_THROW(make_integrator(spec), InputError);
+  const IntegratorSpec fast = spec.resolved_for(kAutoImplicitBelow);
+  EXPECT_EQ(fast.name, "euler");
+  EXPECT_EQ(fast.tolerance, default_tolerance("euler"));
+  const IntegratorSpec slow = spec.resolved_for(0.5 * kAutoImplicitBelow);
+  EXPECT_EQ(slow.name, "implicit");
+  EXPECT_EQ(slow.tolerance, default_tolerance("implicit"));
+  EXPECT_EQ(make_integrator(slow)->name(), "implicit");
+  // A given tolerance is kept, and a named scheme is never replaced.
+  IntegratorSpec given{.name = "euler", .tolerance = 3e-5};
+  EXPECT_EQ(given.resolved_for(1e-9).name, "euler");
+  EXPECT_EQ(given.resolved_for(1e-9).tolerance, 3e-5);
 }
 
 // Where the explicit scheme is cheap (γ̃ = 1e-4) both integrate the same
@@ -156,10 +174,11 @@ TEST(Aqs, EnergyFallsMonotonicallyAndYieldStressIsPositive) {
     }
   });
   std::printf("[ measured ] largest rise of the energy within a step: %.2e\n", largest_rise);
-  std::printf("[ measured ] AQS: %zu steps, %zu Newton iterations, %zu stress drops, sigma_y %.4e "
-              "± %.1e, %.2f s\n",
-              r.steps, r.newton_iterations, r.stress_drops, r.summary["sigma"].mean,
-              r.summary["sigma"].standard_error, r.seconds);
+  std::printf(
+      "[ measured ] AQS: %zu steps, %zu Newton iterations, %zu stress drops, sigma_y %.4e "
+      "± %.1e, %.2f s\n",
+      r.steps, r.newton_iterations, r.stress_drops, r.summary["sigma"].mean,
+      r.summary["sigma"].standard_error, r.seconds);
   EXPECT_GT(checked, r.steps);  // at least one iteration per step on average
   EXPECT_EQ(increases, 0u);
   EXPECT_EQ(r.unconverged_steps, 0u);
