@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Flow curves of a sweep, like the paper's Fig. 2: sigma, N1 and -N2 against
 gamma~ for each volume fraction, and the elastic and viscous parts of sigma.
+A quasi-static row (gamma~ = 0, the sweep's AQS case) is drawn as a dashed
+horizontal line: the gamma~ -> 0 limit the curve should approach.
 
     /usr/bin/python3 scripts/plot_flow_curve.py SWEEP/flow_curve.csv OUT_PREFIX
 
@@ -23,6 +25,13 @@ def read_table(path):
     return {name: data[:, k] for k, name in enumerate(names)}
 
 
+def quasi_static(ax, t, phi, name, sign, colour):
+    """The quasi-static value of `name` at phi, if any, as a dashed line (log axes: > 0 only)."""
+    for value in sign * t[name][(t["phi"] == phi) & (t["gamma_tilde"] == 0)]:
+        if value > 0:
+            ax.axhline(value, color=colour, ls="--", lw=1)
+
+
 def main(table_path, prefix):
     t = read_table(table_path)
     phis = sorted(set(t["phi"]))
@@ -30,11 +39,12 @@ def main(table_path, prefix):
 
     fig, axes = plt.subplots(1, 3, figsize=(13, 4))
     for phi, colour in zip(phis, colours):
-        at = t["phi"] == phi
+        at = (t["phi"] == phi) & (t["gamma_tilde"] > 0)
         rate = t["gamma_tilde"][at]
         for ax, name, sign in zip(axes, ["sigma", "N1", "N2"], [1, 1, -1]):
             ax.errorbar(rate, sign * t[name][at], yerr=t[name + "_se"][at], fmt="o-", color=colour,
                         ms=4, capsize=2, label=rf"$\phi$ = {phi:.2f}")
+            quasi_static(ax, t, phi, name, sign, colour)
     for ax, label in zip(axes, [r"$\sigma/E^*$", r"$N_1/E^*$", r"$-N_2/E^*$"]):
         ax.set_xscale("log")
         ax.set_yscale("log")
@@ -46,10 +56,11 @@ def main(table_path, prefix):
 
     fig, ax = plt.subplots(figsize=(5.5, 4))
     for phi, colour in zip(phis, colours):
-        at = t["phi"] == phi
+        at = (t["phi"] == phi) & (t["gamma_tilde"] > 0)
         rate = t["gamma_tilde"][at]
         ax.plot(rate, t["sigma_elastic"][at], "o-", color=colour, ms=4, label=rf"$\phi$ = {phi:.2f}")
         ax.plot(rate, t["sigma_viscous"][at], "s--", color=colour, ms=4)
+        quasi_static(ax, t, phi, "sigma_elastic", 1, colour)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(r"$\tilde\gamma$")

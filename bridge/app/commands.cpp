@@ -64,10 +64,12 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
 
   std::vector<std::string> lines =
       provenance("softglass bridge fit: the flow laws of a particle-engine sweep", command_line);
-  lines.push_back(fmt::format("input:    {} ({} state points, {} volume fractions){}{}",
-                              o.table.string(), sweep.points(), sweep.groups.size(),
-                              o.packings.empty() ? "" : ", runs " + o.packings.string(),
-                              o.structure.empty() ? "" : ", structure " + o.structure.string()));
+  const std::size_t quasi_static = sweep.quasi_static_points();
+  lines.push_back(fmt::format(
+      "input:    {} ({} state points{}, {} volume fractions){}{}", o.table.string(), sweep.points(),
+      quasi_static > 0 ? fmt::format(" and {} quasi-static, not fitted", quasi_static) : "",
+      sweep.groups.size(), o.packings.empty() ? "" : ", runs " + o.packings.string(),
+      o.structure.empty() ? "" : ", structure " + o.structure.string()));
   for (const std::string& c : table.comments) lines.push_back("input |   " + c);
   lines.push_back("errors:   " + a.method);
   for (const std::string& w : a.warnings) lines.push_back("WARNING:  " + w);
@@ -95,9 +97,10 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
     const MaterialValue e_star =
         contact_modulus_from_plateau(law, o.phi, *o.plateau_modulus, o.extrapolate);
     request.modulus = e_star.value;
-    fmt::print("E*       {:.6g} Pa ± {:.2g} % = G' / (G0/E*)(phi): every stress below carries this "
-               "error too\n",
-               e_star.value, 100.0 * e_star.error() / e_star.value);
+    fmt::print(
+        "E*       {:.6g} Pa ± {:.2g} % = G' / (G0/E*)(phi): every stress below carries this "
+        "error too\n",
+        e_star.value, 100.0 * e_star.error() / e_star.value);
     lines.push_back(fmt::format(
         "E* = G' / (G0/E*)(phi) = {:.6g} Pa / {:.6g} = {:.6g} Pa +- {:.2g} % (the law's G0/E* at "
         "phi; every stress below scales with E*, so this error adds to theirs)",

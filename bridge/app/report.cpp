@@ -12,7 +12,8 @@ namespace softglass::bridge {
 std::string with_error(double value, double error, int digits) {
   if (!std::isfinite(value)) return "not fitted";
   // No error, or only rounding noise (one packing: no packing-to-packing spread).
-  if (!std::isfinite(error) || error <= 1e-12 * std::abs(value)) return fmt::format("{:.4g}", value);
+  if (!std::isfinite(error) || error <= 1e-12 * std::abs(value))
+    return fmt::format("{:.4g}", value);
   // Print the value to the decimal place of the error's last significant digit.
   const int place = static_cast<int>(std::floor(std::log10(error))) - (digits - 1);
   const double magnitude = std::max(std::abs(value), error);
@@ -42,6 +43,29 @@ const char* law_title(Quantity q) {
   return "";
 }
 
+// The quasi-static σ_y (the table's γ̃ = 0 rows) beside the Herschel–Bulkley
+// σ_y: two estimates of one yield stress, and their difference in units of
+// its standard error (both errors combined).
+void print_quasi_static_yield(const SweepAnalysis& a) {
+  fmt::print(
+      "\nyield stress: quasi-static (AQS, the gamma~ = 0 rows, not fitted) against "
+      "Herschel-Bulkley\n");
+  fmt::print("  {:<6} {:>24} {:>24} {:>10}\n", "phi", "AQS sigma_y/E*", "HB sigma_y/E*", "diff/SE");
+  for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
+    const PhiGroup& g = a.sweep.groups[j];
+    const double hb = a.estimate.fit.groups[j].hb[index(Quantity::sigma)]->yield;
+    const double hb_error = a.uncertainty.error.groups[j].hb[index(Quantity::sigma)]->yield;
+    if (!g.quasi_static) {
+      fmt::print("  {:<6} {:>24} {:>24}\n", g.phi, "-", with_error(hb, hb_error));
+      continue;
+    }
+    const Estimate aqs = *g.quasi_static->values[index(Quantity::sigma)];
+    fmt::print("  {:<6} {:>24} {:>24} {:>10.2f}\n", g.phi, with_error(aqs.value, aqs.error),
+               with_error(hb, hb_error),
+               (aqs.value - hb) / std::sqrt(aqs.error * aqs.error + hb_error * hb_error));
+  }
+}
+
 }  // namespace
 
 void print_fit_report(const SweepAnalysis& a, const std::string& source) {
@@ -51,9 +75,11 @@ void print_fit_report(const SweepAnalysis& a, const std::string& source) {
     low = std::min(low, g.curves[index(Quantity::sigma)]->x.front());
     high = std::max(high, g.curves[index(Quantity::sigma)]->x.back());
   }
+  const std::size_t quasi_static = a.sweep.quasi_static_points();
   fmt::print(
-      "sweep    {}: {} state points, {} volume fractions {} ... {}, gamma~ {:.3g} ... {:.3g}\n",
-      source, a.sweep.points(), groups.size(), groups.front().phi, groups.back().phi, low, high);
+      "sweep    {}: {} state points, {} volume fractions {} ... {}, gamma~ {:.3g} ... {:.3g}{}\n",
+      source, a.sweep.points(), groups.size(), groups.front().phi, groups.back().phi, low, high,
+      quasi_static > 0 ? fmt::format("; and {} quasi-static (gamma~ = 0)", quasi_static) : "");
   fmt::print("errors   one standard deviation from a {}\n", a.method);
   for (Quantity q : kAllQuantities) {
     if (!a.sweep.present[index(q)]) continue;
@@ -78,6 +104,8 @@ void print_fit_report(const SweepAnalysis& a, const std::string& source) {
     fmt::print("  {:<6} {:>24} {:>20}\n", groups[j].phi, with_error(v.modulus, e.modulus),
                with_error(v.yield_strain, e.yield_strain));
   }
+
+  if (quasi_static > 0) print_quasi_static_yield(a);
 
   if (a.sweep.present[index(Quantity::force)]) {
     fmt::print(

@@ -93,6 +93,11 @@ class Columns {
     return value(
         r, c, [](double v) { return v > 0; }, "> 0");
   }
+  // γ̃: positive, or 0 for the quasi-static limit (a sweep's AQS rows).
+  double rate(std::size_t r, std::size_t c) const {
+    return value(
+        r, c, [](double v) { return v >= 0; }, ">= 0");
+  }
   double fraction(std::size_t r, std::size_t c) const {
     return value(
         r, c, [](double v) { return v > 0 && v < 1; }, "in (0, 1)");
@@ -146,7 +151,7 @@ FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
     StatePoint p;
     p.line = csv.line(r);
     p.phi = columns.fraction(r, phi);
-    p.gamma_tilde = columns.positive(r, rate);
+    p.gamma_tilde = columns.rate(r, rate);
     p.packings = static_cast<std::size_t>(columns.count(r, packings, 1));
     if (converged) {
       const double n = columns.count(r, *converged, 0);
@@ -193,7 +198,7 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
   const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); };
   std::vector<std::size_t> from_line(table.points.size(), 0);
   for (std::size_t r = 0; r < csv.rows(); ++r) {
-    const double p = columns.fraction(r, phi), g = columns.positive(r, rate);
+    const double p = columns.fraction(r, phi), g = columns.rate(r, rate);
     const auto it =
         std::find_if(table.points.begin(), table.points.end(),
                      [&](const StatePoint& s) { return same(p, s.phi) && same(g, s.gamma_tilde); });
@@ -231,7 +236,7 @@ std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
     PackingRun run;
     run.line = csv.line(r);
     run.phi = columns.fraction(r, phi);
-    run.gamma_tilde = columns.positive(r, rate);
+    run.gamma_tilde = columns.rate(r, rate);
     run.seed = static_cast<std::uint64_t>(columns.count(r, seed, 0));
     run.modulus = columns.positive(r, g0);
     for (Quantity q : kAllQuantities) {

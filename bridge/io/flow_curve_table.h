@@ -7,6 +7,10 @@
 // brackets and the units must be the documented ones, so that a table in
 // pascals (or a mixture) is refused instead of being fitted as if reduced.
 //
+// A row with γ̃ = 0 is the quasi-static limit (athermal quasi-static shear, a
+// sweep's AQS case): its σ is the dynamic yield stress. The readers accept it;
+// the fits leave it out (sweep/sweep.h).
+//
 // Beyond the documented columns, the bridge reads the optional structure
 // columns `f_m [E*R^2]` and `f_m_se [E*R^2]`: the elastic force at the radius of
 // maximum accumulation (Fig. 3c of the paper), for the force law. `micro
@@ -80,7 +84,7 @@ struct PackingRun {
 };
 
 /// Reads and checks the flow-curve table: required columns, units, finite
-/// values, φ in (0, 1), γ̃ > 0, σ > 0, standard errors > 0, G0 > 0, whole
+/// values, φ in (0, 1), γ̃ >= 0, σ > 0, standard errors > 0, G0 > 0, whole
 /// packing counts ≥ 1, converged counts (optional column) within 0 … packings,
 /// no state point twice. InputError names file, line, column.
 FlowCurveTable read_flow_curve_table(const CsvTable& csv);

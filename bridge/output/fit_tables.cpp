@@ -18,6 +18,11 @@ bool has(const SweepAnalysis& a, Quantity q) {
   return a.sweep.present[index(q)];
 }
 
+// The quasi-static σ_y goes beside the fitted one when the table has γ̃ = 0 rows.
+bool quasi_static_beside(const SweepAnalysis& a, Quantity q) {
+  return q == Quantity::sigma && a.sweep.quasi_static_points() > 0;
+}
+
 }  // namespace
 
 std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& comments) {
@@ -34,6 +39,10 @@ std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& co
     for (const std::string& name : {std::string("yield"), std::string("consistency")}) {
       header.push_back(column(q, name, u));
       header.push_back(column(q, name + "_se", u));
+      if (name == "yield" && quasi_static_beside(a, q)) {
+        header.push_back(column(q, "yield_quasi_static", u));
+        header.push_back(column(q, "yield_quasi_static_se", u));
+      }
     }
     header.push_back(column(q, "exponent", "1"));
     header.push_back(column(q, "exponent_se", "1"));
@@ -58,8 +67,14 @@ std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& co
       if (!has(a, q)) continue;
       const HbParameters &pv = *v.hb[index(q)], &pe = *e.hb[index(q)];
       const GoodnessOfFit& g = a.estimate.diagnostics.hb[j][index(q)]->goodness;
-      w << pv.yield << pe.yield << pv.consistency << pe.consistency << pv.exponent << pe.exponent
-        << g.reduced_chi2() << g.p_value;
+      w << pv.yield << pe.yield;
+      if (quasi_static_beside(a, q)) {  // NaN for a φ without its γ̃ = 0 row
+        const auto& row = a.sweep.groups[j].quasi_static;
+        w << (row ? row->values[index(q)]->value : NAN)
+          << (row ? row->values[index(q)]->error : NAN);
+      }
+      w << pv.consistency << pe.consistency << pv.exponent << pe.exponent << g.reduced_chi2()
+        << g.p_value;
       if (q == Quantity::force) continue;
       w << *v.own_k[index(q)] << *e.own_k[index(q)] << *v.universal_yield[index(q)]
         << *e.universal_yield[index(q)];

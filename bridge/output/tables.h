@@ -4,7 +4,8 @@
 //
 // fit, per volume fraction (<stem>_phi.csv): G0, γ_y, and for each quantity the
 // Herschel–Bulkley parameters with errors and goodness of fit, each φ's own
-// universal constant and the universal fit's yield value.
+// universal constant and the universal fit's yield value; beside σ_y, when the
+// table has quasi-static (γ̃ = 0) rows, their σ (NaN for a φ without one).
 // fit, per state point (<stem>_points.csv): the table's values and standard
 // errors, the smoothed errors used as weights, the Herschel–Bulkley model, and
 // the collapse coordinates γ̃/γ_y² and Q/Q_y of the universal laws (Fig. 4).

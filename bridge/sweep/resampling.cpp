@@ -143,6 +143,7 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
   }
 
   for (const PackingRun& run : runs) {
+    if (run.gamma_tilde == 0.0) continue;  // quasi-static runs: not fitted (sweep.h)
     const std::size_t j = find_group(sweep, run.phi);
     const std::size_t i = j < sweep.groups.size() ? find_rate(sweep.groups[j], run.gamma_tilde) : 0;
     if (j == sweep.groups.size() || i == sweep.groups[j].lines.size()) {

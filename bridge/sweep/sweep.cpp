@@ -40,6 +40,11 @@ std::size_t Sweep::points() const {
   return n;
 }
 
+std::size_t Sweep::quasi_static_points() const {
+  return static_cast<std::size_t>(std::count_if(
+      groups.begin(), groups.end(), [](const PhiGroup& g) { return g.quasi_static.has_value(); }));
+}
+
 std::size_t find_group(const Sweep& sweep, double phi) {
   for (std::size_t j = 0; j < sweep.groups.size(); ++j)
     if (std::abs(sweep.groups[j].phi - phi) <= kSamePhi) return j;
@@ -83,6 +88,15 @@ Sweep make_sweep(const FlowCurveTable& table) {
     if (p->converged && *p->converged < p->packings) {
       sweep.unconverged.push_back(fmt::format("phi = {}, gamma~ = {:.3g}: {} of {}", p->phi,
                                               p->gamma_tilde, *p->converged, p->packings));
+    }
+    if (p->gamma_tilde == 0.0) {
+      if (g.quasi_static) {  // φ within 1e-9 of each other are one φ
+        throw InputError(fmt::format(
+            "{}, line {}: a second quasi-static row (gamma~ = 0) for phi = {} (line {})",
+            table.source, p->line, g.phi, g.quasi_static->line));
+      }
+      g.quasi_static = *p;
+      continue;
     }
     g.lines.push_back(p->line);
     g.packings.push_back(p->packings);

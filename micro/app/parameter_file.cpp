@@ -157,7 +157,8 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Double(1e-3, 1.0));
   entry(prm, "map bin width", p.structure.map_bin_width, "Radial bin width of g(r, theta).",
         Patterns::Double(1e-3, 0.5));
-  entry(prm, "angle bins", p.structure.angle_bins, "Angular bins of g(r, theta).", Patterns::Integer(8, 720));
+  entry(prm, "angle bins", p.structure.angle_bins, "Angular bins of g(r, theta).",
+        Patterns::Integer(8, 720));
   entry(prm, "batches", p.structure.batches, "Batches of snapshots for the error estimates.",
         Patterns::Integer(2, 1000));
   prm.leave_subsection();
@@ -221,7 +222,8 @@ std::string without_subsection(const std::string& text, const std::string& name)
 }
 
 // The engine's types from the parsed entries, checked as a whole.
-MicroParameters convert(const ParameterHandler& prm, const Entries& e, const std::filesystem::path& file) {
+MicroParameters convert(const ParameterHandler& prm, const Entries& e,
+                        const std::filesystem::path& file) {
   MicroParameters p = e.p;
   p.packing.particles = e.particles;
   p.packing.seed = e.seed;
@@ -303,6 +305,17 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
         "A running case saves its state every this many accepted steps (about a minute for "
         "N = 1000 at the default) and a rerun goes on from it; 0: no checkpoints.",
         Patterns::Integer(0));
+  entry(prm, "quasi-static", s.spec.quasi_static,
+        "Add a quasi-static case per volume fraction and packing: athermal quasi-static shear "
+        "(strain steps, each followed by energy minimisation) of the same packing, whose "
+        "stationary stress is the dynamic yield stress sigma_y, written as the gamma~ = 0 row of "
+        "the flow curve. It stops by the rule of subsection shear (min and max strain, target "
+        "relative error); gamma dot tilde, drag and integrator do not apply to it.",
+        Patterns::Bool());
+  entry(prm, "quasi-static strain step", s.spec.quasi_static_strain_step,
+        "Strain step of the quasi-static cases: > 0 and at most shear/sample interval. The "
+        "default takes about 20 steps per elastic branch between plastic events (docs/sweeps.md).",
+        Patterns::Double(0.0, kMaxQuasiStaticStrainStep));
   prm.leave_subsection();
 }
 
@@ -332,6 +345,11 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   sweep.spec.checkpoint_steps = s.checkpoint_steps;
   require(!s.directory.empty(), "sweep: output directory is empty");
   sweep.spec.directory = s.directory;
+  // A sample averages whole strain steps (protocol/quasi_static_run.h).
+  require(!sweep.spec.quasi_static ||
+              sweep.spec.quasi_static_strain_step <= sweep.base.protocol.sample_interval,
+          fmt::format("sweep: 'quasi-static strain step' = {} exceeds shear/'sample interval' = {}",
+                      sweep.spec.quasi_static_strain_step, sweep.base.protocol.sample_interval));
   return sweep;
 }
 

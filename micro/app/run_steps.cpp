@@ -22,6 +22,49 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// A checkpoint to go on from, if its file exists; `read` is the reader of its kind.
+template <class Checkpoint, class Read>
+std::optional<Checkpoint> existing_checkpoint(const CheckpointSettings& checkpoints, Read read) {
+  if (checkpoints.file.empty() || !std::filesystem::exists(checkpoints.file)) return std::nullopt;
+  try {
+    return read(checkpoints.file);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{} (delete it to start this run afresh)", e.what()));
+  }
+}
+
+// Checkpointing of a run (ShearCheckpointing or QuasiStaticCheckpointing): go
+// on from `resume`, if any, and save into the file of `checkpoints`.
+template <class Checkpointing, class Checkpoint>
+Checkpointing checkpointing_of(const CheckpointSettings& checkpoints,
+                               const std::optional<Checkpoint>& resume) {
+  Checkpointing c;
+  if (resume) c.resume_from = &*resume;
+  if (!checkpoints.file.empty()) {
+    c.every_steps = checkpoints.every_steps;
+    c.save = [&checkpoints](const Checkpoint& state) { write_checkpoint(checkpoints.file, state); };
+  }
+  return c;
+}
+
+// A run's progress as the commands follow it: (strain, worst relative error).
+std::function<void(const ShearProgress&)> follow(
+    const std::function<void(double, double)>& progress) {
+  return [&progress](const ShearProgress& p) {
+    if (progress) progress(p.strain, p.worst_relative_error);
+  };
+}
+
+// The structure of the stationary part of `shear`, when it stored snapshots.
+void analyse_structure(RunRecord& record, const ShearRecord& shear, const ContactLaw& law,
+                       const MicroParameters& prm) {
+  const std::vector<Snapshot> stationary = stationary_snapshots(shear.result);
+  if (stationary.size() >= 2) {
+    record.structure = analyse_snapshots(stationary, shear.final_particles.radius,
+                                         shear.final_box.side(), law, prm.structure);
+  }
+}
+
 }  // namespace
 
 RunRecord pack_and_measure(const MicroParameters& prm, std::shared_ptr<const ContactLaw> law,
@@ -68,37 +111,41 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   OverdampedShear flow(std::move(system), prm.shear_model);
   const auto integrator = make_integrator(prm.integrator);
 
-  ShearCheckpointing checkpointing;
-  std::optional<ShearCheckpoint> resume;
-  if (!checkpoints.file.empty()) {
-    if (std::filesystem::exists(checkpoints.file)) {
-      try {
-        resume = read_checkpoint(checkpoints.file);
-      } catch (const InputError& e) {
-        throw InputError(fmt::format("{} (delete it to start this run afresh)", e.what()));
-      }
-      checkpointing.resume_from = &*resume;
-    }
-    checkpointing.every_steps = checkpoints.every_steps;
-    checkpointing.save = [&](const ShearCheckpoint& c) { write_checkpoint(checkpoints.file, c); };
+  const std::optional<ShearCheckpoint> resume =
+      existing_checkpoint<ShearCheckpoint>(checkpoints, read_checkpoint);
+  auto checkpointing = checkpointing_of<ShearCheckpointing>(checkpoints, resume);
+  if (!checkpoints.file.empty())
     checkpointing.new_integrator = [&] { return make_integrator(prm.integrator); };
-  }
   ShearRecord shear;
   shear.gamma_tilde = prm.shear_model.gamma_tilde;
-  shear.result = run_shear(
-      flow, *integrator, prm.protocol,
-      [&](const ShearProgress& p) {
-        if (progress) progress(p.strain, p.worst_relative_error);
-      },
-      checkpointing);
+  shear.result = run_shear(flow, *integrator, prm.protocol, follow(progress), checkpointing);
   shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();
   record.timings.shear = seconds_since(start);
-  const std::vector<Snapshot> stationary = stationary_snapshots(shear.result);
-  if (stationary.size() >= 2) {
-    record.structure = analyse_snapshots(stationary, shear.final_particles.radius,
-                                         shear.final_box.side(), *law, prm.structure);
-  }
+  analyse_structure(record, shear, *law, prm);
+  record.shear = std::move(shear);
+}
+
+void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters& prm,
+                                        std::shared_ptr<const ContactLaw> law,
+                                        const QuasiStaticSettings& settings,
+                                        const std::function<void(double, double)>& progress,
+                                        const CheckpointSettings& checkpoints) {
+  const auto start = Clock::now();
+  const std::optional<QuasiStaticCheckpoint> resume =
+      existing_checkpoint<QuasiStaticCheckpoint>(checkpoints, read_quasi_static_checkpoint);
+  QuasiStaticResult r = run_quasi_static(
+      record.packing_particles, record.packing_box, law, prm.packing.skin, settings, prm.protocol,
+      follow(progress), checkpointing_of<QuasiStaticCheckpointing>(checkpoints, resume));
+  ShearRecord shear;
+  shear.gamma_tilde = 0.0;
+  shear.result = std::move(r.run);
+  shear.final_particles = std::move(r.final_particles);
+  shear.final_box = r.final_box;
+  shear.quasi_static = QuasiStaticRecord{settings.strain_step, settings.relative_force,
+                                         r.stress_drops, r.unconverged_steps};
+  record.timings.shear = seconds_since(start);
+  analyse_structure(record, shear, *law, prm);
   record.shear = std::move(shear);
 }
 

@@ -11,6 +11,7 @@
 #include "common/atomic_output.h"
 #include "micro/app/parameter_file.h"
 #include "micro/io/run_file.h"
+#include "micro/protocol/quasi_static_run.h"
 
 namespace softglass::micro {
 
@@ -33,6 +34,16 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
                        std::shared_ptr<const ContactLaw> law,
                        const std::function<void(double, double)>& progress,
                        const CheckpointSettings& checkpoints = {});
+
+/// Shears the packing of `record` quasi-statically (AQS, γ̃ = 0) until the
+/// stopping rule of `prm.protocol`, then analyses the structure as above.
+/// `progress` gets (strain, worst relative error). A checkpoint file of a
+/// sheared run is refused (InputError).
+void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters& prm,
+                                        std::shared_ptr<const ContactLaw> law,
+                                        const QuasiStaticSettings& settings,
+                                        const std::function<void(double, double)>& progress,
+                                        const CheckpointSettings& checkpoints = {});
 
 /// Writes `record` into `out`'s temporary file and renames it into place.
 void write_record(AtomicOutput& out, RunRecord& record, double total_seconds);

@@ -1,6 +1,6 @@
-// `micro sweep FILE.prm`: packings, then every (φ, γ̃, seed) case, then the
-// flow-curve table — resumable, shared out over MPI ranks, one case at a time
-// for batch arrays.
+// `micro sweep FILE.prm`: packings, then every (φ, γ̃, seed) case and the
+// quasi-static (γ̃ = 0) case of every (φ, seed), then the flow-curve table —
+// resumable, shared out over MPI ranks, one case at a time for batch arrays.
 //
 // Resuming is a consequence of how files are written: each packing and each
 // run is written whole under a temporary name and renamed into place, so a
@@ -43,8 +43,8 @@ struct Sweep {
 
 SweepCaseSettings settings_of(const Sweep& sweep, double phi, unsigned seed, double rate) {
   const bool preset = sweep.parameters.spec.preset != "custom";
-  return {sweep.plan.particles, phi, rate, seed,
-          preset ? sweep.plan.target_relative_error : 0.0, sweep.plan.max_strain, {}, {}};
+  return {sweep.plan.particles,  phi, rate, seed, preset ? sweep.plan.target_relative_error : 0.0,
+          sweep.plan.max_strain, {},  {}};
 }
 
 // One log line per finished piece of work, on stdout, prefixed by the worker.
@@ -55,7 +55,8 @@ void log(const Workers& workers, fmt::format_string<Args...> format, Args&&... a
   std::fflush(stdout);
 }
 
-void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers, bool quiet) {
+void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers,
+                  bool quiet) {
   const auto start = Clock::now();
   SweepCaseSettings settings = settings_of(sweep, packing.volume_fraction, packing.seed,
                                            sweep.parameters.base.shear_model.gamma_tilde);
@@ -76,11 +77,21 @@ std::filesystem::path checkpoint_file(const SweepCase& c) {
   return file.replace_extension(".checkpoint.h5");
 }
 
-// Shears one case; `progress(fraction)` follows it (by strain, an upper bound).
+// The rate of a case as the log and the list show it.
+std::string rate_text(const SweepCase& c) {
+  return c.quasi_static ? "0 (AQS)  " : fmt::format("{:.3e}", c.gamma_tilde);
+}
+
+// Shears one case — at its rate, or quasi-statically — and writes its record;
+// `progress(fraction)` follows it (by strain, an upper bound).
 void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
               const std::function<void(double)>& progress) {
   const auto start = Clock::now();
-  SweepCaseSettings settings = settings_of(sweep, c.volume_fraction, c.seed, c.gamma_tilde);
+  // The quasi-static case takes the file's γ̃, which its parameters must hold
+  // but nothing uses: its record says protocol aqs and γ̃ = 0.
+  SweepCaseSettings settings =
+      settings_of(sweep, c.volume_fraction, c.seed,
+                  c.quasi_static ? sweep.parameters.base.shear_model.gamma_tilde : c.gamma_tilde);
   settings.packing_input = sweep.plan.packings[c.packing].file;
   settings.output = c.file;
   const MicroParameters prm = case_parameters(sweep.parameters.base, settings);
@@ -90,24 +101,41 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
   RunRecord record = pack_and_measure(prm, law, "run", true);
   const CheckpointSettings checkpoints{checkpoint_file(c), sweep.parameters.spec.checkpoint_steps};
   const bool resumed = std::filesystem::exists(checkpoints.file);
-  shear_and_analyse(
-      record, prm, law,
-      [&](double strain, double) { progress(std::min(1.0, strain / prm.protocol.max_strain)); },
-      checkpoints);
+  const auto follow = [&](double strain, double) {
+    progress(std::min(1.0, strain / prm.protocol.max_strain));
+  };
+  if (c.quasi_static) {
+    const QuasiStaticSettings aqs{.strain_step = sweep.plan.quasi_static_strain_step};
+    record.parameters = fmt::format(
+        "# The quasi-static (AQS) case of a sweep: strain step {}, minimiser force tolerance {}; "
+        "the stopping rule of subsection shear applies, its gamma dot tilde, the drag and the "
+        "integrator do not.\n{}",
+        aqs.strain_step, aqs.relative_force, record.parameters);
+    shear_quasi_statically_and_analyse(record, prm, law, aqs, follow, checkpoints);
+  } else {
+    shear_and_analyse(record, prm, law, follow, checkpoints);
+  }
   write_record(out, record, seconds_since(start));
   std::filesystem::remove(checkpoints.file);
   const ShearResult& r = record.shear->result;
-  log(workers, "run      phi {:.4f} gamma~ {:.2e} seed {}: sigma {:.4e} ± {:.1e} E*, {:.1f} strain, {}{}, {:.1f} s{}",
-      c.volume_fraction, c.gamma_tilde, c.seed, r.summary["sigma"].mean,
+  const auto& aqs = record.shear->quasi_static;
+  log(workers,
+      "run      phi {:.4f} gamma~ {} seed {}: sigma {:.4e} ± {:.1e} E*, {:.1f} strain, {}{}{}, "
+      "{:.1f} s{}",
+      c.volume_fraction, rate_text(c), c.seed, r.summary["sigma"].mean,
       r.summary["sigma"].standard_error, r.series.strain.back() - r.series.strain.front(),
       r.converged ? "converged" : "NOT converged", r.summary.layered() ? " (LAYERED)" : "",
+      aqs && aqs->unconverged_steps > 0
+          ? fmt::format(" ({} of {} strain steps not minimised to tolerance)",
+                        aqs->unconverged_steps, r.counters.steps)
+          : "",
       seconds_since(start), resumed ? ", resumed from its checkpoint" : "");
 }
 
 // Splits `work` (indices with costs) over the workers: longest first, each to
 // the least loaded worker (LPT), the same on every rank.
-std::vector<std::size_t> my_share(const std::vector<std::size_t>& work, const std::vector<double>& cost,
-                                  const Workers& workers) {
+std::vector<std::size_t> my_share(const std::vector<std::size_t>& work,
+                                  const std::vector<double>& cost, const Workers& workers) {
   std::vector<std::size_t> order = work;
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return cost[a] > cost[b]; });
   std::vector<double> load(static_cast<std::size_t>(workers.size()), 0.0);
@@ -148,7 +176,8 @@ std::size_t write_tables(const Sweep& sweep, const Workers& workers) {
   }
   std::vector<PackingAverage> averages;
   for (const auto& [point, point_runs] : points) {
-    if (point_runs.size() == sweep.plan.seeds.size()) averages.push_back(average_over_packings(point_runs));
+    if (point_runs.size() == sweep.plan.seeds.size())
+      averages.push_back(average_over_packings(point_runs));
   }
   const NumberTable table = flow_curve_table(averages);
   const NumberTable per_packing = per_packing_table(runs, seeds);
@@ -157,24 +186,28 @@ std::size_t write_tables(const Sweep& sweep, const Workers& workers) {
       h5(sweep.plan.table_h5, true);
   write_table_csv(csv.temporary_path(), table, lines);
   write_table_csv(packings_csv.temporary_path(), per_packing, lines);
-  write_tables_h5(h5.temporary_path(), {{"flow_curve", &table}, {"flow_curve_packings", &per_packing}}, lines);
+  write_tables_h5(h5.temporary_path(),
+                  {{"flow_curve", &table}, {"flow_curve_packings", &per_packing}}, lines);
   csv.commit();
   packings_csv.commit();
   h5.commit();
   log(workers, "table    {} state points ({} runs) -> {}, {}, {}", averages.size(), runs.size(),
-      sweep.plan.table_csv.string(), sweep.plan.packing_table_csv.string(), sweep.plan.table_h5.string());
+      sweep.plan.table_csv.string(), sweep.plan.packing_table_csv.string(),
+      sweep.plan.table_h5.string());
   return missing;
 }
 
 void print_plan(const Sweep& sweep) {
   const SweepPlan& plan = sweep.plan;
-  fmt::print("sweep    preset {}, N = {}, {} volume fractions x {} rates x {} packings = {} cases\n",
-             sweep.parameters.spec.preset, plan.particles, plan.volume_fractions.size(),
-             plan.gamma_tildes.size(), plan.seeds.size(), plan.cases.size());
+  fmt::print(
+      "sweep    preset {}, N = {}, {} volume fractions x {} rates{} x {} packings = {} cases\n",
+      sweep.parameters.spec.preset, plan.particles, plan.volume_fractions.size(),
+      plan.gamma_tildes.size(), plan.quasi_static ? " (+ quasi-static)" : "", plan.seeds.size(),
+      plan.cases.size());
   for (std::size_t k = 0; k < plan.cases.size(); ++k) {
     const SweepCase& c = plan.cases[k];
-    fmt::print("case {:4d}  phi {:.4f}  gamma~ {:.3e}  seed {:3d}  {}  {}\n", k, c.volume_fraction,
-               c.gamma_tilde, c.seed, std::filesystem::exists(c.file) ? "done   " : "pending",
+    fmt::print("case {:4d}  phi {:.4f}  gamma~ {}  seed {:3d}  {}  {}\n", k, c.volume_fraction,
+               rate_text(c), c.seed, std::filesystem::exists(c.file) ? "done   " : "pending",
                c.file.string());
   }
 }
@@ -198,7 +231,8 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
                                    plan.cases.size() - 1));
     const SweepCase& c = plan.cases[*options.only_case];
     const SweepPacking& packing = plan.packings[c.packing];
-    if (!std::filesystem::exists(packing.file)) make_packing(sweep, packing, workers, options.quiet);
+    if (!std::filesystem::exists(packing.file))
+      make_packing(sweep, packing, workers, options.quiet);
     if (std::filesystem::exists(c.file)) {
       log(workers, "case {} is done: {}", *options.only_case, c.file.string());
       return;

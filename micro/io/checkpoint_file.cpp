@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <functional>
+
 #include "common/atomic_output.h"
 #include "common/errors.h"
 #include "common/h5_file.h"
@@ -11,44 +13,122 @@ namespace softglass::micro {
 
 namespace {
 
+constexpr const char* kShearKind = "softglass shear checkpoint";
+constexpr const char* kQuasiStaticKind = "softglass quasi-static checkpoint";
+
 // The counters as one array, in this order.
 std::vector<double> counter_values(const ShearCounters& c) {
-  return {double(c.steps),          double(c.rejected_steps),    double(c.evaluations),
-          double(c.neighbour_builds), double(c.fixed_point_sweeps), double(c.newton_iterations),
-          double(c.cg_iterations),  c.smallest_step,             c.largest_step};
+  return {double(c.steps),
+          double(c.rejected_steps),
+          double(c.evaluations),
+          double(c.neighbour_builds),
+          double(c.fixed_point_sweeps),
+          double(c.newton_iterations),
+          double(c.cg_iterations),
+          c.smallest_step,
+          c.largest_step};
+}
+
+// What every checkpoint holds: its kind, the configuration, the run's state
+// and counters as two arrays, the series and the snapshots so far.
+struct Parts {
+  const char* kind;
+  const Particles& particles;
+  const LeesEdwardsBox& box;
+  std::vector<double> state;
+  const char* state_names;
+  std::vector<double> counters;
+  const char* counter_names;
+  const TimeSeries& series;
+  const std::vector<Snapshot>& snapshots;
+};
+
+// Writes `parts` (and what `more` adds) atomically to `path`.
+void write_parts(const std::filesystem::path& path, const Parts& parts,
+                 const std::function<void(H5Group&)>& more = {}) {
+  AtomicOutput out(path, true);
+  {
+    H5File file = H5File::create(out.temporary_path());
+    H5Group root = file.root();
+    root.set_attribute("kind", std::string(parts.kind));
+    write_configuration(root.create_group("configuration"), parts.particles, parts.box);
+    if (more) more(root);
+    root.write("state", parts.state, {}, {"", parts.state_names});
+    root.write("counters", parts.counters, {}, {"", parts.counter_names});
+    if (parts.series.size() > 0) write_time_series(root.create_group("timeseries"), parts.series);
+    if (!parts.snapshots.empty()) write_snapshots(root.create_group("snapshots"), parts.snapshots);
+    file.close();
+  }
+  out.commit();
+}
+
+struct ReadParts {
+  StoredConfiguration configuration;
+  std::vector<double> state, counters;
+  TimeSeries series;
+  std::vector<Snapshot> snapshots;
+};
+
+// The parts of a checkpoint of `kind` with state and counters of the given
+// lengths.
+ReadParts read_parts(const H5Group& root, const std::string& where, const char* kind,
+                     std::size_t state_size, std::size_t counters_size) {
+  if (!root.has_attribute("kind") || root.attribute_string("kind") != kind) {
+    const bool other =
+        root.has_attribute("kind") && (root.attribute_string("kind") == kShearKind ||
+                                       root.attribute_string("kind") == kQuasiStaticKind);
+    throw InputError(
+        other ? fmt::format("'{}' is a {}, not a {}", where, root.attribute_string("kind"), kind)
+              : fmt::format("'{}' is not a softglass checkpoint", where));
+  }
+  ReadParts p{read_configuration(root.group("configuration"), where),
+              root.read_array("state").data,
+              root.read_array("counters").data,
+              {},
+              {}};
+  if (p.state.size() != state_size || p.counters.size() != counters_size)
+    throw InputError(fmt::format("'{}': state or counters of the wrong length", where));
+  if (root.has_child("timeseries")) p.series = read_time_series(root.group("timeseries"), where);
+  if (root.has_child("snapshots"))
+    p.snapshots = read_snapshots(root.group("snapshots"), p.configuration.particles.size(), where);
+  return p;
+}
+
+// The worst error is inf until the first check; NaN or negative, never.
+double worst_error(double value, const std::string& where) {
+  if (!(value >= 0))
+    throw InputError(
+        fmt::format("'{}': worst error = {} in '/state'; allowed: >= 0", where, value));
+  return value;
 }
 
 }  // namespace
 
 void write_checkpoint(const std::filesystem::path& path, const ShearCheckpoint& c) {
-  AtomicOutput out(path, true);
-  {
-    H5File file = H5File::create(out.temporary_path());
-    H5Group root = file.root();
-    root.set_attribute("kind", std::string("softglass shear checkpoint"));
-    write_configuration(root.create_group("configuration"), c.particles, c.box);
-    root.write("label", std::span<const std::uint32_t>(c.particles.label), {},
-               {"1", "label of each particle, engine order"});
-    root.write("state", std::vector<double>{c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds},
-               {}, {"", "start, next sample, next check, next snapshot, worst error, seconds"});
-    root.write("counters", counter_values(c.counters), {}, {"", "ShearCounters in declaration order"});
-    if (c.series.size() > 0) write_time_series(root.create_group("timeseries"), c.series);
-    if (!c.snapshots.empty()) write_snapshots(root.create_group("snapshots"), c.snapshots);
-    file.close();
-  }
-  out.commit();
+  write_parts(path,
+              {kShearKind,
+               c.particles,
+               c.box,
+               {c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds},
+               "start, next sample, next check, next snapshot, worst error, seconds",
+               counter_values(c.counters),
+               "ShearCounters in declaration order",
+               c.series,
+               c.snapshots},
+              [&](H5Group& root) {
+                root.write("label", std::span<const std::uint32_t>(c.particles.label), {},
+                           {"1", "label of each particle, engine order"});
+              });
 }
 
 ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   const std::string where = path.string();
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
-  if (!root.has_attribute("kind") || root.attribute_string("kind") != "softglass shear checkpoint")
-    throw InputError(fmt::format("'{}' is not a softglass checkpoint", where));
+  ReadParts parts = read_parts(root, where, kShearKind, 6, 9);
   ShearCheckpoint c;
-  StoredConfiguration configuration = read_configuration(root.group("configuration"), where);
-  c.particles = std::move(configuration.particles);
-  c.box = configuration.box;
+  c.particles = std::move(parts.configuration.particles);
+  c.box = parts.configuration.box;
   // The labels index the particles: a permutation of 0 ... N-1.
   const std::vector<std::int64_t> labels = root.read_int_array("label");
   const std::size_t n = c.particles.size();
@@ -67,10 +147,8 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
     seen[static_cast<std::size_t>(label)] = true;
     c.particles.label[i] = static_cast<std::uint32_t>(label);
   }
-  const std::vector<double> state = root.read_array("state").data;
-  const std::vector<double> counters = root.read_array("counters").data;
-  if (state.size() != 6 || counters.size() != 9)
-    throw InputError(fmt::format("'{}': state or counters of the wrong length", where));
+  const std::vector<double>& state = parts.state;
+  const std::vector<double>& counters = parts.counters;
   const auto finite_state = [&](std::size_t k) {
     return finite(state[k], where, fmt::format("value {} of dataset '/state'", k));
   };
@@ -78,11 +156,7 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   c.next_sample = finite_state(1);
   c.next_check = finite_state(2);
   c.next_snapshot = finite_state(3);
-  // The worst error is inf until the first check; NaN or negative, never.
-  c.worst = state[4];
-  if (!(c.worst >= 0))
-    throw InputError(
-        fmt::format("'{}': worst error = {} in '/state'; allowed: >= 0", where, c.worst));
+  c.worst = worst_error(state[4], where);
   c.seconds = finite_state(5);
   const auto counter = [&](std::size_t k) {
     return count(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
@@ -92,9 +166,50 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   };
   c.counters = {counter(0), counter(1), counter(2), counter(3), counter(4),
                 counter(5), counter(6), step(7),    step(8)};
-  if (root.has_child("timeseries")) c.series = read_time_series(root.group("timeseries"), where);
-  if (root.has_child("snapshots"))
-    c.snapshots = read_snapshots(root.group("snapshots"), c.particles.size(), where);
+  c.series = std::move(parts.series);
+  c.snapshots = std::move(parts.snapshots);
+  return c;
+}
+
+void write_checkpoint(const std::filesystem::path& path, const QuasiStaticCheckpoint& c) {
+  write_parts(path, {kQuasiStaticKind,
+                     c.particles,
+                     c.box,
+                     {c.start, c.next_check, c.worst, c.last_sigma, c.seconds},
+                     "start, next check, worst error, last sigma, seconds",
+                     {double(c.counters.steps), double(c.counters.newton_iterations),
+                      double(c.counters.cg_iterations), double(c.stress_drops),
+                      double(c.unconverged_steps)},
+                     "steps, Newton iterations, CG iterations, stress drops, unconverged steps",
+                     c.series,
+                     c.snapshots});
+}
+
+QuasiStaticCheckpoint read_quasi_static_checkpoint(const std::filesystem::path& path) {
+  const std::string where = path.string();
+  const H5File file = H5File::open(path);
+  ReadParts parts = read_parts(file.root(), where, kQuasiStaticKind, 5, 5);
+  QuasiStaticCheckpoint c;
+  c.particles = std::move(parts.configuration.particles);  // label order: labels 0 ... N-1
+  c.box = parts.configuration.box;
+  const auto finite_state = [&](std::size_t k) {
+    return finite(parts.state[k], where, fmt::format("value {} of dataset '/state'", k));
+  };
+  c.start = finite_state(0);
+  c.next_check = finite_state(1);
+  c.worst = worst_error(parts.state[2], where);
+  c.last_sigma = finite_state(3);
+  c.seconds = finite_state(4);
+  const auto counter = [&](std::size_t k) {
+    return count(parts.counters[k], where, fmt::format("value {} of dataset '/counters'", k));
+  };
+  c.counters.steps = counter(0);
+  c.counters.newton_iterations = counter(1);
+  c.counters.cg_iterations = counter(2);
+  c.stress_drops = counter(3);
+  c.unconverged_steps = counter(4);
+  c.series = std::move(parts.series);
+  c.snapshots = std::move(parts.snapshots);
   return c;
 }
 

@@ -17,6 +17,9 @@ namespace softglass::micro {
 namespace {
 
 constexpr std::int64_t kFormatVersion = 1;
+// The attribute `protocol` of /shear; files written before it existed are overdamped.
+constexpr const char* kOverdamped = "overdamped";
+constexpr const char* kQuasiStatic = "aqs";
 
 void write_packing(H5Group& g, const PackingReport& r, const ShearModulus& m) {
   const auto scalar = [&](const char* name, double value, const char* units, const char* what) {
@@ -43,8 +46,13 @@ void write_packing(H5Group& g, const PackingReport& r, const ShearModulus& m) {
 
 void write_shear(H5Group&& g, const ShearRecord& s) {
   const ShearResult& r = s.result;
+  g.set_attribute("protocol", std::string(s.quasi_static ? kQuasiStatic : kOverdamped));
   g.write_scalar("gamma_tilde", s.gamma_tilde,
-                 {"1", "dimensionless shear rate gamma_dot eta_s / E*"});
+                 {"1", "dimensionless shear rate gamma_dot eta_s / E* (0: quasi-static)"});
+  if (s.quasi_static) {
+    g.set_attribute("strain_step", s.quasi_static->strain_step);
+    g.set_attribute("relative_force", s.quasi_static->relative_force);
+  }
 
   write_time_series(g.create_group("timeseries"), r.series);
 
@@ -80,6 +88,11 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
   c.set_attribute("smallest_step", k.smallest_step);
   c.set_attribute("largest_step", k.largest_step);
+  if (s.quasi_static) {
+    c.set_attribute("stress_drops", static_cast<std::int64_t>(s.quasi_static->stress_drops));
+    c.set_attribute("unconverged_steps",
+                    static_cast<std::int64_t>(s.quasi_static->unconverged_steps));
+  }
 
   write_configuration(g.create_group("configuration"), s.final_particles, s.final_box);
 
@@ -104,13 +117,18 @@ void write_structure(H5Group&& g, const StructureRecord& record) {
     return flat;
   };
   const std::string order = "rows: g00, g2-2, g2-1, g20, g21, g22";
-  g.write("g", table(s.g), {6, s.r.size()}, {"1", "g_lm(r), real orthonormal harmonics, polar axis z; " + order});
-  g.write("g_error", table(s.g_error), {6, s.r.size()}, {"1", "standard error of g_lm(r) (batch means)"});
-  g.write("fg", table(s.fg), {6, s.r.size()},
-          {"E* R^2", "force-weighted moments (fg)_lm(r), which rebuild the virial stress; " + order});
-  g.write("fg_error", table(s.fg_error), {6, s.r.size()}, {"E* R^2", "standard error of (fg)_lm(r)"});
+  g.write("g", table(s.g), {6, s.r.size()},
+          {"1", "g_lm(r), real orthonormal harmonics, polar axis z; " + order});
+  g.write("g_error", table(s.g_error), {6, s.r.size()},
+          {"1", "standard error of g_lm(r) (batch means)"});
+  g.write(
+      "fg", table(s.fg), {6, s.r.size()},
+      {"E* R^2", "force-weighted moments (fg)_lm(r), which rebuild the virial stress; " + order});
+  g.write("fg_error", table(s.fg_error), {6, s.r.size()},
+          {"E* R^2", "standard error of (fg)_lm(r)"});
   g.write("map_r", s.map_r, {}, {"R", "radial bin centres of g(r, theta)"});
-  g.write("map_theta", s.map_theta, {}, {"rad", "angle from the flow axis x towards the gradient axis y"});
+  g.write("map_theta", s.map_theta, {},
+          {"rad", "angle from the flow axis x towards the gradient axis y"});
   g.write("map", s.map, {s.map_r.size(), s.map_theta.size()},
           {"1", "g(r, theta) in the flow-gradient plane, pairs with |dz| < slab_half_width"});
   for (const NamedEstimate& e : named_estimates(s)) {
@@ -156,7 +174,8 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
     H5Group shear = root.create_group("shear");
     shear.set_attribute("contact_law", record.contact_law.name);
     const std::string table = record.contact_law.table();
-    if (!table.empty()) shear.write_string("contact_law_table", table, {"", "the table law's data"});
+    if (!table.empty())
+      shear.write_string("contact_law_table", table, {"", "the table law's data"});
     write_shear(std::move(shear), *record.shear);
   }
   if (record.structure) write_structure(root.create_group("structure"), *record.structure);
@@ -234,7 +253,24 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
     return finite(g.attribute_double(name), where,
                   fmt::format("attribute '{}' of '{}'", name, g.path()));
   };
-  s.gamma_tilde = positive(shear, "gamma_tilde");
+  const std::string protocol =
+      shear.has_attribute("protocol") ? shear.attribute_string("protocol") : kOverdamped;
+  if (protocol != kOverdamped && protocol != kQuasiStatic) {
+    throw InputError(fmt::format("'{}': attribute 'protocol' of '/shear' = '{}'; allowed: {} or {}",
+                                 where, protocol, kOverdamped, kQuasiStatic));
+  }
+  s.quasi_static = protocol == kQuasiStatic;
+  if (s.quasi_static) {
+    s.gamma_tilde = shear.read_scalar("gamma_tilde");
+    if (s.gamma_tilde != 0.0) {
+      throw InputError(
+          fmt::format("'{}': dataset '/shear/gamma_tilde' = {} in a quasi-static run; "
+                      "allowed: 0",
+                      where, s.gamma_tilde));
+    }
+  } else {
+    s.gamma_tilde = positive(shear, "gamma_tilde");
+  }
   s.volume_fraction = positive(packing, "volume_fraction");
   s.shear_modulus = positive(packing, "shear_modulus");
   s.particles = count(packing.read_scalar("particles"), where, "dataset '/packing/particles'");
@@ -284,15 +320,17 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
   if (!root.has_child("shear") || !root.group("shear").has_child("snapshots")) {
-    throw InputError(fmt::format("'{}' holds no stored configurations (a sheared run with 'snapshot "
-                                 "interval' > 0 is needed)",
-                                 path.string()));
+    throw InputError(
+        fmt::format("'{}' holds no stored configurations (a sheared run with 'snapshot "
+                    "interval' > 0 is needed)",
+                    path.string()));
   }
   const H5Group shear = root.group("shear");
   const std::string where = path.string();
   StoredSnapshots s;
   s.contact_law.name = shear.attribute_string("contact_law");
-  if (shear.has_child("contact_law_table")) s.contact_law.table_text = shear.read_string("contact_law_table");
+  if (shear.has_child("contact_law_table"))
+    s.contact_law.table_text = shear.read_string("contact_law_table");
   const StoredConfiguration configuration = read_configuration(shear.group("configuration"), where);
   s.radius = configuration.particles.radius;
   s.side = configuration.box.side();
@@ -308,17 +346,20 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
   return s;
 }
 
-void update_structure(const std::filesystem::path& path, const StructureRecord& structure, bool replace) {
+void update_structure(const std::filesystem::path& path, const StructureRecord& structure,
+                      bool replace) {
   {
     const H5File check = H5File::open(path);
     if (check.root().has_child("structure") && !replace) {
-      throw OutputExistsError(fmt::format("'{}' holds a structure analysis already; pass --force to "
-                                          "replace it",
-                                          path.string()));
+      throw OutputExistsError(
+          fmt::format("'{}' holds a structure analysis already; pass --force to "
+                      "replace it",
+                      path.string()));
     }
   }
   AtomicOutput out(path, /*overwrite=*/true);
-  std::filesystem::copy_file(path, out.temporary_path(), std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(path, out.temporary_path(),
+                             std::filesystem::copy_options::overwrite_existing);
   {
     H5File file = H5File::open_for_update(out.temporary_path());
     H5Group root = file.root();

@@ -24,11 +24,19 @@ struct Timings {
   int threads = 1;
 };
 
+/// What a quasi-static (AQS) run adds to the record of a sheared run
+/// (protocol/quasi_static_run.h).
+struct QuasiStaticRecord {
+  double strain_step = 0.0, relative_force = 0.0;
+  std::size_t stress_drops = 0, unconverged_steps = 0;
+};
+
 struct ShearRecord {
-  double gamma_tilde = 0.0;
+  double gamma_tilde = 0.0;  // 0 for a quasi-static run
   ShearResult result;
   Particles final_particles;  // label order
   LeesEdwardsBox final_box;
+  std::optional<QuasiStaticRecord> quasi_static{};  // set: protocol "aqs", else "overdamped"
 };
 
 /// The structure of the stationary part of a run and where it came from.
@@ -69,7 +77,8 @@ TimeSeries read_time_series(const std::filesystem::path& path);
 /// What a run concluded: its state point and steady-state summary.
 struct StoredRunSummary {
   std::filesystem::path file;
-  double gamma_tilde = 0.0, volume_fraction = 0.0, shear_modulus = 0.0;
+  double gamma_tilde = 0.0, volume_fraction = 0.0, shear_modulus = 0.0;  // γ̃ = 0: quasi-static
+  bool quasi_static = false;                                             // protocol "aqs"
   std::size_t particles = 0;
   bool converged = false;
   double averaged_strain = 0.0, coordination = 0.0, layering = 0.0;
@@ -92,6 +101,7 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path);
 /// run file; the file is updated through a copy renamed over it, so that a
 /// failure leaves it as it was. OutputExistsError if /structure exists and
 /// `replace` is false.
-void update_structure(const std::filesystem::path& path, const StructureRecord& structure, bool replace);
+void update_structure(const std::filesystem::path& path, const StructureRecord& structure,
+                      bool replace);
 
 }  // namespace softglass::micro

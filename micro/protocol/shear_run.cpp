@@ -74,7 +74,8 @@ std::vector<double> TimeSeries::component(const std::string& observable) const {
   return values;
 }
 
-const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list, const std::string& name) {
+const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list,
+                                  const std::string& name) {
   for (const auto& o : list)
     if (o.name == name) return o.estimate;
   throw std::invalid_argument("no observable " + name);
@@ -137,6 +138,27 @@ ShearSummary summarise(const TimeSeries& series, double min_stationary_strain) {
   return summary;
 }
 
+bool meets_stopping_rule(const ShearSummary& summary, const ShearProtocol& protocol) {
+  bool reliable = summary.transient_resolved && summary.drift <= kMaxDrift;
+  for (const char* name : kStoppingObservables) reliable = reliable && summary[name].reliable;
+  return reliable && summary.worst_relative_error() <= protocol.target_relative_error;
+}
+
+std::string converged_stop_reason(const ShearSummary& summary) {
+  return fmt::format("stationary, relative standard errors ≤ {:.3g}",
+                     summary.worst_relative_error());
+}
+
+std::string max_strain_stop_reason(const ShearSummary& summary, const ShearProtocol& protocol) {
+  return fmt::format("maximum strain {} reached before the target error {} (worst {:.3g}){}{}",
+                     protocol.max_strain, protocol.target_relative_error,
+                     summary.worst_relative_error(),
+                     summary.transient_resolved ? "" : "; the transient may not be over",
+                     summary.drift <= kMaxDrift
+                         ? ""
+                         : fmt::format("; the stresses drift (|z| = {:.1f})", summary.drift));
+}
+
 ShearCounters& ShearCounters::operator+=(const ShearCounters& more) {
   const bool first = steps == 0;
   steps += more.steps;
@@ -153,7 +175,8 @@ ShearCounters& ShearCounters::operator+=(const ShearCounters& more) {
   return *this;
 }
 
-ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator, const ShearProtocol& protocol,
+ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator,
+                      const ShearProtocol& protocol,
                       const std::function<void(const ShearProgress&)>& progress,
                       const ShearCheckpointing& checkpointing) {
   protocol.validate();
@@ -241,11 +264,19 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator, const
     // starts from the very same cell.
     LeesEdwardsBox box(flow.system().box().side());
     box.set_strain(flow.system().box().strain());
-    ShearCheckpoint c{flow.system().particles(), box, start, next_sample, next_check,
-                      next_snapshot, worst, series, result.snapshots, finished,
-                      seconds_before + std::chrono::duration<double>(
-                                           std::chrono::steady_clock::now() - clock_start)
-                                           .count()};
+    ShearCheckpoint c{
+        flow.system().particles(),
+        box,
+        start,
+        next_sample,
+        next_check,
+        next_snapshot,
+        worst,
+        series,
+        result.snapshots,
+        finished,
+        seconds_before +
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count()};
     if (checkpointing.save) checkpointing.save(c);
     restart_from(c);
   };
@@ -282,12 +313,9 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator, const
       next_check += protocol.check_interval;
       result.summary = summarise(series, protocol.min_stationary_strain);
       worst = result.summary.worst_relative_error();
-      bool reliable = result.summary.transient_resolved && result.summary.drift <= kMaxDrift;
-      for (const char* name : kStoppingObservables)
-        reliable = reliable && result.summary[name].reliable;
-      if (reliable && worst <= protocol.target_relative_error) {
+      if (meets_stopping_rule(result.summary, protocol)) {
         result.converged = true;
-        result.stop_reason = fmt::format("stationary, relative standard errors ≤ {:.3g}", worst);
+        result.stop_reason = converged_stop_reason(result.summary);
         break;
       }
       // A sample that has layered is no longer a glass: stop, unconverged.
@@ -308,23 +336,16 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator, const
     if (progress) progress({sheared, protocol.max_strain, worst});
     if (sheared >= protocol.max_strain - 1e-9 * protocol.sample_interval) {
       result.summary = summarise(series, protocol.min_stationary_strain);
-      result.stop_reason = fmt::format(
-          "maximum strain {} reached before the target error {} (worst {:.3g}){}{}",
-          protocol.max_strain, protocol.target_relative_error,
-          result.summary.worst_relative_error(),
-          result.summary.transient_resolved ? "" : "; the transient may not be over",
-          result.summary.drift <= kMaxDrift
-              ? ""
-              : fmt::format("; the stresses drift (|z| = {:.1f})", result.summary.drift));
+      result.stop_reason = max_strain_stop_reason(result.summary, protocol);
       break;
     }
   }
 
   finished += segment();
   result.counters = finished;
-  result.seconds = seconds_before + std::chrono::duration<double>(
-                                        std::chrono::steady_clock::now() - clock_start)
-                                        .count();
+  result.seconds =
+      seconds_before +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return result;
 }
 

@@ -61,7 +61,8 @@ struct ObservableEstimate {
   MeanEstimate estimate;
 };
 /// The estimate called `name` in `list`; std::invalid_argument if absent.
-const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list, const std::string& name);
+const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list,
+                                  const std::string& name);
 
 struct ShearSummary {
   double transient_strain = 0.0;  // removed as start-up
@@ -81,6 +82,14 @@ struct ShearSummary {
 
 /// Steady-state analysis of a series (usable at run time and afterwards).
 ShearSummary summarise(const TimeSeries& series, double min_stationary_strain);
+
+/// The stopping rule above, on a summary: stationary (transient resolved, no
+/// drift) with reliable errors of σ, N1 and N2 within the target. Shared by the
+/// sheared and the quasi-static runs (quasi_static_run.h).
+bool meets_stopping_rule(const ShearSummary& summary, const ShearProtocol& protocol);
+/// The stop reasons a run records: met its rule, or reached `max_strain` first.
+std::string converged_stop_reason(const ShearSummary& summary);
+std::string max_strain_stop_reason(const ShearSummary& summary, const ShearProtocol& protocol);
 
 struct ShearCounters {
   ShearCounters& operator+=(const ShearCounters& more);

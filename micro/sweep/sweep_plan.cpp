@@ -21,6 +21,16 @@ std::vector<double> decades(int first, int last, int per_decade) {
 
 const std::vector<double> kPaperVolumeFractions = {0.70, 0.75, 0.80, 0.85, 0.90};
 
+// Relative cost of a quasi-static case, in the units of the rate cases
+// (N γ̃^-0.8 per case). Measured at φ = 0.80, Δγ = 2e-4 (docs/sweeps.md): 7.7 s
+// per strain for N = 250 — what an explicit run costs near γ̃ = 5e-7 (0.12 s
+// per strain at 1e-4) — and 50 s for N = 1000 (∝ N^1.35); 3.3 times less at
+// Δγ = 1e-3 for N = 250 (∝ Δγ^-0.75).
+double quasi_static_cost(std::size_t particles, double strain_step) {
+  const double n = static_cast<double>(particles);
+  return 250.0 * 1.0e5 * std::pow(n / 250.0, 1.35) * std::pow(strain_step / 2e-4, -0.75);
+}
+
 void require_sorted_unique(std::vector<double>& values, const char* entry) {
   std::sort(values.begin(), values.end());
   const auto twin = std::adjacent_find(values.begin(), values.end(), [](double a, double b) {
@@ -34,7 +44,13 @@ void require_sorted_unique(std::vector<double>& values, const char* entry) {
 
 const std::vector<SweepPreset>& sweep_presets() {
   static const std::vector<SweepPreset> presets = {
-      {"fast", 250, {0.70, 0.80, 0.90}, decades(-6, -4, 2), 1, 0.10, 20.0,
+      {"fast",
+       250,
+       {0.70, 0.80, 0.90},
+       decades(-6, -4, 2),
+       1,
+       0.10,
+       20.0,
        "a first look: three volume fractions, one small packing each"},
       {"standard", 1000, kPaperVolumeFractions, decades(-7, -4, 1), 3, 0.05, 50.0,
        "the paper's volume fractions at one rate per decade, three packings"},
@@ -47,7 +63,8 @@ const std::vector<SweepPreset>& sweep_presets() {
 const SweepPreset& sweep_preset(const std::string& name) {
   for (const auto& preset : sweep_presets())
     if (preset.name == name) return preset;
-  throw InputError(fmt::format("sweep: unknown preset '{}' (fast, standard, paper or custom)", name));
+  throw InputError(
+      fmt::format("sweep: unknown preset '{}' (fast, standard, paper or custom)", name));
 }
 
 SweepPlan make_sweep_plan(const SweepSpec& spec) {
@@ -57,12 +74,14 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
 
   SweepPlan plan;
   plan.particles = spec.particles ? spec.particles : preset.particles;
-  plan.volume_fractions = spec.volume_fractions.empty() ? preset.volume_fractions : spec.volume_fractions;
+  plan.volume_fractions =
+      spec.volume_fractions.empty() ? preset.volume_fractions : spec.volume_fractions;
   plan.gamma_tildes = spec.gamma_tildes.empty() ? preset.gamma_tildes : spec.gamma_tildes;
   const unsigned packings = spec.packings ? spec.packings : preset.packings;
   plan.target_relative_error = preset.target_relative_error;
   plan.max_strain = preset.max_strain;
-  if (plan.particles == 0 || plan.volume_fractions.empty() || plan.gamma_tildes.empty() || packings == 0)
+  if (plan.particles == 0 || plan.volume_fractions.empty() || plan.gamma_tildes.empty() ||
+      packings == 0)
     throw InputError(
         "sweep: preset 'custom' needs 'particles', 'volume fractions', 'gamma dot tildes' and "
         "'packings' in subsection 'sweep'");
@@ -76,6 +95,12 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
     if (!(rate >= 1e-14 && rate <= 0.1))
       throw InputError(fmt::format("sweep: gamma dot tilde {} outside [1e-14, 0.1]", rate));
   for (unsigned k = 0; k < packings; ++k) plan.seeds.push_back(spec.first_seed + k);
+  plan.quasi_static = spec.quasi_static;
+  plan.quasi_static_strain_step = spec.quasi_static_strain_step;
+  if (!(plan.quasi_static_strain_step > 0 &&
+        plan.quasi_static_strain_step <= kMaxQuasiStaticStrainStep))
+    throw InputError(fmt::format("sweep: 'quasi-static strain step' = {}; allowed: (0, {}]",
+                                 plan.quasi_static_strain_step, kMaxQuasiStaticStrainStep));
 
   plan.directory = spec.directory;
   plan.table_csv = spec.directory / "flow_curve.csv";
@@ -91,20 +116,29 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
   // scheme (docs/validation.md); the estimate only orders the work and
   // apportions the time left, which the progress display recalibrates.
   for (std::size_t p = 0; p < plan.packings.size(); ++p) {
+    const SweepPacking& packing = plan.packings[p];
     for (double rate : plan.gamma_tildes) {
-      const SweepPacking& packing = plan.packings[p];
+      plan.cases.push_back({p, packing.volume_fraction, rate, packing.seed,
+                            spec.directory / "runs" /
+                                fmt::format("phi{:.4f}_gt{:.3e}_seed{}.h5", packing.volume_fraction,
+                                            rate, packing.seed),
+                            static_cast<double>(plan.particles) * std::pow(rate, -0.8)});
+    }
+    if (plan.quasi_static) {
       plan.cases.push_back(
-          {p, packing.volume_fraction, rate, packing.seed,
+          {p, packing.volume_fraction, 0.0, packing.seed,
            spec.directory / "runs" /
-               fmt::format("phi{:.4f}_gt{:.3e}_seed{}.h5", packing.volume_fraction, rate, packing.seed),
-           static_cast<double>(plan.particles) * std::pow(rate, -0.8)});
+               fmt::format("phi{:.4f}_aqs_seed{}.h5", packing.volume_fraction, packing.seed),
+           quasi_static_cost(plan.particles, plan.quasi_static_strain_step), true});
     }
   }
-  std::stable_sort(plan.cases.begin(), plan.cases.end(), [](const SweepCase& a, const SweepCase& b) {
-    if (a.volume_fraction != b.volume_fraction) return a.volume_fraction < b.volume_fraction;
-    if (a.gamma_tilde != b.gamma_tilde) return a.gamma_tilde < b.gamma_tilde;
-    return a.seed < b.seed;
-  });
+  std::stable_sort(plan.cases.begin(), plan.cases.end(),
+                   [](const SweepCase& a, const SweepCase& b) {
+                     if (a.volume_fraction != b.volume_fraction)
+                       return a.volume_fraction < b.volume_fraction;
+                     if (a.gamma_tilde != b.gamma_tilde) return a.gamma_tilde < b.gamma_tilde;
+                     return a.seed < b.seed;
+                   });
   return plan;
 }
 

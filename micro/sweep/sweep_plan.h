@@ -8,6 +8,10 @@
 // resumable and lets any number of workers (threads, MPI ranks, array jobs)
 // share one output folder as long as they split the work.
 //
+// Every (φ, seed) may also have a quasi-static case (γ̃ = 0, athermal
+// quasi-static shear from the same packing: protocol/quasi_static_run.h), the
+// low end of the flow curve; it is on by default.
+//
 // Fidelity presets fix N, the state points, the number of packings and the
 // accuracy of each run; docs/sweeps.md gives their measured error and cost.
 #pragma once
@@ -17,6 +21,11 @@
 #include <vector>
 
 namespace softglass::micro {
+
+/// Δγ of the quasi-static cases (docs/sweeps.md: why, and what it costs).
+inline constexpr double kQuasiStaticStrainStep = 2e-4;
+/// The largest Δγ allowed (dynamics/aqs.h).
+inline constexpr double kMaxQuasiStaticStrainStep = 0.01;
 
 struct SweepPreset {
   std::string name;
@@ -44,6 +53,8 @@ struct SweepSpec {
   std::size_t particles = 0;
   std::filesystem::path directory = "sweep";
   std::size_t checkpoint_steps = 20000;  // accepted steps between checkpoints (0: none)
+  bool quasi_static = true;              // a quasi-static case per (φ, seed)
+  double quasi_static_strain_step = kQuasiStaticStrainStep;
 };
 
 struct SweepPacking {
@@ -53,25 +64,29 @@ struct SweepPacking {
 };
 
 struct SweepCase {
-  std::size_t packing;  // index into SweepPlan::packings
-  double volume_fraction, gamma_tilde;
+  std::size_t packing;                  // index into SweepPlan::packings
+  double volume_fraction, gamma_tilde;  // γ̃ = 0 for the quasi-static case
   unsigned seed;
   std::filesystem::path file;  // `micro run` record
   double cost;                 // relative estimate, for ordering and the time left
+  bool quasi_static = false;
 };
 
 struct SweepPlan {
   std::size_t particles;
   double target_relative_error, max_strain;
-  std::vector<double> volume_fractions, gamma_tildes;  // sorted
+  std::vector<double> volume_fractions, gamma_tildes;  // sorted; γ̃ of the rate cases only
   std::vector<unsigned> seeds;
+  bool quasi_static;  // the cases include one quasi-static case per packing
+  double quasi_static_strain_step;
   std::vector<SweepPacking> packings;
-  std::vector<SweepCase> cases;  // by φ, then γ̃, then seed
+  std::vector<SweepCase> cases;  // by φ, then γ̃ (quasi-static first), then seed
   std::filesystem::path directory, table_csv, packing_table_csv, table_h5;
 };
 
-/// Resolves the preset, checks the lists (φ in [0.64, 0.95], γ̃ in (0, 0.1],
-/// no duplicates) and names every file. Throws InputError naming the entry.
+/// Resolves the preset, checks the lists (φ in [0.64, 0.95], γ̃ in
+/// [1e-14, 0.1], no duplicates) and the quasi-static strain step (in
+/// (0, 0.01]), and names every file. Throws InputError naming the entry.
 SweepPlan make_sweep_plan(const SweepSpec& spec);
 
 }  // namespace softglass::micro

@@ -5,11 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 #include <vector>
 
 #include "bridge_test_support.h"
-#include "tests/common/command_line.h"
 #include "synthetic_sweep.h"
+#include "tests/common/command_line.h"
 
 namespace softglass::bridge {
 namespace {
@@ -31,7 +32,8 @@ class BridgeCli : public ::testing::Test {
   fs::path work() const { return dir_ / "work"; }
 
   Outcome bridge(const std::string& arguments) const {
-    return softglass::testing::run_tool(SOFTGLASS_BRIDGE_EXECUTABLE, arguments, work(), dir_ / "capture");
+    return softglass::testing::run_tool(SOFTGLASS_BRIDGE_EXECUTABLE, arguments, work(),
+                                        dir_ / "capture");
   }
 
   std::vector<std::string> files() const { return softglass::testing::file_names(work()); }
@@ -79,6 +81,58 @@ TEST_F(BridgeCli, FitWritesTheLawAndItsTablesAndRefusesToOverwrite) {
   EXPECT_EQ(testing::read_text(work() / "law_phi.csv"), before);
   EXPECT_EQ(bridge(std::string(kFit) + " --force").code, 0);
   EXPECT_EQ(files().size(), 6u) << "no temporary file left";
+}
+
+// The lines of a text but its `#` comments; for a CSV text and a non-empty
+// `drop`, without the columns whose names start with `drop`.
+std::string data_without(const std::string& text, const std::string& drop = "") {
+  std::istringstream in(text);
+  std::string line, out;
+  std::vector<bool> keep;
+  while (std::getline(in, line)) {
+    if (line.starts_with("#")) continue;
+    if (drop.empty()) {
+      out += line + '\n';
+      continue;
+    }
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (keep.empty())
+      for (const std::string& name : cells) keep.push_back(!name.starts_with(drop));
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      if (keep.at(c)) out += cells[c] + ',';
+    out += '\n';
+  }
+  return out;
+}
+
+// A sweep's quasi-static rows (γ̃ = 0) leave every fitted number as it was
+// without them, and their σ_y is reported beside the Herschel–Bulkley σ_y.
+TEST_F(BridgeCli, FitLeavesQuasiStaticRowsOutAndReportsTheirYieldStress) {
+  const testing::SyntheticTruth truth;
+  const testing::SyntheticSweep s =
+      testing::with_quasi_static(testing::make_synthetic_sweep(truth, 1), truth, 2);
+  testing::write_text(work() / "aqs.csv", testing::table_csv(s));
+  testing::write_text(work() / "aqs_runs.csv", testing::runs_csv(s));
+  const Outcome plain = bridge(kFit);
+  const Outcome aqs =
+      bridge("fit aqs.csv --packings aqs_runs.csv --bootstrap 100 --quiet -o aqs.prm");
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  ASSERT_EQ(aqs.code, 0) << aqs.err;
+  EXPECT_EQ(plain.out.find("quasi-static"), std::string::npos) << plain.out;
+  expect_contains(aqs.out, {"55 state points", "and 5 quasi-static (gamma~ = 0)",
+                            "yield stress: quasi-static (AQS", "AQS sigma_y/E*", "diff/SE"});
+  for (const char* suffix : {".prm", "_points.csv", "_constants.csv"}) {
+    EXPECT_EQ(data_without(testing::read_text(work() / (std::string("aqs") + suffix))),
+              data_without(testing::read_text(work() / (std::string("law") + suffix))))
+        << suffix;
+  }
+  const std::string phi = testing::read_text(work() / "aqs_phi.csv");
+  expect_contains(
+      phi, {"sigma_yield_se [E*],sigma_yield_quasi_static [E*],sigma_yield_quasi_static_se [E*]"});
+  EXPECT_EQ(data_without(phi, "sigma_yield_quasi_static"),
+            data_without(testing::read_text(work() / "law_phi.csv"), "sigma_yield_quasi_static"));
 }
 
 TEST_F(BridgeCli, FitRefusesABadTableWithExitCodeTwo) {

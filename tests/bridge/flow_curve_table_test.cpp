@@ -85,7 +85,7 @@ TEST(FlowCurveTable, RefusesDegenerateTablesNamingTheProblem) {
        {"line 3", "'sigma [E*]'", "must be > 0"}},
       {"negative rate",
        edited("0.7,1.000000e-09", "0.7,-1.000000e-09"),
-       {"'gamma_tilde [1]'", "must be > 0"}},
+       {"'gamma_tilde [1]'", "must be >= 0"}},
       {"zero standard error",
        edited("1.2868314229e-03,1.222923e-05", "1.2868314229e-03,0"),
        {"'sigma_se [E*]'", "must be > 0"}},
@@ -105,6 +105,45 @@ TEST(FlowCurveTable, RefusesDegenerateTablesNamingTheProblem) {
     for (const std::string& part : c.message)
       EXPECT_NE(message.find(part), std::string::npos) << message;
   }
+}
+
+// A sweep's quasi-static rows (γ̃ = 0, one per φ) are read, kept out of the
+// curves and of G0 — the sweep is that of the table without them — and their
+// stresses kept beside the curves; the companion's quasi-static runs are skipped.
+TEST(FlowCurveTable, SetsQuasiStaticRowsApartFromTheCurves) {
+  const testing::SyntheticTruth truth;
+  const testing::SyntheticSweep plain = testing::make_synthetic_sweep(truth, 1);
+  const testing::SyntheticSweep s = testing::with_quasi_static(plain, truth, 2);
+  const std::string text = testing::table_csv(s);
+  const FlowCurveTable table = parse_table(text);
+  ASSERT_EQ(table.points.size(), plain.table.points.size() + truth.phi.size());
+  const Sweep with = make_sweep(table),
+              without = make_sweep(parse_table(testing::table_csv(plain)));
+  EXPECT_EQ(with.points(), without.points());
+  EXPECT_EQ(with.quasi_static_points(), truth.phi.size());
+  EXPECT_EQ(without.quasi_static_points(), 0u);
+  for (std::size_t j = 0; j < with.groups.size(); ++j) {
+    const PhiGroup &a = with.groups[j], &b = without.groups[j];
+    EXPECT_EQ(a.modulus.value, b.modulus.value);
+    EXPECT_EQ(a.modulus.error, b.modulus.error);
+    EXPECT_EQ(a.lines.size(), b.lines.size());
+    for (Quantity q : kAllQuantities) {
+      EXPECT_EQ(a.curves[index(q)]->x, b.curves[index(q)]->x);
+      EXPECT_EQ(a.curves[index(q)]->y, b.curves[index(q)]->y);
+      EXPECT_EQ(a.curves[index(q)]->se, b.curves[index(q)]->se);
+    }
+    ASSERT_TRUE(a.quasi_static.has_value());
+    EXPECT_FALSE(b.quasi_static.has_value());
+    const Estimate sigma = *a.quasi_static->values[index(Quantity::sigma)];
+    EXPECT_NEAR(sigma.value, truth.sigma_yield(j), 5 * sigma.error) << "the yield stress";
+  }
+  EXPECT_NO_THROW(make_packing_resampler(
+      with, read_packing_runs(CsvTable::parse(testing::runs_csv(s), "runs.csv")), "runs.csv"));
+
+  // φ within 1e-9 are one φ: two quasi-static rows for it are one too many.
+  const std::string row = text.substr(text.find("\n0.7,0.000000e+00,") + 1);
+  const std::string twin = "0.7000000001" + row.substr(3, row.find('\n') - 2);
+  expect_contains(refusal(text + twin), {"a second quasi-static row", "phi = 0.7"});
 }
 
 TEST(FlowCurveTable, RefusesTooFewShearRatesPerVolumeFraction) {

@@ -154,6 +154,18 @@ SyntheticSweep without_structure(SyntheticSweep s) {
   return s;
 }
 
+SyntheticSweep with_quasi_static(SyntheticSweep sweep, SyntheticTruth truth, std::uint64_t seed) {
+  truth.gamma_tilde = {0.0};
+  const SyntheticSweep quasi_static = make_synthetic_sweep(truth, seed);
+  std::size_t line = sweep.table.points.empty() ? 1 : sweep.table.points.back().line;
+  for (StatePoint p : quasi_static.table.points) {
+    p.line = ++line;
+    sweep.table.points.push_back(p);
+  }
+  sweep.runs.insert(sweep.runs.end(), quasi_static.runs.begin(), quasi_static.runs.end());
+  return sweep;
+}
+
 Law exact_law(const SyntheticTruth& t) {
   Law law;
   law.phi = t.phi;

@@ -60,5 +60,9 @@ std::string runs_csv(const SyntheticSweep& sweep);
 std::string structure_csv(const SyntheticSweep& sweep);
 /// The sweep with the structure columns taken out of both tables.
 SyntheticSweep without_structure(SyntheticSweep sweep);
+/// The sweep plus a quasi-static row (γ̃ = 0: the yield values, as an AQS case
+/// gives them) per φ and its runs, drawn from `seed` with the sweep's noise
+/// (G0 redrawn too); the other rows unchanged.
+SyntheticSweep with_quasi_static(SyntheticSweep sweep, SyntheticTruth truth, std::uint64_t seed);
 
 }  // namespace softglass::bridge::testing

@@ -8,24 +8,28 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
+#include "common/h5_file.h"
 #include "micro/sweep/directory_lock.h"
 #include "micro_cli_fixture.h"
 
 namespace softglass::micro {
 namespace {
 
-// N = 200 needs a skin below ~0.6 for the neighbour grid; short runs.
+// N = 200 needs a skin below ~0.6 for the neighbour grid; short runs. No
+// quasi-static case unless `sweep_entries` asks for it.
 std::string sweep_file(const std::string& directory, const std::string& sweep_entries,
-                       double max_strain) {
+                       double max_strain, std::size_t particles = 200) {
   std::ostringstream s;
-  s << "subsection sweep\n  set preset = custom\n  set particles = 200\n  set output directory = "
-    << directory << "\n"
+  s << "subsection sweep\n  set preset = custom\n  set particles = " << particles
+    << "\n  set output directory = " << directory << "\n  set quasi-static = false\n"
     << sweep_entries << "end\n"
     << "subsection neighbours\n  set skin = 0.3\nend\n"
-    << "subsection shear\n  set min strain = " << max_strain << "\n  set max strain = " << max_strain
+    << "subsection shear\n  set min strain = " << max_strain
+    << "\n  set max strain = " << max_strain
     << "\n  set min stationary strain = 0.5\n  set snapshot interval = 0\nend\n";
   return s.str();
 }
@@ -45,19 +49,21 @@ std::size_t count_lines(const std::string& text) {
 
 TEST_F(MicroCli, SweepWritesTheFlowCurveTablesAndSkipsFinishedWorkOnARerun) {
   const std::string entries =
-      "  set volume fractions = 0.70, 0.80\n  set gamma dot tildes = 1e-4, 3e-5\n  set packings = 1\n";
+      "  set volume fractions = 0.70, 0.80\n  set gamma dot tildes = 1e-4, 3e-5\n"
+      "  set packings = 1\n";
   parameters("s.prm", sweep_file("out", entries, 1.0));
   const Outcome first = micro("--threads 1 sweep s.prm --quiet");
   ASSERT_EQ(first.code, 0) << first.out << first.err;
   const std::string table = table_data(work() / "out/flow_curve.csv");
   EXPECT_EQ(count_lines(table), 1 + 4u) << "a header and one row per (phi, gamma~)";
-  for (const char* column : {"phi [1]", "gamma_tilde [1]", "packings [1]", "sigma [E*]", "sigma_se [E*]",
-                             "N1_viscous [E*]", "N2_elastic_se [E*]", "pressure [E*]", "Z [1]", "G0 [E*]",
-                             "G0_se [E*]", "converged [1]"})
+  for (const char* column : {"phi [1]", "gamma_tilde [1]", "packings [1]", "sigma [E*]",
+                             "sigma_se [E*]", "N1_viscous [E*]", "N2_elastic_se [E*]",
+                             "pressure [E*]", "Z [1]", "G0 [E*]", "G0_se [E*]", "converged [1]"})
     EXPECT_NE(table.find(column), std::string::npos) << column;
   EXPECT_EQ(count_lines(table_data(work() / "out/flow_curve_packings.csv")), 1 + 4u);
   EXPECT_TRUE(fs::exists(work() / "out/flow_curve.h5"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(work() / "out/packings"), fs::directory_iterator()), 2)
+  EXPECT_EQ(
+      std::distance(fs::directory_iterator(work() / "out/packings"), fs::directory_iterator()), 2)
       << "one packing per (phi, seed), shared by both rates";
 
   const Outcome again = micro("--threads 1 sweep s.prm --quiet");
@@ -67,9 +73,90 @@ TEST_F(MicroCli, SweepWritesTheFlowCurveTablesAndSkipsFinishedWorkOnARerun) {
   EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
 }
 
+// The columns of a CSV table's data rows, by name (units dropped).
+std::vector<std::map<std::string, double>> table_rows(const fs::path& csv) {
+  std::istringstream in(table_data(csv));
+  std::string line;
+  std::vector<std::string> names;
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(in, line)) {
+    std::istringstream cells(line);
+    std::vector<std::string> row;
+    for (std::string cell; std::getline(cells, cell, ',');) row.push_back(cell);
+    if (names.empty()) {
+      for (const std::string& cell : row) names.push_back(cell.substr(0, cell.find(" [")));
+      continue;
+    }
+    rows.emplace_back();
+    for (std::size_t c = 0; c < row.size(); ++c) rows.back()[names.at(c)] = std::stod(row[c]);
+  }
+  return rows;
+}
+
+// The quasi-static case: listed, run alone as a batch-array task, skipped when
+// done and redone when not, and the γ̃ = 0 row of the table — σ_y, below the
+// stress of every rate, with σ^v = 0.
+TEST_F(MicroCli, SweepQuasiStaticCaseIsTheLowEndOfTheFlowCurve) {
+  const std::string entries =
+      "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n  set packings = 1\n"
+      "  set quasi-static = true\n  set quasi-static strain step = 1e-3\n";
+  parameters("s.prm", sweep_file("out", entries, 1.0, 128));
+  const Outcome list = micro("sweep s.prm --list");
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_NE(list.out.find("1 rates (+ quasi-static) x 1 packings = 2 cases"), std::string::npos)
+      << list.out;
+  EXPECT_NE(list.out.find("case    0  phi 0.8000  gamma~ 0 (AQS)"), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find("out/runs/phi0.8000_aqs_seed1.h5"), std::string::npos) << list.out;
+
+  const Outcome alone = micro("--threads 1 sweep s.prm --case 0 --quiet");
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  const fs::path record = work() / "out/runs/phi0.8000_aqs_seed1.h5";
+  {
+    const H5File file = H5File::open(record);
+    const H5Group shear = file.root().group("shear");
+    EXPECT_EQ(shear.attribute_string("protocol"), "aqs");
+    EXPECT_EQ(shear.attribute_double("strain_step"), 1e-3);
+    EXPECT_EQ(shear.read_scalar("gamma_tilde"), 0.0);
+    EXPECT_EQ(shear.group("counters").attribute_int("steps"), 1000);
+    EXPECT_GT(shear.group("counters").attribute_int("stress_drops"), 0);
+    EXPECT_EQ(shear.group("counters").attribute_int("unconverged_steps"), 0);
+    EXPECT_NE(file.root().read_string("parameters").find("quasi-static (AQS) case"),
+              std::string::npos);
+  }
+
+  const Outcome sweep = micro("--threads 1 sweep s.prm --quiet");
+  ASSERT_EQ(sweep.code, 0) << sweep.err;
+  EXPECT_NE(sweep.out.find("2 cases (1 done)"), std::string::npos) << sweep.out;
+  EXPECT_EQ(sweep.out.find("gamma~ 0 (AQS)"), std::string::npos) << "the finished case is skipped";
+  const auto rows = table_rows(work() / "out/flow_curve.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  const auto& aqs = rows[0];
+  const auto& rate = rows[1];
+  EXPECT_EQ(aqs.at("gamma_tilde"), 0.0);
+  EXPECT_EQ(rate.at("gamma_tilde"), 1e-4);
+  EXPECT_GT(aqs.at("sigma"), 0.0);
+  EXPECT_GT(aqs.at("sigma_se"), 0.0);
+  EXPECT_LT(aqs.at("sigma"), rate.at("sigma")) << "sigma_y <= sigma(gamma~)";
+  EXPECT_EQ(aqs.at("sigma_viscous"), 0.0);
+  EXPECT_EQ(aqs.at("sigma_viscous_se"), 0.0);
+  EXPECT_EQ(aqs.at("sigma"), aqs.at("sigma_elastic"));
+  EXPECT_EQ(aqs.at("G0"), rate.at("G0")) << "one packing";
+  EXPECT_EQ(table_rows(work() / "out/flow_curve_packings.csv").at(0).at("gamma_tilde"), 0.0);
+
+  // A case without its result (killed, say) is run again, to the same numbers.
+  const std::string table = table_data(work() / "out/flow_curve.csv");
+  fs::remove(record);
+  const Outcome again = micro("--threads 1 sweep s.prm --quiet");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_NE(again.out.find("run      phi 0.8000 gamma~ 0 (AQS)"), std::string::npos) << again.out;
+  EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
+}
+
 TEST_F(MicroCli, SweepRefusesAFolderAnotherSweepHolds) {
-  parameters("s.prm", sweep_file("out", "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4\n"
-                                        "  set packings = 1\n", 1.0));
+  parameters("s.prm", sweep_file("out",
+                                 "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4\n"
+                                 "  set packings = 1\n",
+                                 1.0));
   const DirectoryLock held(work() / "out");
   const Outcome o = micro("sweep s.prm --quiet");
   EXPECT_EQ(o.code, 2);
@@ -77,8 +164,10 @@ TEST_F(MicroCli, SweepRefusesAFolderAnotherSweepHolds) {
 }
 
 TEST_F(MicroCli, SweepRefusesBadSweepFiles) {
-  parameters("twice.prm", sweep_file("out", "  set volume fractions = 0.7, 0.70\n  set gamma dot tildes = "
-                                            "1e-4\n  set packings = 1\n", 1.0));
+  parameters("twice.prm", sweep_file("out",
+                                     "  set volume fractions = 0.7, 0.70\n  set gamma dot tildes = "
+                                     "1e-4\n  set packings = 1\n",
+                                     1.0));
   Outcome o = micro("sweep twice.prm");
   EXPECT_EQ(o.code, 2);
   EXPECT_NE(o.err.find("'volume fractions' lists 0.7 twice"), std::string::npos) << o.err;
@@ -92,18 +181,51 @@ TEST_F(MicroCli, SweepRefusesBadSweepFiles) {
   o = micro("sweep range.prm");
   EXPECT_EQ(o.code, 2);
   EXPECT_NE(o.err.find("volume fractions"), std::string::npos) << o.err;
+
+  const std::string one_point =
+      "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4\n  set packings = 1\n";
+  parameters("step.prm",
+             sweep_file("out", one_point + "  set quasi-static strain step = 0\n", 1.0));
+  o = micro("sweep step.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("'quasi-static strain step' = 0; allowed: (0, 0.01]"), std::string::npos)
+      << o.err;
+  parameters(
+      "coarse.prm",
+      sweep_file("out",
+                 one_point + "  set quasi-static = true\n  set quasi-static strain step = 0.02\n",
+                 1.0));
+  o = micro("sweep coarse.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("quasi-static strain step"), std::string::npos) << o.err;
+  parameters(
+      "sparse.prm",
+      sweep_file("out",
+                 one_point + "  set quasi-static = true\n  set quasi-static strain step = 0.005\n",
+                 1.0) +
+          "subsection shear\n  set sample interval = 0.002\nend\n");
+  o = micro("sweep sparse.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(
+      o.err.find("'quasi-static strain step' = 0.005 exceeds shear/'sample interval' = 0.002"),
+      std::string::npos)
+      << o.err;
   EXPECT_FALSE(fs::exists(work() / "out" / "flow_curve.csv"));
 }
 
 TEST_F(MicroCli, SweepRunsOneCaseOfABatchArray) {
-  parameters("s.prm", sweep_file("out", "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4, 3e-5\n"
-                                        "  set packings = 1\n", 1.0));
+  parameters("s.prm",
+             sweep_file("out",
+                        "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4, 3e-5\n"
+                        "  set packings = 1\n",
+                        1.0));
   const Outcome list = micro("sweep s.prm --list");
   ASSERT_EQ(list.code, 0) << list.err;
   EXPECT_NE(list.out.find("case    1"), std::string::npos) << list.out;
   const Outcome one = micro("--threads 1 sweep s.prm --case 1 --quiet");
   ASSERT_EQ(one.code, 0) << one.err;
-  EXPECT_EQ(std::distance(fs::directory_iterator(work() / "out/runs"), fs::directory_iterator()), 1);
+  EXPECT_EQ(std::distance(fs::directory_iterator(work() / "out/runs"), fs::directory_iterator()),
+            1);
   EXPECT_EQ(micro("sweep s.prm --case 2").code, 2) << "there are cases 0 and 1 only";
   const Outcome gather = micro("sweep s.prm --gather");
   EXPECT_EQ(gather.code, 1) << "one run is missing: the table holds the other, and says so";
@@ -123,9 +245,11 @@ TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
   ASSERT_EQ(micro("--threads 1 sweep reference.prm --quiet").code, 0);
 
   const fs::path pid_file = work() / "pid";
-  const std::string start = "cd '" + work().string() + "' && ('" SOFTGLASS_MICRO_EXECUTABLE
-                            "' --threads 1 sweep killed.prm --quiet > killed.log 2>&1 & echo $! > '" +
-                            pid_file.string() + "')";
+  const std::string start =
+      "cd '" + work().string() +
+      "' && ('" SOFTGLASS_MICRO_EXECUTABLE
+      "' --threads 1 sweep killed.prm --quiet > killed.log 2>&1 & echo $! > '" +
+      pid_file.string() + "')";
   ASSERT_EQ(std::system(start.c_str()), 0);
   const fs::path checkpoint = work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.checkpoint.h5";
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
@@ -144,7 +268,8 @@ TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
   ASSERT_EQ(resumed.code, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("resumed from its checkpoint"), std::string::npos) << resumed.out;
   EXPECT_FALSE(fs::exists(checkpoint)) << "a finished case removes its checkpoint";
-  EXPECT_EQ(table_data(work() / "killed/flow_curve.csv"), table_data(work() / "reference/flow_curve.csv"));
+  EXPECT_EQ(table_data(work() / "killed/flow_curve.csv"),
+            table_data(work() / "reference/flow_curve.csv"));
   EXPECT_EQ(table_data(work() / "killed/flow_curve_packings.csv"),
             table_data(work() / "reference/flow_curve_packings.csv"));
 }

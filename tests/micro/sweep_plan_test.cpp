@@ -2,7 +2,10 @@
 // rates, every file named once.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <filesystem>
 #include <set>
 
 #include "common/errors.h"
@@ -10,6 +13,8 @@
 
 namespace softglass::micro {
 namespace {
+
+namespace fs = std::filesystem;
 
 TEST(SweepPlan, PaperPresetIsThePapersProtocol) {
   const SweepPlan plan = make_sweep_plan({.preset = "paper"});
@@ -22,7 +27,48 @@ TEST(SweepPlan, PaperPresetIsThePapersProtocol) {
   for (std::size_t k = 1; k < plan.gamma_tildes.size(); ++k)
     EXPECT_LE(std::log10(plan.gamma_tildes[k] / plan.gamma_tildes[k - 1]), 0.5 + 1e-12)
         << "at least two rates per decade";
-  EXPECT_EQ(plan.cases.size(), 5u * 5u * plan.gamma_tildes.size());
+  EXPECT_EQ(plan.cases.size(), 5u * 5u * (plan.gamma_tildes.size() + 1)) << "and quasi-static";
+}
+
+// The low end of every flow curve: one quasi-static case per (φ, seed), from
+// the packing its rate cases share, first among its φ's cases, in a file of its own.
+TEST(SweepPlan, EveryPackingHasItsQuasiStaticCase) {
+  const SweepPlan plan = make_sweep_plan({.preset = "fast", .packings = 2, .directory = "s"});
+  EXPECT_TRUE(plan.quasi_static);
+  EXPECT_EQ(plan.quasi_static_strain_step, 2e-4);
+  EXPECT_EQ(plan.cases.size(), plan.packings.size() * (plan.gamma_tildes.size() + 1));
+  std::vector<std::size_t> per_packing(plan.packings.size(), 0);
+  for (std::size_t k = 0; k < plan.cases.size(); ++k) {
+    const SweepCase& c = plan.cases[k];
+    if (!c.quasi_static) continue;
+    ++per_packing.at(c.packing);
+    EXPECT_EQ(c.gamma_tilde, 0.0);
+    EXPECT_GT(c.cost, 0.0);
+    EXPECT_EQ(c.file, fs::path("s/runs") /
+                          fmt::format("phi{:.4f}_aqs_seed{}.h5", c.volume_fraction, c.seed));
+    EXPECT_TRUE(k == 0 || plan.cases[k - 1].volume_fraction < c.volume_fraction ||
+                plan.cases[k - 1].quasi_static)
+        << "the quasi-static cases of a phi come first";
+  }
+  EXPECT_EQ(per_packing, std::vector<std::size_t>(plan.packings.size(), 1));
+
+  const SweepPlan rates_only = make_sweep_plan({.preset = "fast", .quasi_static = false});
+  EXPECT_EQ(rates_only.cases.size(), rates_only.packings.size() * rates_only.gamma_tildes.size());
+  for (const SweepCase& c : rates_only.cases) EXPECT_FALSE(c.quasi_static);
+}
+
+TEST(SweepPlan, RefusesBadQuasiStaticStrainSteps) {
+  for (double step : {0.0, -2e-4, 0.02, std::nan(""), HUGE_VAL}) {
+    SCOPED_TRACE(step);
+    try {
+      make_sweep_plan({.preset = "fast", .quasi_static_strain_step = step});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("'quasi-static strain step'"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("allowed: (0, 0.01]"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SweepPlan, CasesOfOnePhiAndSeedShareTheirPacking) {
@@ -39,8 +85,8 @@ TEST(SweepPlan, CasesOfOnePhiAndSeedShareTheirPacking) {
 }
 
 TEST(SweepPlan, ExplicitListsOverrideThePreset) {
-  const SweepPlan plan =
-      make_sweep_plan({.preset = "standard", .volume_fractions = {0.85, 0.75}, .gamma_tildes = {1e-5}});
+  const SweepPlan plan = make_sweep_plan(
+      {.preset = "standard", .volume_fractions = {0.85, 0.75}, .gamma_tildes = {1e-5}});
   EXPECT_EQ(plan.volume_fractions, (std::vector<double>{0.75, 0.85})) << "sorted";
   EXPECT_EQ(plan.gamma_tildes, std::vector<double>{1e-5});
   EXPECT_EQ(plan.particles, 1000u);
