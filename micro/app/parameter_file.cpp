@@ -131,11 +131,13 @@ void declare(ParameterHandler& prm, Entries& e) {
 
   prm.enter_subsection("integrator");
   entry(prm, "scheme", p.integrator.name,
-        "Time integrator: euler (explicit, default) or implicit (backward Euler, for low "
-        "gamma~; docs/integrators.md).",
-        Patterns::Selection("euler|implicit"));
+        "Time integrator: auto (euler at gamma~ >= 1e-5, implicit below), euler (explicit) "
+        "or implicit (backward Euler, for low gamma~); docs/integrators.md.",
+        Patterns::Selection("auto|euler|implicit"));
   entry(prm, "tolerance", p.integrator.tolerance,
-        "Local position error allowed per step, in units of R.", Patterns::Double(1e-12, 0.1));
+        "Local position error allowed per step, in units of R; 0: the scheme's default "
+        "(euler 1e-4, implicit 1e-3).",
+        Patterns::Double(0.0, 0.1));
   entry(prm, "stability fraction", p.integrator.stability_fraction,
         "Fraction of the explicit stability limit 2/lambda used at most.",
         Patterns::Double(0.01, 0.99));

@@ -109,15 +109,18 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   const auto start = Clock::now();
   ContactSystem system(record.packing_particles, record.packing_box, law, prm.packing.skin);
   OverdampedShear flow(std::move(system), prm.shear_model);
-  const auto integrator = make_integrator(prm.integrator);
+  // `auto` becomes a concrete scheme for this run's rate (integrator.h).
+  const IntegratorSpec scheme = prm.integrator.resolved_for(prm.shear_model.gamma_tilde);
+  const auto integrator = make_integrator(scheme);
 
   const std::optional<ShearCheckpoint> resume =
       existing_checkpoint<ShearCheckpoint>(checkpoints, read_checkpoint);
   auto checkpointing = checkpointing_of<ShearCheckpointing>(checkpoints, resume);
   if (!checkpoints.file.empty())
-    checkpointing.new_integrator = [&] { return make_integrator(prm.integrator); };
+    checkpointing.new_integrator = [&] { return make_integrator(scheme); };
   ShearRecord shear;
   shear.gamma_tilde = prm.shear_model.gamma_tilde;
+  shear.integrator = fmt::format("{}, tolerance {}", scheme.name, scheme.tolerance);
   shear.result = run_shear(flow, *integrator, prm.protocol, follow(progress), checkpointing);
   shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();

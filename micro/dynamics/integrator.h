@@ -51,8 +51,8 @@ class Integrator {
 struct IntegratorSpec {
   // A scheme of the registry, or `auto`: the cheapest scheme that is accurate
   // at the run's rate (resolved_for).
-  std::string name = "euler";
-  double tolerance = 1e-4;          // local position error per step, units of R; 0: the scheme's
+  std::string name = "auto";
+  double tolerance = 0.0;           // local position error per step, units of R; 0: the scheme's
   double stability_fraction = 0.8;  // fraction of the explicit stability limit 2/λ
   double max_step = 0.05;           // strain
   // `implicit` only: the nonlinear solve of a step is converged when the largest

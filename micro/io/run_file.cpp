@@ -49,6 +49,7 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   g.set_attribute("protocol", std::string(s.quasi_static ? kQuasiStatic : kOverdamped));
   g.write_scalar("gamma_tilde", s.gamma_tilde,
                  {"1", "dimensionless shear rate gamma_dot eta_s / E* (0: quasi-static)"});
+  if (!s.integrator.empty()) g.set_attribute("integrator", s.integrator);
   if (s.quasi_static) {
     g.set_attribute("strain_step", s.quasi_static->strain_step);
     g.set_attribute("relative_force", s.quasi_static->relative_force);

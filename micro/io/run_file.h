@@ -37,6 +37,9 @@ struct ShearRecord {
   Particles final_particles;  // label order
   LeesEdwardsBox final_box;
   std::optional<QuasiStaticRecord> quasi_static{};  // set: protocol "aqs", else "overdamped"
+  // Overdamped runs: the integrator used, after `auto` was resolved (e.g.
+  // "implicit, tolerance 0.001"); the attribute `integrator` of /shear.
+  std::string integrator{};
 };
 
 /// The structure of the stationary part of a run and where it came from.
