@@ -53,18 +53,25 @@ double default_tolerance(const std::string& scheme) {
   return scheme == "implicit" ? 1e-3 : 1e-4;
 }
 
+namespace {
+// A tolerance of 0 stands for the named scheme's default.
+IntegratorSpec with_default_tolerance(IntegratorSpec spec) {
+  if (spec.tolerance == 0.0) spec.tolerance = default_tolerance(spec.name);
+  return spec;
+}
+}  // namespace
+
 IntegratorSpec IntegratorSpec::resolved_for(double gamma_tilde) const {
   IntegratorSpec spec = *this;
   if (spec.name == "auto") spec.name = gamma_tilde >= kAutoImplicitBelow ? "euler" : "implicit";
-  if (spec.tolerance == 0.0) spec.tolerance = default_tolerance(spec.name);
-  return spec;
+  return with_default_tolerance(spec);
 }
 
 std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec) {
   require(spec.name != "auto",
           "integrator 'auto' depends on the shear rate: resolve it first (resolved_for)");
   spec.validate();
-  const IntegratorSpec resolved = spec.resolved_for(0.0);  // the default tolerance, if 0
+  const IntegratorSpec resolved = with_default_tolerance(spec);
   for (const auto& i : kRegistry) {
     if (spec.name == i.name) return i.make(resolved);
   }

@@ -20,7 +20,8 @@ constexpr std::size_t kMinSegmentSteps = 20;
 // How the strain steps are grouped: into samples, and samples into segments.
 struct Layout {
   std::size_t steps_per_sample, samples_per_segment;
-  double spacing;  // strain between samples
+  std::size_t min_samples;  // per segment: run_aqs's kMinSegmentSteps
+  double spacing;           // strain between samples
 };
 
 Layout layout(const QuasiStaticSettings& s, const ShearProtocol& p) {
@@ -28,11 +29,11 @@ Layout layout(const QuasiStaticSettings& s, const ShearProtocol& p) {
   l.steps_per_sample = std::max<std::size_t>(
       1, static_cast<std::size_t>(std::llround(p.sample_interval / s.strain_step)));
   l.spacing = static_cast<double>(l.steps_per_sample) * s.strain_step;
+  l.min_samples = (kMinSegmentSteps + l.steps_per_sample - 1) / l.steps_per_sample;
   const double segment =
       std::min(p.snapshot_interval > 0.0 ? p.snapshot_interval : p.check_interval, kMaxSegment);
-  l.samples_per_segment =
-      std::max<std::size_t>({1, static_cast<std::size_t>(std::llround(segment / l.spacing)),
-                             (kMinSegmentSteps + l.steps_per_sample - 1) / l.steps_per_sample});
+  l.samples_per_segment = std::max<std::size_t>(
+      {1, static_cast<std::size_t>(std::llround(segment / l.spacing)), l.min_samples});
   return l;
 }
 
@@ -119,10 +120,8 @@ QuasiStaticResult run_quasi_static(const Particles& particles, const LeesEdwards
     const double sheared_before = state.box.strain() - state.start;
     const auto samples_left = static_cast<std::size_t>(
         std::max(0.0, std::ceil((protocol.max_strain - sheared_before - slack) / l.spacing)));
-    const std::size_t min_samples =
-        (kMinSegmentSteps + l.steps_per_sample - 1) / l.steps_per_sample;
     const std::size_t steps =
-        std::max(std::min(l.samples_per_segment, samples_left), min_samples) * l.steps_per_sample;
+        std::max(std::min(l.samples_per_segment, samples_left), l.min_samples) * l.steps_per_sample;
 
     ContactSystem system(state.particles, state.box, law, skin);
     AqsSettings aqs;
