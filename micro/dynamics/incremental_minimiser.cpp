@@ -46,9 +46,9 @@ void freeze_drag(const ContactList& c, double gamma_tilde, FrozenDrag& out) {
 }
 
 bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const double> proximal,
-                                       const FrozenDrag& drag, double h,
-                                       const std::vector<Vec3>& u, Value& value,
-                                       std::vector<Vec3>& gradient, std::vector<Vec3>& w) {
+                                       const FrozenDrag& drag, double h, const std::vector<Vec3>& u,
+                                       Value& value, std::vector<Vec3>& gradient,
+                                       std::vector<Vec3>& w) {
   system.restore_positions(base_, base_strain_);
   system.restore_tracking(base_tracking_);
   system.move(1.0, u, /*affine=*/false);
@@ -156,7 +156,8 @@ void IncrementalMinimiser::invert_diagonal() {
 }
 
 void IncrementalMinimiser::hessian_times(std::span<const double> proximal,
-                                         const std::vector<Vec3>& in, std::vector<Vec3>& out) const {
+                                         const std::vector<Vec3>& in,
+                                         std::vector<Vec3>& out) const {
   const std::size_t n = in.size();
   for (std::size_t a = 0; a < n; ++a)
     out[a] = ((proximal.empty() ? 0.0 : proximal[a]) + damping_) * in[a];
@@ -172,19 +173,19 @@ int IncrementalMinimiser::newton_direction(std::span<const double> proximal, dou
   // then raises the damping and tries again.
   const int limit = static_cast<int>(std::max<std::size_t>(50, 3 * gradient_.size()));
   const CgOutcome outcome = solve_newton_system(
-      gradient_, [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) { hessian_times(proximal, in, out); },
-      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, eta, limit, true, direction_,
-      cg_);
+      gradient_,
+      [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {
+        hessian_times(proximal, in, out);
+      },
+      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, eta, limit, true,
+      direction_, cg_);
   negative_curvature_ = outcome.negative_curvature;
   return outcome.iterations;
 }
 
-IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,
-                                                 std::span<const double> proximal,
-                                                 const FrozenDrag& drag, double h,
-                                                 std::vector<Vec3>& u,
-                                                 std::vector<double>* energies,
-                                                 int max_iterations) {
+IncrementalResult IncrementalMinimiser::minimise(
+    ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag, double h,
+    std::vector<Vec3>& u, std::vector<double>* energies, int max_iterations) {
   if (max_iterations < 0) max_iterations = settings_.max_iterations;
   const std::size_t n = system.size();
   IncrementalResult result;
@@ -256,6 +257,12 @@ IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,
     // Armijo backtracking on Φ. The change is the sum of the parts' changes;
     // near the minimum it can fall below their rounding, and then the step is
     // judged by the gradient.
+    // A trial beyond the neighbour list's reach is shortened like one that
+    // fails the Armijo test, as long as the accepted point has used less than
+    // half the reach; past that, the caller's rebuild around the accepted point
+    // gains more, and it always leaves a reach for the next step.
+    const double reach = system.neighbours().nonaffine_reach(base_strain_);
+    const bool rebuild_pays = system.max_nonaffine_displacement() > 0.5 * reach;
     const double slope = dot(gradient_, direction_);
     const double gnorm2 = dot(gradient_, gradient_);
     bool accepted = false;
@@ -263,6 +270,7 @@ IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,
     for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
       for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
       if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
+        if (!rebuild_pays) continue;
         // Back to the last accepted point, where the list is valid.
         evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
         result.list_invalid = true;
@@ -273,10 +281,10 @@ IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,
       const double change = (trial_value.elastic - value.elastic) +
                             (trial_value.proximal - value.proximal) +
                             (trial_value.dissipation - value.dissipation);
-      const double rounding = 64.0 * std::numeric_limits<double>::epsilon() *
-                              (std::abs(value.elastic) + std::abs(trial_value.elastic) +
-                               value.proximal + trial_value.proximal + value.dissipation +
-                               trial_value.dissipation);
+      const double rounding =
+          64.0 * std::numeric_limits<double>::epsilon() *
+          (std::abs(value.elastic) + std::abs(trial_value.elastic) + value.proximal +
+           trial_value.proximal + value.dissipation + trial_value.dissipation);
       if (change <= kArmijo * t * slope ||
           (std::abs(change) <= rounding && dot(gradient_trial_, gradient_trial_) < gnorm2)) {
         accepted = true;
@@ -297,7 +305,8 @@ IncrementalResult IncrementalMinimiser::minimise(ContactSystem& system,
     gradient_.swap(gradient_trial_);
     w_.swap(w_trial_);
     value = trial_value;
-    if (energies) energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
+    if (energies)
+      energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
   }
   result.energy_change = value.elastic - start.elastic;
   result.max_displacement = max_norm(u);

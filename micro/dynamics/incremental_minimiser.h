@@ -64,7 +64,7 @@ struct IncrementalSettings {
 /// The frozen drag of one step (from the contacts at the step's start).
 struct FrozenDrag {
   std::vector<std::uint32_t> i, j;
-  std::vector<Vec3> normal;       // n_c
+  std::vector<Vec3> normal;         // n_c
   std::vector<double> coefficient;  // a_c
   std::vector<Vec3> affine;         // w⁰_c = P_c (d_y e_x)
   void clear();
@@ -76,13 +76,13 @@ void freeze_drag(const ContactList& contacts, double gamma_tilde, FrozenDrag& ou
 
 struct IncrementalResult {
   bool converged = false;
-  // A trial point left the neighbour list's validity: the system is back at the
-  // last accepted point x⁰ + u (valid), and the caller rebuilds the list and
-  // goes on (or restarts).
+  // A trial point left the neighbour list's reach after the accepted points had
+  // used half of it: the system is back at the last accepted point x⁰ + u
+  // (valid), and the caller rebuilds the list and goes on (or restarts).
   bool list_invalid = false;
   int iterations = 0;
-  double residual = 0.0;  // max |∂Φ/∂u| at the end (units E* R²)
-  double energy_change = 0.0;  // E(x⁰ + u) − E(x⁰)
+  double residual = 0.0;          // max |∂Φ/∂u| at the end (units E* R²)
+  double energy_change = 0.0;     // E(x⁰ + u) − E(x⁰)
   double max_displacement = 0.0;  // max |u_α|
 };
 
@@ -112,14 +112,14 @@ class IncrementalMinimiser {
 
  private:
   struct Value {
-    double elastic;     // E
-    double proximal;    // Σ ζ|u|²/2h
-    double dissipation; // h Ψ(u/h)
+    double elastic;      // E
+    double proximal;     // Σ ζ|u|²/2h
+    double dissipation;  // h Ψ(u/h)
   };
   /// Moves the system to x⁰ + u and evaluates forces, Φ's parts and ∇Φ.
-  bool evaluate_at(ContactSystem& system, std::span<const double> proximal,
-                   const FrozenDrag& drag, double h, const std::vector<Vec3>& u, Value& value,
-                   std::vector<Vec3>& gradient, std::vector<Vec3>& w);
+  bool evaluate_at(ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag,
+                   double h, const std::vector<Vec3>& u, Value& value, std::vector<Vec3>& gradient,
+                   std::vector<Vec3>& w);
   /// The Hessian model's pair blocks and the inverted diagonal blocks.
   void assemble(const ContactSystem& system, std::span<const double> proximal,
                 const FrozenDrag& drag, double h, double force_floor);

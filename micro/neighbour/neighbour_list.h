@@ -23,6 +23,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -46,12 +47,18 @@ class NeighbourList {
   /// (fewer than three cells of side 2 R_max + skin per direction).
   void build(const LeesEdwardsBox& box, std::span<const Vec3> x, std::span<const double> radius);
 
+  /// The list's reach at `strain`: the bound above solved for A, i.e. the
+  /// non-affine displacement below which it still holds every contact
+  /// (negative when the strain alone has used up the skin).
+  double nonaffine_reach(double strain) const {
+    const double shear = std::abs(strain - strain_at_build_);
+    return (skin_ - 2.0 * shear * max_radius_) / (2.0 + 2.0 * shear);
+  }
+
   /// Whether the list still holds every contact after particles have moved
   /// non-affinely by at most `max_nonaffine` and the strain has reached `strain`.
   bool valid_for(double max_nonaffine, double strain) const {
-    const double a = max_nonaffine;
-    return built_ &&
-           2.0 * a + std::abs(strain - strain_at_build_) * (2.0 * max_radius_ + 2.0 * a) < skin_;
+    return built_ && max_nonaffine < nonaffine_reach(strain);
   }
 
   /// Neighbours j > i of particle i, each entry packing j and the pair's image.

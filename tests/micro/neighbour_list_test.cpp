@@ -176,6 +176,11 @@ TEST(NeighbourList, ValidForIsFalseBeyondTheBound) {
   const double combined = (kSkin - 2 * a) / (2 * r_max + 2 * a);
   EXPECT_TRUE(list.valid_for(a, 0.25 + 0.99 * combined));
   EXPECT_FALSE(list.valid_for(a, 0.25 + 1.01 * combined));
+  // the reach is that bound solved for A: half the skin at the build's strain,
+  // a at the combined strain limit, nothing left at the affine-only one
+  EXPECT_DOUBLE_EQ(list.nonaffine_reach(0.25), 0.5 * kSkin);
+  EXPECT_NEAR(list.nonaffine_reach(0.25 + combined), a, 1e-12);
+  EXPECT_NEAR(list.nonaffine_reach(0.25 - limit), 0.0, 1e-12);
 }
 
 TEST(NeighbourList, TooSmallCellIsAnInputError) {
