@@ -281,8 +281,8 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
   entry(prm, "preset", s.spec.preset,
         "Fidelity: fast, standard or paper (docs/sweeps.md states their error and cost), or "
         "custom. A preset fixes N, the lists below when they are empty, the number of packings "
-        "when it is 0, and each run's target relative error and max strain; custom takes all "
-        "of them from this file.",
+        "when it is 0, and each run's length (shear/target relative error, min and max strain, "
+        "min stationary strain); custom takes all of them from this file.",
         Patterns::Selection("fast|standard|paper|custom"));
   entry(prm, "volume fractions", s.spec.volume_fractions,
         "Volume fractions phi (comma-separated); empty: the preset's. Overrides "
@@ -368,10 +368,11 @@ MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSett
     prm.leave_subsection();
     prm.enter_subsection("shear");
     prm.set("gamma dot tilde", c.gamma_tilde);
-    if (c.target_relative_error > 0.0) {
-      prm.set("target relative error", c.target_relative_error);
-      prm.set("max strain", c.max_strain);
-      prm.set("min strain", std::min(e.p.protocol.min_strain, c.max_strain));
+    if (c.run) {
+      prm.set("target relative error", c.run->target_relative_error);
+      prm.set("min strain", c.run->min_strain);
+      prm.set("max strain", c.run->max_strain);
+      prm.set("min stationary strain", c.run->min_stationary_strain);
     }
     prm.leave_subsection();
     prm.enter_subsection("packing");

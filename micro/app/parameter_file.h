@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "micro/analysis/structure.h"
@@ -48,8 +49,8 @@ struct SweepCaseSettings {
   std::size_t particles;
   double volume_fraction, gamma_tilde;
   unsigned seed;
-  double target_relative_error, max_strain;  // the preset's; ≤ 0: keep the file's
-  std::filesystem::path packing_input;       // empty: make the packing
+  std::optional<RunLength> run;         // the preset's; none: keep the file's
+  std::filesystem::path packing_input;  // empty: make the packing
   std::filesystem::path output;
 };
 /// `base` with the case's entries set, checked, and its text (a valid

@@ -42,9 +42,7 @@ struct Sweep {
 };
 
 SweepCaseSettings settings_of(const Sweep& sweep, double phi, unsigned seed, double rate) {
-  const bool preset = sweep.parameters.spec.preset != "custom";
-  return {sweep.plan.particles,  phi, rate, seed, preset ? sweep.plan.target_relative_error : 0.0,
-          sweep.plan.max_strain, {},  {}};
+  return {sweep.plan.particles, phi, rate, seed, sweep.plan.run, {}, {}};
 }
 
 // One log line per finished piece of work, on stdout, prefixed by the worker.

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,15 +28,22 @@ inline constexpr double kQuasiStaticStrainStep = 2e-4;
 /// The largest Δγ allowed (dynamics/aqs.h).
 inline constexpr double kMaxQuasiStaticStrainStep = 0.01;
 
+/// How long each run of a preset shears: the stopping rule of
+/// protocol/shear_run.h (subsection `shear` of a run file).
+struct RunLength {
+  double target_relative_error;  // of σ, N1 and N2
+  double min_strain, max_strain;
+  double min_stationary_strain;  // the averaging window after the transient, at least
+};
+
 struct SweepPreset {
   std::string name;
   std::size_t particles;
   std::vector<double> volume_fractions;
   std::vector<double> gamma_tildes;
   unsigned packings;
-  double target_relative_error;  // of each run (σ, N1, N2)
-  double max_strain;             // of each run
-  std::string description;       // what it is for
+  RunLength run;
+  std::string description;  // what it is for
 };
 
 /// fast, standard, paper.
@@ -74,7 +82,7 @@ struct SweepCase {
 
 struct SweepPlan {
   std::size_t particles;
-  double target_relative_error, max_strain;
+  std::optional<RunLength> run;  // the preset's; none for custom (the file's `shear`)
   std::vector<double> volume_fractions, gamma_tildes;  // sorted; γ̃ of the rate cases only
   std::vector<unsigned> seeds;
   bool quasi_static;  // the cases include one quasi-static case per packing

@@ -152,6 +152,29 @@ TEST_F(MicroCli, SweepQuasiStaticCaseIsTheLowEndOfTheFlowCurve) {
   EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
 }
 
+// A preset fixes each run's length whatever the file's subsection shear says:
+// `paper` shears 5 strain and averages at least the last 3 (the paper's
+// protocol), and the case's record keeps the entries it ran with.
+TEST_F(MicroCli, SweepPresetSetsTheLengthOfEveryRun) {
+  parameters("s.prm",
+             "subsection sweep\n  set preset = paper\n  set particles = 128\n"
+             "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n  set packings = 1\n"
+             "  set quasi-static = false\n  set output directory = out\nend\n"
+             "subsection neighbours\n  set skin = 0.3\nend\n"
+             "subsection shear\n  set min strain = 1\n  set max strain = 1\n"
+             "  set min stationary strain = 0.5\n  set snapshot interval = 0\nend\n");
+  const Outcome o = micro("--threads 1 sweep s.prm --case 0 --quiet");
+  ASSERT_EQ(o.code, 0) << o.err;
+  const H5File file = H5File::open(work() / "out/runs/phi0.8000_gt1.000e-04_seed1.h5");
+  const std::string text = file.root().read_string("parameters");
+  for (const char* entry : {"set min strain            = 5", "set max strain            = 5",
+                            "set min stationary strain = 3"})
+    EXPECT_NE(text.find(entry), std::string::npos) << entry << " in\n" << text;
+  const auto strain = file.root().group("shear").group("timeseries").read_array("strain").data;
+  ASSERT_FALSE(strain.empty());
+  EXPECT_NEAR(strain.back(), 5.0, 0.011) << "sampled every 0.01 up to the preset's 5 strain";
+}
+
 TEST_F(MicroCli, SweepRefusesAFolderAnotherSweepHolds) {
   parameters("s.prm", sweep_file("out",
                                  "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4\n"

@@ -28,6 +28,18 @@ TEST(SweepPlan, PaperPresetIsThePapersProtocol) {
     EXPECT_LE(std::log10(plan.gamma_tildes[k] / plan.gamma_tildes[k - 1]), 0.5 + 1e-12)
         << "at least two rates per decade";
   EXPECT_EQ(plan.cases.size(), 5u * 5u * (plan.gamma_tildes.size() + 1)) << "and quasi-static";
+  // "until steady state was reached, then averaging over several strain units"
+  ASSERT_TRUE(plan.run.has_value());
+  EXPECT_EQ(plan.run->min_strain, 5.0);
+  EXPECT_EQ(plan.run->max_strain, 5.0);
+  EXPECT_EQ(plan.run->min_stationary_strain, 3.0);
+  EXPECT_FALSE(make_sweep_plan({.preset = "custom",
+                                .volume_fractions = {0.8},
+                                .gamma_tildes = {1e-4},
+                                .packings = 1,
+                                .particles = 100})
+                   .run.has_value())
+      << "custom takes the run length from the file";
 }
 
 // The low end of every flow curve: one quasi-static case per (φ, seed), from
