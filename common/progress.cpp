@@ -17,6 +17,11 @@ std::string format_duration(double seconds) {
   return fmt::format("{}h{:02}m", s / 3600, (s % 3600) / 60);
 }
 
+double time_left(double elapsed, double done, double total, double carried) {
+  const double timed = done - carried;
+  return timed > 0 ? elapsed * std::max(total - done, 0.0) / timed : NAN;
+}
+
 Progress::Progress(std::string label, double total, bool quiet)
     : label_(std::move(label)),
       total_(total),
@@ -34,7 +39,7 @@ void Progress::update(double done, const std::string& note) {
   const auto now = std::chrono::steady_clock::now();
   const double fraction = total_ > 0 ? std::clamp(done / total_, 0.0, 1.0) : 0.0;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double left = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : NAN;
+  const double left = time_left(elapsed, done, total_, carried_);
   const std::string text =
       fmt::format("{} {:5.1f}%  {}  left {}{}{}", label_, 100.0 * fraction,
                   format_duration(elapsed), format_duration(left), note.empty() ? "" : "  ", note);

@@ -293,9 +293,15 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
     Progress bar("sweep", total, options.quiet || !workers.leader());
     std::size_t failed = 0;
     for (std::size_t k : mine) {
+      // A case resumed from its checkpoint reports its first progress part-way:
+      // that part was run before, and must not speed up the time left.
+      bool first_report = true;
       try {
-        run_case(sweep, plan.cases[k], workers,
-                 [&](double fraction) { bar.update(finished + fraction * cost[k]); });
+        run_case(sweep, plan.cases[k], workers, [&](double fraction) {
+          if (first_report) bar.carry(fraction * cost[k]);
+          first_report = false;
+          bar.update(finished + fraction * cost[k]);
+        });
       } catch (const std::exception& e) {
         log(workers, "FAILED   case {} ({}): {}", k, plan.cases[k].file.string(), e.what());
         ++failed;
