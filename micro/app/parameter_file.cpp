@@ -345,6 +345,7 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   sweep.spec.first_seed = static_cast<unsigned>(s.first_seed);
   sweep.spec.particles = s.particles;
   sweep.spec.checkpoint_steps = s.checkpoint_steps;
+  sweep.spec.scheme = sweep.base.integrator.name;
   require(!s.directory.empty(), "sweep: output directory is empty");
   sweep.spec.directory = s.directory;
   // A sample averages whole strain steps (protocol/quasi_static_run.h).

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/errors.h"
+#include "micro/dynamics/integrator.h"
 
 namespace softglass::micro {
 
@@ -21,14 +22,33 @@ std::vector<double> decades(int first, int last, int per_decade) {
 
 const std::vector<double> kPaperVolumeFractions = {0.70, 0.75, 0.80, 0.85, 0.90};
 
-// Relative cost of a quasi-static case, in the units of the rate cases
-// (N γ̃^-0.8 per case). Measured at φ = 0.80, Δγ = 2e-4 (docs/sweeps.md): 7.7 s
-// per strain for N = 250 — what an explicit run costs near γ̃ = 5e-7 (0.12 s
-// per strain at 1e-4) — and 50 s for N = 1000 (∝ N^1.35); 3.3 times less at
-// Δγ = 1e-3 for N = 250 (∝ Δγ^-0.75).
+// Cost estimates of the cases, in seconds of one core per 5 strain, from one
+// N = 1000, φ = 0.80 column run with the default scheme (docs/sweeps.md):
+// explicit 25 s at γ̃ = 1e-5, growing like γ̃^-0.8 below (steps per strain,
+// docs/validation.md); implicit 8.5 s at 3.16e-6 and 691 s at 1e-9, i.e.
+// about 4.5 s × (γ̃/1e-5)^-0.55; quasi-static 334–494 s at Δγ = 2e-4, 3.3×
+// less per strain at Δγ = 1e-3 for N = 250 (∝ Δγ^-0.75). Cost grows like N
+// for the explicit scheme and like N^1.35 for the minimisers (AQS: 7.7 s per
+// strain at N = 250 against 50 s at N = 1000). The estimates order the work,
+// split it over the workers (longest first) and apportion the time left, so
+// a factor 2 is harmless; a wrong scheme (an explicit estimate for an
+// implicit run is 55× too high at 1e-9) is not.
+double explicit_cost(std::size_t particles, double rate) {
+  return 25.0 * (static_cast<double>(particles) / 1000.0) * std::pow(rate / 1e-5, -0.8);
+}
+
+double minimiser_scale(std::size_t particles) {
+  return std::pow(static_cast<double>(particles) / 1000.0, 1.35);
+}
+
+double rate_cost(std::size_t particles, double rate, const std::string& scheme) {
+  const bool implicit = scheme == "implicit" || (scheme == "auto" && rate < kAutoImplicitBelow);
+  return implicit ? 4.5 * minimiser_scale(particles) * std::pow(rate / 1e-5, -0.55)
+                  : explicit_cost(particles, rate);
+}
+
 double quasi_static_cost(std::size_t particles, double strain_step) {
-  const double n = static_cast<double>(particles);
-  return 250.0 * 1.0e5 * std::pow(n / 250.0, 1.35) * std::pow(strain_step / 2e-4, -0.75);
+  return 400.0 * minimiser_scale(particles) * std::pow(strain_step / 2e-4, -0.75);
 }
 
 void require_sorted_unique(std::vector<double>& values, const char* entry) {
@@ -134,9 +154,6 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
           {phi, seed, spec.directory / "packings" / fmt::format("phi{:.4f}_seed{}.h5", phi, seed)});
     }
   }
-  // Steps per strain grow like γ̃^-0.8 between 1e-4 and 1e-7 with the explicit
-  // scheme (docs/validation.md); the estimate only orders the work and
-  // apportions the time left, which the progress display recalibrates.
   for (std::size_t p = 0; p < plan.packings.size(); ++p) {
     const SweepPacking& packing = plan.packings[p];
     for (double rate : plan.gamma_tildes) {
@@ -144,7 +161,7 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
                             spec.directory / "runs" /
                                 fmt::format("phi{:.4f}_gt{:.3e}_seed{}.h5", packing.volume_fraction,
                                             rate, packing.seed),
-                            static_cast<double>(plan.particles) * std::pow(rate, -0.8)});
+                            rate_cost(plan.particles, rate, spec.scheme)});
     }
     if (plan.quasi_static) {
       plan.cases.push_back(

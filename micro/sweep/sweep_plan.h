@@ -63,6 +63,7 @@ struct SweepSpec {
   std::size_t checkpoint_steps = 20000;  // accepted steps between checkpoints (0: none)
   bool quasi_static = true;              // a quasi-static case per (φ, seed)
   double quasi_static_strain_step = kQuasiStaticStrainStep;
+  std::string scheme = "auto";  // the runs' integrator: only the cost estimates use it
 };
 
 struct SweepPacking {
@@ -76,7 +77,7 @@ struct SweepCase {
   double volume_fraction, gamma_tilde;  // γ̃ = 0 for the quasi-static case
   unsigned seed;
   std::filesystem::path file;  // `micro run` record
-  double cost;                 // relative estimate, for ordering and the time left
+  double cost;  // estimate (≈ s per 5 strain on this machine): order, split, time left
   bool quasi_static = false;
 };
 

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -112,6 +113,53 @@ TEST(SweepPlan, RefusesIncompleteOrInvalidLists) {
   EXPECT_THROW(make_sweep_plan({.preset = "fast", .volume_fractions = {0.5}}), InputError);
   EXPECT_THROW(make_sweep_plan({.preset = "fast", .gamma_tildes = {0.0}}), InputError);
   EXPECT_THROW(make_sweep_plan({.preset = "fast", .gamma_tildes = {std::nan("")}}), InputError);
+}
+
+}  // namespace
+}  // namespace softglass::micro
+
+namespace softglass::micro {
+namespace {
+
+// The cost estimates split the work over the workers, so they must follow the
+// scheme that runs each case. Against one measured N = 1000, φ = 0.80 column
+// (docs/sweeps.md, one core, 5 strain per case, scheme auto) every estimate
+// is within a factor 2, and so is the column's total.
+TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
+  const std::vector<std::pair<double, double>> measured = {
+      {1e-9, 691}, {3.16e-9, 481}, {1e-8, 301}, {3.16e-8, 153}, {1e-7, 73}, {3.16e-7, 34},
+      {1e-6, 16},  {3.16e-6, 8.5}, {1e-5, 25},  {3.16e-5, 9},   {1e-4, 5}};
+  std::vector<double> rates;
+  for (const auto& [rate, seconds] : measured) rates.push_back(rate);
+  const SweepPlan plan = make_sweep_plan({.preset = "custom",
+                                          .volume_fractions = {0.80},
+                                          .gamma_tildes = rates,
+                                          .packings = 1,
+                                          .particles = 1000});
+  double estimated_total = 0.0, measured_total = 334.0;  // the AQS case: 334 s
+  for (const SweepCase& c : plan.cases) {
+    estimated_total += c.cost;
+    if (c.quasi_static) {
+      EXPECT_NEAR(std::log(c.cost / 334.0), 0.0, std::log(2.0)) << "quasi-static";
+      continue;
+    }
+    const auto& [rate, seconds] = *std::find_if(measured.begin(), measured.end(), [&](auto& m) {
+      return std::abs(m.first - c.gamma_tilde) < 1e-6 * m.first;
+    });
+    measured_total += seconds;
+    EXPECT_NEAR(std::log(c.cost / seconds), 0.0, std::log(2.0)) << "gamma~ " << rate;
+  }
+  EXPECT_NEAR(std::log(estimated_total / measured_total), 0.0, std::log(1.25));
+
+  // All-explicit runs cost far more at low rates than the implicit ones.
+  const SweepPlan explicit_plan = make_sweep_plan({.preset = "custom",
+                                                   .volume_fractions = {0.80},
+                                                   .gamma_tildes = {1e-9},
+                                                   .packings = 1,
+                                                   .particles = 1000,
+                                                   .quasi_static = false,
+                                                   .scheme = "euler"});
+  EXPECT_GT(explicit_plan.cases.front().cost, 20.0 * plan.cases[1].cost);
 }
 
 }  // namespace
