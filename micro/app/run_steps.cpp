@@ -124,7 +124,8 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   shear.result = run_shear(flow, *integrator, prm.protocol, follow(progress), checkpointing);
   shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();
-  record.timings.shear = seconds_since(start);
+  record.timings.resumed = resume ? resume->seconds : 0.0;
+  record.timings.shear = record.timings.resumed + seconds_since(start);
   analyse_structure(record, shear, *law, prm);
   record.shear = std::move(shear);
 }
@@ -147,13 +148,14 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
   shear.final_box = r.final_box;
   shear.quasi_static = QuasiStaticRecord{settings.strain_step, settings.relative_force,
                                          r.stress_drops, r.unconverged_steps};
-  record.timings.shear = seconds_since(start);
+  record.timings.resumed = resume ? resume->seconds : 0.0;
+  record.timings.shear = record.timings.resumed + seconds_since(start);
   analyse_structure(record, shear, *law, prm);
   record.shear = std::move(shear);
 }
 
 void write_record(AtomicOutput& out, RunRecord& record, double total_seconds) {
-  record.timings.total = total_seconds;
+  record.timings.total = record.timings.resumed + total_seconds;
   write_run_file(out.temporary_path(), record);
   out.commit();
 }

@@ -162,8 +162,11 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
   t.write_scalar("packing", record.timings.packing,
                  {"s", "wall time to make and relax the packing"});
   t.write_scalar("shear_modulus", record.timings.modulus, {"s", "wall time for G0"});
-  t.write_scalar("shear", record.timings.shear, {"s", "wall time of the sheared run"});
-  t.write_scalar("total", record.timings.total, {"s", "wall time of the command"});
+  t.write_scalar("shear", record.timings.shear,
+                 {"s", "wall time of the sheared run, earlier invocations included"});
+  t.write_scalar("resumed", record.timings.resumed,
+                 {"s", "part of shear run before the last resume from a checkpoint"});
+  t.write_scalar("total", record.timings.total, {"s", "wall time of the command, plus resumed"});
   t.write_scalar("threads", record.timings.threads, {"1", "OpenMP threads"});
 
   H5Group p = root.create_group("packing");

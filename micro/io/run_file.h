@@ -21,6 +21,7 @@ namespace softglass::micro {
 
 struct Timings {
   double packing = 0.0, modulus = 0.0, shear = 0.0, total = 0.0;  // seconds (wall)
+  double resumed = 0.0;  // of `shear`, run before the last resume from a checkpoint
   int threads = 1;
 };
 

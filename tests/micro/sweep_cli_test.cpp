@@ -295,6 +295,12 @@ TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
             table_data(work() / "reference/flow_curve.csv"));
   EXPECT_EQ(table_data(work() / "killed/flow_curve_packings.csv"),
             table_data(work() / "reference/flow_curve_packings.csv"));
+  // The record's times count the part before the kill: the checkpoint holds it.
+  const H5File record = H5File::open(work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.h5");
+  const H5Group timings = record.root().group("timings");
+  EXPECT_GT(timings.read_scalar("resumed"), 0.0);
+  EXPECT_GT(timings.read_scalar("shear"), timings.read_scalar("resumed"));
+  EXPECT_GE(timings.read_scalar("total"), timings.read_scalar("shear"));
 }
 
 }  // namespace
