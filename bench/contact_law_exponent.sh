@@ -17,6 +17,10 @@
 # Usage: bench/contact_law_exponent.sh [build dir]   (env: N, PHI, PACKINGS,
 #        RATES, STRAIN, OUT). Defaults (N = 250, φ = 0.80, 2 packings, 1e-8 …
 #        1e-4 one per decade plus AQS, 5 strain per run) take ≈ 15 min of CPU.
+#        RATES needs at least 4 rates (a Herschel–Bulkley fit has 3 parameters)
+#        reaching down to the yield plateau (1e-8 at φ = 0.80; with 1e-7 as the
+#        lowest, `bridge fit` finds no plateau for hertz and refuses): the
+#        script then stops with the fit's message.
 set -euo pipefail
 BUILD=${1:-build}
 MICRO="$BUILD/micro/micro"
@@ -70,10 +74,12 @@ subsection shear
 end
 EOF
   start=$(date +%s)
-  "$MICRO" --threads 1 sweep "$OUT/$law.prm" -q > "$OUT/$law.log" 2>&1
+  "$MICRO" --threads 1 sweep "$OUT/$law.prm" -q > "$OUT/$law.log" 2>&1 ||
+    { tail -5 "$OUT/$law.log" >&2; exit 1; }
   seconds=$(($(date +%s) - start))
   "$BRIDGE" fit "$OUT/out_$law/flow_curve.csv" --packings "$OUT/out_$law/flow_curve_packings.csv" \
-    -o "$OUT/law_$law.prm" --force > "$OUT/fit_$law.txt" 2>&1
+    -o "$OUT/law_$law.prm" --force > "$OUT/fit_$law.txt" 2>&1 ||
+    { grep -v '^bootstrap' "$OUT/fit_$law.txt" >&2; exit 1; }
   # The first Herschel–Bulkley table is σ's; its row: phi, yield ± se, consistency ± se, m ± se.
   m=$(awk '/^Herschel-Bulkley per volume fraction: sigma/ { on = 1; next }
            on && $1 ~ /^[0-9.]+$/ { print $8 " ± " $10; exit }' "$OUT/fit_$law.txt")
