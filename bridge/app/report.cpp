@@ -60,9 +60,10 @@ void print_quasi_static_yield(const SweepAnalysis& a) {
       continue;
     }
     const Estimate aqs = *g.quasi_static->values[index(Quantity::sigma)];
-    fmt::print("  {:<6} {:>24} {:>24} {:>10.2f}\n", g.phi, with_error(aqs.value, aqs.error),
-               with_error(hb, hb_error),
-               (aqs.value - hb) / std::sqrt(aqs.error * aqs.error + hb_error * hb_error));
+    // Not a number when σ_y was not fitted or neither estimate has an error.
+    const double z = (aqs.value - hb) / std::sqrt(aqs.error * aqs.error + hb_error * hb_error);
+    fmt::print("  {:<6} {:>24} {:>24} {:>10}\n", g.phi, with_error(aqs.value, aqs.error),
+               with_error(hb, hb_error), std::isfinite(z) ? fmt::format("{:.2f}", z) : "-");
   }
 }
 

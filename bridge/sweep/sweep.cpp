@@ -52,10 +52,20 @@ std::size_t find_group(const Sweep& sweep, double phi) {
 }
 
 Sweep make_sweep(const FlowCurveTable& table) {
-  std::vector<const StatePoint*> points;
-  for (const StatePoint& p : table.points) points.push_back(&p);
-  std::sort(points.begin(), points.end(), [](const StatePoint* a, const StatePoint* b) {
-    return a->phi < b->phi || (a->phi == b->phi && a->gamma_tilde < b->gamma_tilde);
+  // The rows by φ — rows within kSamePhi of the last are one φ — and within a
+  // φ by γ̃, so that each curve increases in γ̃ and a rate appears once.
+  std::vector<const StatePoint*> by_phi;
+  for (const StatePoint& p : table.points) by_phi.push_back(&p);
+  std::sort(by_phi.begin(), by_phi.end(),
+            [](const StatePoint* a, const StatePoint* b) { return a->phi < b->phi; });
+  std::vector<std::pair<std::size_t, const StatePoint*>> points;  // (φ group, row)
+  for (std::size_t k = 0; k < by_phi.size(); ++k) {
+    const bool same_phi = k > 0 && by_phi[k]->phi - by_phi[k - 1]->phi <= kSamePhi;
+    points.emplace_back(k == 0 ? 0 : points.back().first + (same_phi ? 0 : 1), by_phi[k]);
+  }
+  std::stable_sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
+    return a.first < b.first ||
+           (a.first == b.first && a.second->gamma_tilde < b.second->gamma_tilde);
   });
 
   Sweep sweep;
@@ -76,8 +86,18 @@ Sweep make_sweep(const FlowCurveTable& table) {
       smooth_errors(*g.curves[index(q)], g.packings);
     }
   };
-  for (const StatePoint* p : points) {
-    if (sweep.groups.empty() || p->phi - sweep.groups.back().phi > kSamePhi) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const StatePoint* p = points[k].second;
+    const bool new_phi = k == 0 || points[k].first != points[k - 1].first;
+    if (!new_phi) {
+      const StatePoint* before = points[k - 1].second;
+      if (std::abs(p->gamma_tilde - before->gamma_tilde) <= 1e-9 * p->gamma_tilde) {
+        throw InputError(
+            fmt::format("{}, line {}: state point phi = {}, gamma~ = {} already on line {}",
+                        table.source, p->line, p->phi, p->gamma_tilde, before->line));
+      }
+    }
+    if (new_phi) {
       if (!sweep.groups.empty()) close_group();
       PhiGroup& g = sweep.groups.emplace_back();
       g.phi = p->phi;
@@ -90,11 +110,6 @@ Sweep make_sweep(const FlowCurveTable& table) {
                                               p->gamma_tilde, *p->converged, p->packings));
     }
     if (p->gamma_tilde == 0.0) {
-      if (g.quasi_static) {  // φ within 1e-9 of each other are one φ
-        throw InputError(fmt::format(
-            "{}, line {}: a second quasi-static row (gamma~ = 0) for phi = {} (line {})",
-            table.source, p->line, g.phi, g.quasi_static->line));
-      }
       g.quasi_static = *p;
       continue;
     }

@@ -203,7 +203,7 @@ int compare(const CompareOptions& o) {
   for (const std::string& c : measured.conversions) header_lines.push_back("derived: " + c);
 
   AtomicOutput& csv_file = *claimed.files[0];
-  write_results_csv(csv_file.temporary_path(), header_lines, table, table_rows, 8);
+  write_results_csv(csv_file, header_lines, table, table_rows, 8);
 
   io::OverlayPlot plot{
       .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),

@@ -10,17 +10,17 @@
 
 namespace softglass::macro::app {
 
-void write_results_csv(const std::filesystem::path& path, const std::vector<std::string>& comments,
+void write_results_csv(const AtomicOutput& out, const std::vector<std::string>& comments,
                        const std::vector<Column>& columns,
                        const std::vector<std::vector<double>>& rows, int digits) {
-  std::ofstream csv(path);
+  std::ofstream csv(out.temporary_path());
   for (const std::string& line : comments) csv << "# " << line << "\n";
   for (std::size_t c = 0; c < columns.size(); ++c)
     csv << (c ? "," : "") << columns[c].name << " [" << columns[c].unit << "]";
   csv << "\n";
   for (const auto& row : rows) csv << fmt::format("{:.{}g}\n", fmt::join(row, ","), digits);
   csv.close();
-  if (!csv) throw NumericalError(fmt::format("cannot write {}", path.string()));
+  if (!csv) throw NumericalError(fmt::format("cannot write {}", out.final_path().string()));
 }
 
 void write_results_h5(const std::filesystem::path& path, const std::vector<Column>& columns,

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "common/atomic_output.h"
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
@@ -29,10 +30,10 @@ struct RunProvenance {
   unsigned mpi_ranks = 1, ranks_per_point = 1;
 };
 
-/// Writes `path`: each of `comments` as a `# ` line, the header "name [unit]"
-/// per column, then `rows` with `digits` significant digits; NumericalError
-/// if the file cannot be written.
-void write_results_csv(const std::filesystem::path& path, const std::vector<std::string>& comments,
+/// Writes the temporary file of `out`: each of `comments` as a `# ` line, the
+/// header "name [unit]" per column, then `rows` with `digits` significant
+/// digits; NumericalError naming the final path if it cannot be written.
+void write_results_csv(const AtomicOutput& out, const std::vector<std::string>& comments,
                        const std::vector<Column>& columns,
                        const std::vector<std::vector<double>>& rows, int digits);
 

@@ -66,9 +66,8 @@ int run(const RunOptions& options) {
     table_rows.back().insert(table_rows.back().end(), rows[k].begin(), rows[k].end());
   }
 
-  write_results_csv(csv_file.temporary_path(),
-                    {scene->description(), describe_model(material, settings)}, table, table_rows,
-                    10);
+  write_results_csv(csv_file, {scene->description(), describe_model(material, settings)}, table,
+                    table_rows, 10);
 
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -317,7 +317,7 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
   entry(prm, "quasi-static strain step", s.spec.quasi_static_strain_step,
         "Strain step of the quasi-static cases: > 0 and at most shear/sample interval. The "
         "default takes about 20 steps per elastic branch between plastic events (docs/sweeps.md).",
-        Patterns::Double(0.0, kMaxQuasiStaticStrainStep));
+        Patterns::Double(0.0, kMaxAqsStrainStep));
   prm.leave_subsection();
 }
 

@@ -55,14 +55,19 @@ std::function<void(const ShearProgress&)> follow(
   };
 }
 
-// The structure of the stationary part of `shear`, when it stored snapshots.
-void analyse_structure(RunRecord& record, const ShearRecord& shear, const ContactLaw& law,
-                       const MicroParameters& prm) {
+// Completes `record` with a finished run: its timings (the part before a
+// resume from a checkpoint included), the structure of its stationary part
+// when it stored snapshots, and the run itself.
+void keep_run(RunRecord& record, ShearRecord&& shear, double resumed_seconds,
+              Clock::time_point start, const ContactLaw& law, const MicroParameters& prm) {
+  record.timings.resumed = resumed_seconds;
+  record.timings.shear = resumed_seconds + seconds_since(start);
   const std::vector<Snapshot> stationary = stationary_snapshots(shear.result);
   if (stationary.size() >= 2) {
     record.structure = analyse_snapshots(stationary, shear.final_particles.radius,
                                          shear.final_box.side(), law, prm.structure);
   }
+  record.shear = std::move(shear);
 }
 
 }  // namespace
@@ -124,10 +129,7 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   shear.result = run_shear(flow, *integrator, prm.protocol, follow(progress), checkpointing);
   shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();
-  record.timings.resumed = resume ? resume->seconds : 0.0;
-  record.timings.shear = record.timings.resumed + seconds_since(start);
-  analyse_structure(record, shear, *law, prm);
-  record.shear = std::move(shear);
+  keep_run(record, std::move(shear), resume ? resume->seconds : 0.0, start, *law, prm);
 }
 
 void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters& prm,
@@ -148,10 +150,7 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
   shear.final_box = r.final_box;
   shear.quasi_static = QuasiStaticRecord{settings.strain_step, settings.relative_force,
                                          r.stress_drops, r.unconverged_steps};
-  record.timings.resumed = resume ? resume->seconds : 0.0;
-  record.timings.shear = record.timings.resumed + seconds_since(start);
-  analyse_structure(record, shear, *law, prm);
-  record.shear = std::move(shear);
+  keep_run(record, std::move(shear), resume ? resume->seconds : 0.0, start, *law, prm);
 }
 
 void write_record(AtomicOutput& out, RunRecord& record, double total_seconds) {

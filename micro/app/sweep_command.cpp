@@ -295,11 +295,11 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
     for (std::size_t k : mine) {
       // A case resumed from its checkpoint reports its first progress part-way:
       // that part was run before, and must not speed up the time left.
-      bool first_report = true;
+      bool carry = std::filesystem::exists(checkpoint_file(plan.cases[k]));
       try {
         run_case(sweep, plan.cases[k], workers, [&](double fraction) {
-          if (first_report) bar.carry(fraction * cost[k]);
-          first_report = false;
+          if (carry) bar.carry(fraction * cost[k]);
+          carry = false;
           bar.update(finished + fraction * cost[k]);
         });
       } catch (const std::exception& e) {

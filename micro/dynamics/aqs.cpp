@@ -20,8 +20,8 @@ constexpr int kElasticIterations = 6;
 }  // namespace
 
 void AqsSettings::validate() const {
-  require(strain_step > 0.0 && strain_step <= 0.01,
-          fmt::format("AQS strain step = {} is outside (0, 0.01]", strain_step));
+  require(strain_step > 0.0 && strain_step <= kMaxAqsStrainStep,
+          fmt::format("AQS strain step = {} is outside (0, {}]", strain_step, kMaxAqsStrainStep));
   require(strain >= 20 * strain_step,
           fmt::format("AQS strain = {} is shorter than 20 strain steps", strain));
   require(min_stationary_strain >= 20 * strain_step && min_stationary_strain <= strain,
@@ -31,8 +31,7 @@ void AqsSettings::validate() const {
   require(max_iterations >= 1, "AQS needs at least one Newton iteration per step");
 }
 
-AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings,
-                  const AqsObserver& observer) {
+AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings, const AqsObserver& observer) {
   settings.validate();
   const auto clock_start = std::chrono::steady_clock::now();
   IncrementalMinimiser minimiser({.relative_force = settings.relative_force,
@@ -58,12 +57,14 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings,
     system.advance_strain(dg);
     // The last step's displacement as the guess, unless it was a plastic event
     // (many iterations): then its rearrangement says nothing about this step.
-    for (std::size_t a = 0; a < n; ++a) u[a] = elastic_before ? Vec3(dg * previous[a]) : Vec3::Zero();
+    for (std::size_t a = 0; a < n; ++a)
+      u[a] = elastic_before ? Vec3(dg * previous[a]) : Vec3::Zero();
     int iterations = 0;
     all_energies.clear();
     for (;;) {
-      const IncrementalResult r = minimiser.minimise(
-          system, {}, no_drag, 1.0, u, observer ? &energies : nullptr, settings.max_iterations - iterations);
+      const IncrementalResult r =
+          minimiser.minimise(system, {}, no_drag, 1.0, u, observer ? &energies : nullptr,
+                             settings.max_iterations - iterations);
       iterations += r.iterations;
       if (observer) {
         const double offset = all_energies.empty() ? 0.0 : all_energies.back();

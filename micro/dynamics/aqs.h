@@ -29,19 +29,23 @@
 
 namespace softglass::micro {
 
+/// Δγ by default (docs/sweeps.md: why, and what it costs) and at most.
+inline constexpr double kDefaultAqsStrainStep = 2e-4;
+inline constexpr double kMaxAqsStrainStep = 0.01;
+
 struct AqsSettings {
-  double strain_step = 2e-4;       // Δγ
-  double strain = 2.0;             // total strain sheared
-  double min_stationary_strain = 0.5;  // for the steady-state analysis
-  double relative_force = 1e-9;    // minimiser: max residual / mean contact force
-  int max_iterations = 2000;       // Newton iterations per strain step
+  double strain_step = kDefaultAqsStrainStep;  // Δγ
+  double strain = 2.0;                         // total strain sheared
+  double min_stationary_strain = 0.5;          // for the steady-state analysis
+  double relative_force = 1e-9;                // minimiser: max residual / mean contact force
+  int max_iterations = 2000;                   // Newton iterations per strain step
 
   void validate() const;
 };
 
 struct AqsResult {
-  TimeSeries series;     // one sample per strain step (viscous = 0)
-  ShearSummary summary;  // stationary means: summary["sigma"] is σ_y
+  TimeSeries series;           // one sample per strain step (viscous = 0)
+  ShearSummary summary;        // stationary means: summary["sigma"] is σ_y
   std::vector<double> energy;  // elastic energy after each step (units E* R³)
   std::size_t steps = 0, newton_iterations = 0, cg_iterations = 0;
   std::size_t stress_drops = 0;  // steps where σ fell (plastic events)

@@ -63,10 +63,29 @@ void write_parts(const std::filesystem::path& path, const Parts& parts,
 }
 
 struct ReadParts {
+  std::string where;
   StoredConfiguration configuration;
   std::vector<double> state, counters;
   TimeSeries series;
   std::vector<Snapshot> snapshots;
+
+  // Entries of /state and /counters, checked: finite, a count, or the worst
+  // error (inf until the first check; NaN or negative, never).
+  double finite_state(std::size_t k) const {
+    return finite(state[k], where, fmt::format("value {} of dataset '/state'", k));
+  }
+  double worst_error(std::size_t k) const {
+    if (!(state[k] >= 0))
+      throw InputError(
+          fmt::format("'{}': worst error = {} in '/state'; allowed: >= 0", where, state[k]));
+    return state[k];
+  }
+  std::size_t count_at(std::size_t k) const {
+    return count(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
+  }
+  double finite_counter(std::size_t k) const {
+    return finite(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
+  }
 };
 
 // The parts of a checkpoint of `kind` with state and counters of the given
@@ -81,7 +100,8 @@ ReadParts read_parts(const H5Group& root, const std::string& where, const char* 
         other ? fmt::format("'{}' is a {}, not a {}", where, root.attribute_string("kind"), kind)
               : fmt::format("'{}' is not a softglass checkpoint", where));
   }
-  ReadParts p{read_configuration(root.group("configuration"), where),
+  ReadParts p{where,
+              read_configuration(root.group("configuration"), where),
               root.read_array("state").data,
               root.read_array("counters").data,
               {},
@@ -92,14 +112,6 @@ ReadParts read_parts(const H5Group& root, const std::string& where, const char* 
   if (root.has_child("snapshots"))
     p.snapshots = read_snapshots(root.group("snapshots"), p.configuration.particles.size(), where);
   return p;
-}
-
-// The worst error is inf until the first check; NaN or negative, never.
-double worst_error(double value, const std::string& where) {
-  if (!(value >= 0))
-    throw InputError(
-        fmt::format("'{}': worst error = {} in '/state'; allowed: >= 0", where, value));
-  return value;
 }
 
 }  // namespace
@@ -147,25 +159,15 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
     seen[static_cast<std::size_t>(label)] = true;
     c.particles.label[i] = static_cast<std::uint32_t>(label);
   }
-  const std::vector<double>& state = parts.state;
-  const std::vector<double>& counters = parts.counters;
-  const auto finite_state = [&](std::size_t k) {
-    return finite(state[k], where, fmt::format("value {} of dataset '/state'", k));
-  };
-  c.start = finite_state(0);
-  c.next_sample = finite_state(1);
-  c.next_check = finite_state(2);
-  c.next_snapshot = finite_state(3);
-  c.worst = worst_error(state[4], where);
-  c.seconds = finite_state(5);
-  const auto counter = [&](std::size_t k) {
-    return count(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
-  };
-  const auto step = [&](std::size_t k) {
-    return finite(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
-  };
-  c.counters = {counter(0), counter(1), counter(2), counter(3), counter(4),
-                counter(5), counter(6), step(7),    step(8)};
+  c.start = parts.finite_state(0);
+  c.next_sample = parts.finite_state(1);
+  c.next_check = parts.finite_state(2);
+  c.next_snapshot = parts.finite_state(3);
+  c.worst = parts.worst_error(4);
+  c.seconds = parts.finite_state(5);
+  c.counters = {parts.count_at(0), parts.count_at(1),       parts.count_at(2),
+                parts.count_at(3), parts.count_at(4),       parts.count_at(5),
+                parts.count_at(6), parts.finite_counter(7), parts.finite_counter(8)};
   c.series = std::move(parts.series);
   c.snapshots = std::move(parts.snapshots);
   return c;
@@ -192,22 +194,16 @@ QuasiStaticCheckpoint read_quasi_static_checkpoint(const std::filesystem::path& 
   QuasiStaticCheckpoint c;
   c.particles = std::move(parts.configuration.particles);  // label order: labels 0 ... N-1
   c.box = parts.configuration.box;
-  const auto finite_state = [&](std::size_t k) {
-    return finite(parts.state[k], where, fmt::format("value {} of dataset '/state'", k));
-  };
-  c.start = finite_state(0);
-  c.next_check = finite_state(1);
-  c.worst = worst_error(parts.state[2], where);
-  c.last_sigma = finite_state(3);
-  c.seconds = finite_state(4);
-  const auto counter = [&](std::size_t k) {
-    return count(parts.counters[k], where, fmt::format("value {} of dataset '/counters'", k));
-  };
-  c.counters.steps = counter(0);
-  c.counters.newton_iterations = counter(1);
-  c.counters.cg_iterations = counter(2);
-  c.stress_drops = counter(3);
-  c.unconverged_steps = counter(4);
+  c.start = parts.finite_state(0);
+  c.next_check = parts.finite_state(1);
+  c.worst = parts.worst_error(2);
+  c.last_sigma = parts.finite_state(3);
+  c.seconds = parts.finite_state(4);
+  c.counters.steps = parts.count_at(0);
+  c.counters.newton_iterations = parts.count_at(1);
+  c.counters.cg_iterations = parts.count_at(2);
+  c.stress_drops = parts.count_at(3);
+  c.unconverged_steps = parts.count_at(4);
   c.series = std::move(parts.series);
   c.snapshots = std::move(parts.snapshots);
   return c;

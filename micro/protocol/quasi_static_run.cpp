@@ -37,14 +37,6 @@ Layout layout(const QuasiStaticSettings& s, const ShearProtocol& p) {
   return l;
 }
 
-// The cell as a checkpoint file holds it (side and one double of strain), so
-// that a continued and a resumed run start their next segment from the same cell.
-LeesEdwardsBox stored_cell(const LeesEdwardsBox& box) {
-  LeesEdwardsBox cell(box.side());
-  cell.set_strain(box.strain());
-  return cell;
-}
-
 // Appends the segment's steps to the run: samples (means over their steps),
 // stress drops and counters.
 void append(const AqsResult& r, const Layout& l, double segment_start,
@@ -101,7 +93,7 @@ QuasiStaticResult run_quasi_static(const Particles& particles, const LeesEdwards
     state = *checkpointing.resume_from;
   } else {
     state.particles = particles;
-    state.box = stored_cell(box);
+    state.box = checkpointed_cell(box);
     state.start = state.box.strain();
     // No check before the stationary window can exist (nor MSER has its 20 samples).
     state.next_check =
@@ -134,7 +126,7 @@ QuasiStaticResult run_quasi_static(const Particles& particles, const LeesEdwards
     const AqsResult r = run_aqs(system, aqs);
     append(r, l, segment_start, state);
     state.particles = system.wrapped_in_label_order();
-    state.box = stored_cell(system.box());
+    state.box = checkpointed_cell(system.box());
     if (protocol.snapshot_interval > 0.0)
       state.snapshots.push_back({state.box.strain(), state.particles.position});
 

@@ -138,6 +138,12 @@ ShearSummary summarise(const TimeSeries& series, double min_stationary_strain) {
   return summary;
 }
 
+LeesEdwardsBox checkpointed_cell(const LeesEdwardsBox& box) {
+  LeesEdwardsBox cell(box.side());
+  cell.set_strain(box.strain());
+  return cell;
+}
+
 bool meets_stopping_rule(const ShearSummary& summary, const ShearProtocol& protocol) {
   bool reliable = summary.transient_resolved && summary.drift <= kMaxDrift;
   for (const char* name : kStoppingObservables) reliable = reliable && summary[name].reliable;
@@ -260,13 +266,9 @@ ShearResult run_shear(OverdampedShear& flow, Integrator& given_integrator,
   };
   const auto checkpoint = [&] {
     finished += segment();
-    // The strain as the file holds it (one double), so that a resumed run
-    // starts from the very same cell.
-    LeesEdwardsBox box(flow.system().box().side());
-    box.set_strain(flow.system().box().strain());
     ShearCheckpoint c{
         flow.system().particles(),
-        box,
+        checkpointed_cell(flow.system().box()),
         start,
         next_sample,
         next_check,

@@ -135,6 +135,11 @@ struct ShearCheckpoint {
   double seconds = 0.0;    // wall time up to the checkpoint
 };
 
+/// The cell as a checkpoint file holds it (side and one double of strain), so
+/// that a run continued past a checkpoint and one resumed from it start their
+/// next part from the very same cell.
+LeesEdwardsBox checkpointed_cell(const LeesEdwardsBox& box);
+
 /// Checkpoints every `every_steps` accepted steps. At each one the run starts
 /// afresh from the checkpoint — new contact system, new integrator, velocities
 /// and history restored — whether or not it was interrupted there, so a run

@@ -139,10 +139,9 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
   for (unsigned k = 0; k < packings; ++k) plan.seeds.push_back(spec.first_seed + k);
   plan.quasi_static = spec.quasi_static;
   plan.quasi_static_strain_step = spec.quasi_static_strain_step;
-  if (!(plan.quasi_static_strain_step > 0 &&
-        plan.quasi_static_strain_step <= kMaxQuasiStaticStrainStep))
+  if (!(plan.quasi_static_strain_step > 0 && plan.quasi_static_strain_step <= kMaxAqsStrainStep))
     throw InputError(fmt::format("sweep: 'quasi-static strain step' = {}; allowed: (0, {}]",
-                                 plan.quasi_static_strain_step, kMaxQuasiStaticStrainStep));
+                                 plan.quasi_static_strain_step, kMaxAqsStrainStep));
 
   plan.directory = spec.directory;
   plan.table_csv = spec.directory / "flow_curve.csv";

@@ -21,12 +21,9 @@
 #include <string>
 #include <vector>
 
-namespace softglass::micro {
+#include "micro/dynamics/aqs.h"
 
-/// Δγ of the quasi-static cases (docs/sweeps.md: why, and what it costs).
-inline constexpr double kQuasiStaticStrainStep = 2e-4;
-/// The largest Δγ allowed (dynamics/aqs.h).
-inline constexpr double kMaxQuasiStaticStrainStep = 0.01;
+namespace softglass::micro {
 
 /// How long each run of a preset shears: the stopping rule of
 /// protocol/shear_run.h (subsection `shear` of a run file).
@@ -62,7 +59,7 @@ struct SweepSpec {
   std::filesystem::path directory = "sweep";
   std::size_t checkpoint_steps = 20000;  // accepted steps between checkpoints (0: none)
   bool quasi_static = true;              // a quasi-static case per (φ, seed)
-  double quasi_static_strain_step = kQuasiStaticStrainStep;
+  double quasi_static_strain_step = kDefaultAqsStrainStep;
   std::string scheme = "auto";  // the runs' integrator: only the cost estimates use it
 };
 

@@ -140,10 +140,14 @@ TEST(FlowCurveTable, SetsQuasiStaticRowsApartFromTheCurves) {
   EXPECT_NO_THROW(make_packing_resampler(
       with, read_packing_runs(CsvTable::parse(testing::runs_csv(s), "runs.csv")), "runs.csv"));
 
-  // φ within 1e-9 are one φ: two quasi-static rows for it are one too many.
-  const std::string row = text.substr(text.find("\n0.7,0.000000e+00,") + 1);
-  const std::string twin = "0.7000000001" + row.substr(3, row.find('\n') - 2);
-  expect_contains(refusal(text + twin), {"a second quasi-static row", "phi = 0.7"});
+  // φ within 1e-9 are one φ: a second row of it at the same γ̃, quasi-static
+  // or not, is one too many.
+  for (const char* rate : {"0.000000e+00", "1.000000e-09"}) {
+    const std::string row = text.substr(text.find(std::string("\n0.7,") + rate + ",") + 1);
+    const std::string twin = "0.7000000001" + row.substr(3, row.find('\n') - 2);
+    expect_contains(refusal(text + twin),
+                    {"state point phi = 0.7000000001, gamma~ = ", "already on line"});
+  }
 }
 
 TEST(FlowCurveTable, RefusesTooFewShearRatesPerVolumeFraction) {
