@@ -108,25 +108,43 @@ def flow_curves(points, phis, quantity, units, directory, name, title):
     save(fig, directory, name)
 
 
-def collapse(points, constants, directory, name):
-    """Figs. 4a-c: Q/Q_y against gamma~/gamma_y^2, all phi, on 1 + k x^(1/2)."""
+def collapse(points, phis, constants, directory, name):
+    """Figs. 4a-c: sigma/sigma_y, N1/sigma_y and -N2/sigma_y against gamma~/gamma_y^2,
+    all phi; sigma on 1 + k x^(1/2), the normal stresses on each phi's own
+    plateau N_y/sigma_y + k' x^(1/2) (bridge/fit/universal_law.h)."""
     # A quantity whose universal fit failed has no constant (and NaN ratios): no panel.
     panels = [(q, c) for q, c in (("sigma", "k"), ("N1", "k_N1"), ("N2", "k_N2"))
               if has(points, f"{q}_ratio [1]") and constant(constants, c) is not None]
     fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels), 4), squeeze=False)
     groups = by_phi(points)
+    plateau_rows = {number(r, "phi [1]"): r for r in phis}
     x_all = [number(r, "collapse_rate [1]") for r in points]
     grid = log_grid(min(x_all), max(x_all))
-    symbol = {"sigma": "σ/σ_y", "N1": "N1/N1_y", "N2": "N2/N2_y"}
+    symbol = {"sigma": "σ/σ_y", "N1": "N1/σ_y", "N2": "−N2/σ_y"}
     letter = {"sigma": "k", "N1": "k′", "N2": "k″"}
+    sign = {"sigma": 1, "N1": 1, "N2": -1}
     for ax, (quantity, name_k) in zip(axes[0], panels):
+        k, error = constant(constants, name_k)
         for colour, (phi, rows) in zip(colours(len(groups)), groups.items()):
             ax.plot([number(r, "collapse_rate [1]") for r in rows],
                     [number(r, f"{quantity}_ratio [1]") for r in rows], "o", ms=4, color=colour,
                     label=f"φ = {phi:g}")
-        k, error = constant(constants, name_k)
-        ax.plot(grid, [1 + k * math.sqrt(x) for x in grid], "k-", lw=1,
-                label=f"1 + {letter[quantity]} x^½, {letter[quantity]} = {k:.3g} ± {error:.2g}")
+            if quantity != "sigma":
+                row = plateau_rows[phi]
+                plateau = sign[quantity] * number(row, f"{quantity}_universal_yield [E*]") \
+                    / number(row, "sigma_universal_yield [E*]")
+                ax.plot(grid, [plateau + k * math.sqrt(x) for x in grid], "-", color=colour,
+                        lw=0.8)
+        if quantity == "sigma":
+            ax.plot(grid, [1 + k * math.sqrt(x) for x in grid], "k-", lw=1,
+                    label=f"1 + k x^½, k = {k:.3g} ± {error:.2g}")
+        else:
+            ax.plot(grid, [k * math.sqrt(x) for x in grid], "k--", lw=1,
+                    label=f"{letter[quantity]} x^½, {letter[quantity]} = {k:.3g} ± {error:.2g} "
+                          "(thin: φ's plateau + it)")
+            # A plateau below zero sends its line down to -inf: the axis follows the data.
+            shown = [v for v in (number(r, f"{quantity}_ratio [1]") for r in points) if v > 0]
+            ax.set_ylim(min(shown) / 2, max(shown) * 2)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("γ̃ / γ_y²")
@@ -143,7 +161,7 @@ def fit_figures(law, directory):
     base = os.path.basename(stem)
     flow_curves(points, phis, "sigma", "E*", directory, f"{base}_flow_curves.png",
                 "flow curves and Herschel–Bulkley fits (cf. Seth et al. 2011, Fig. 2a)")
-    collapse(points, constants, directory, f"{base}_collapse.png")
+    collapse(points, phis, constants, directory, f"{base}_collapse.png")
     for quantity in ("N1", "N2"):
         if has(points, f"{quantity} [E*]"):
             flow_curves(points, phis, quantity, "E*", directory, f"{base}_{quantity}.png",

@@ -127,8 +127,8 @@ void print_fit_report(const SweepAnalysis& a, const std::string& source) {
       "\nuniversal laws, one constant for every volume fraction   this sweep      the paper\n");
   const std::tuple<Quantity, const char*, Estimate> rows[] = {
       {Quantity::sigma, "k    sigma/sigma_y = 1 + k (gamma~/gamma_y^2)^1/2", PaperValues::k},
-      {Quantity::N1, "k'   N1/N1_y       = 1 + k' (gamma~/gamma_y^2)^1/2", PaperValues::k_N1},
-      {Quantity::N2, "k''  N2/N2_y       = 1 + k'' (gamma~/gamma_y^2)^1/2", PaperValues::k_N2}};
+      {Quantity::N1, "k'   N1/sigma_y    = N1_y/sigma_y + k' (...)^1/2", PaperValues::k_N1},
+      {Quantity::N2, "k''  -N2/sigma_y   = -N2_y/sigma_y + k'' (...)^1/2", PaperValues::k_N2}};
   for (const auto& [q, name, paper] : rows) {
     if (!a.estimate.fit.k[index(q)]) continue;
     const auto& collapse = a.collapse[index(q)];

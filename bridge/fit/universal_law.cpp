@@ -8,15 +8,18 @@
 
 namespace softglass::bridge {
 
-namespace {
-
-// Q_ij = a_j + k (α_j + β_j a_j) √x_ij; parameters (a_0 … a_{J−1}, k).
-UniversalFit fit_collapse(const std::vector<const Curve*>& curves, const std::vector<double>& alpha,
-                          const std::vector<double>& beta) {
+// Q_ij = a_j + k α_j √x_ij with α_j = sign G0_j; parameters (a_0 … a_{J−1}, k).
+// Linear, so Levenberg–Marquardt ends in a step or two from any start; it is
+// used for its goodness of fit and covariance, shared with the other fits.
+UniversalFit fit_universal_law(const std::vector<const Curve*>& curves,
+                               const std::vector<double>& modulus, double sign) {
   const auto groups = static_cast<Eigen::Index>(curves.size());
   require(groups >= 1, "a universal fit needs at least one volume fraction");
+  require(modulus.size() == curves.size(), "a universal fit needs one G0 per volume fraction");
   Eigen::Index points = 0;
   for (const Curve* c : curves) points += static_cast<Eigen::Index>(c->size());
+  std::vector<double> alpha;
+  for (double g : modulus) alpha.push_back(sign * g);
 
   LeastSquaresProblem problem;
   problem.parameters = groups + 1;
@@ -26,21 +29,18 @@ UniversalFit fit_collapse(const std::vector<const Curve*>& curves, const std::ve
     Eigen::Index row = 0;
     for (Eigen::Index j = 0; j < groups; ++j) {
       const Curve& c = *curves[j];
-      const double slope = k * (alpha[j] + beta[j] * p(j));
       for (std::size_t i = 0; i < c.size(); ++i, ++row)
-        r(row) = (c.y[i] - p(j) - slope * std::sqrt(c.x[i])) / c.se[i];
+        r(row) = (c.y[i] - p(j) - k * alpha[j] * std::sqrt(c.x[i])) / c.se[i];
     }
   };
-  problem.jacobian = [&](const Eigen::VectorXd& p, Eigen::MatrixXd& jac) {
+  problem.jacobian = [&](const Eigen::VectorXd&, Eigen::MatrixXd& jac) {
     jac.setZero();
-    const double k = p(groups);
     Eigen::Index row = 0;
     for (Eigen::Index j = 0; j < groups; ++j) {
       const Curve& c = *curves[j];
       for (std::size_t i = 0; i < c.size(); ++i, ++row) {
-        const double root = std::sqrt(c.x[i]);
-        jac(row, j) = -(1.0 + k * beta[j] * root) / c.se[i];
-        jac(row, groups) = -(alpha[j] + beta[j] * p(j)) * root / c.se[i];
+        jac(row, j) = -1.0 / c.se[i];
+        jac(row, groups) = -alpha[j] * std::sqrt(c.x[i]) / c.se[i];
       }
     }
   };
@@ -51,7 +51,7 @@ UniversalFit fit_collapse(const std::vector<const Curve*>& curves, const std::ve
   for (Eigen::Index j = 0; j < groups; ++j) {
     const SquareRootLaw law = fit_square_root_law(*curves[j]);
     start(j) = law.intercept;
-    own_k.push_back(law.slope / (alpha[j] + beta[j] * law.intercept));
+    own_k.push_back(law.slope / alpha[j]);
   }
   std::nth_element(own_k.begin(), own_k.begin() + groups / 2, own_k.end());
   start(groups) = own_k[groups / 2];
@@ -64,20 +64,6 @@ UniversalFit fit_collapse(const std::vector<const Curve*>& curves, const std::ve
   fit.converged = solved.converged;
   fit.status = solved.status;
   return fit;
-}
-
-}  // namespace
-
-UniversalFit fit_universal_stress(const std::vector<const Curve*>& curves,
-                                  const std::vector<double>& modulus) {
-  return fit_collapse(curves, modulus, std::vector<double>(curves.size(), 0.0));
-}
-
-UniversalFit fit_universal_normal(const std::vector<const Curve*>& curves,
-                                  const std::vector<double>& yield_strain) {
-  std::vector<double> beta;
-  for (double g : yield_strain) beta.push_back(1.0 / g);
-  return fit_collapse(curves, std::vector<double>(curves.size(), 0.0), beta);
 }
 
 }  // namespace softglass::bridge

@@ -54,7 +54,8 @@ std::string law_text(const Law& law) {
   out +=
       "  subsection universal\n"
       "    # sigma/sigma_y = 1 + k (gamma~/gamma_y^2)^(1/2), one k for every volume fraction;\n"
-      "    # N1/N1_y and N2/N2_y alike with k N1 (the paper's k') and k N2 (k'').\n"
+      "    # N1/sigma_y = N1_y/sigma_y + k N1 (...)^(1/2) (the paper's k'), and -N2/sigma_y\n"
+      "    # = -N2_y/sigma_y + k N2 (...)^(1/2) (k''), with one plateau N_y per volume fraction.\n"
       "    # The paper (Seth et al. 2011): k = 80 +- 3, k' = 20 +- 2, k'' = 26 +- 2.\n";
   const std::pair<Quantity, const char*> constants[] = {
       {Quantity::sigma, "k"}, {Quantity::N1, "k N1"}, {Quantity::N2, "k N2"}};

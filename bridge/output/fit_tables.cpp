@@ -108,7 +108,8 @@ std::string points_table(const SweepAnalysis& a, const std::vector<std::string>&
         if (!has(a, q)) continue;
         const Curve& c = *g.curves[index(q)];
         w << c.y[i] << (*g.table_errors[index(q)])[i] << c.se[i] << (*f.hb[index(q)])(rates[i]);
-        if (q != Quantity::force) w << c.y[i] / *f.universal_yield[index(q)];
+        if (q != Quantity::force)
+          w << universal_sign(q) * c.y[i] / *f.universal_yield[index(Quantity::sigma)];
       }
       w.end_row();
     }

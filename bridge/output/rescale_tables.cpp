@@ -24,7 +24,7 @@ std::string rescaled_points_table(const std::vector<MeasuredCurve>& curves,
       w << c.label << c.shear_rate[i] << c.stress[i] << (r.used[i] ? 1.0 : 0.0)
         << r.collapse_rate[i] << r.stress_ratio[i] << r.residual[i];
       if (normal) {
-        // Curves without an N1 law get zeros: N1/N1_y is undefined there.
+        // Curves without an N1 law get zeros: N1/τ_y and its residual are undefined there.
         const bool own = r.N1_ratio.has_value();
         w << (own ? (*c.N1)[i] : 0.0) << (own ? (*r.N1_ratio)[i] : 0.0)
           << (own ? (*r.N1_residual)[i] : 0.0);

@@ -8,7 +8,8 @@
 // table has quasi-static (γ̃ = 0) rows, their σ (NaN for a φ without one).
 // fit, per state point (<stem>_points.csv): the table's values and standard
 // errors, the smoothed errors used as weights, the Herschel–Bulkley model, and
-// the collapse coordinates γ̃/γ_y² and Q/Q_y of the universal laws (Fig. 4).
+// the collapse coordinates γ̃/γ_y² and σ/σ_y, N1/σ_y, −N2/σ_y of the universal
+// laws (Fig. 4).
 // fit, constants (<stem>_constants.csv): k, k′, k″ and the mean exponent with
 // errors, the paper's values, and the collapse test.
 // rescale, per point (<stem>.csv) and per curve (<stem>_curves.csv).

@@ -17,7 +17,8 @@ std::optional<double> pick(const std::vector<double>& list, std::size_t j) {
   if (list.empty()) return std::nullopt;
   return list.size() == 1 ? list[0] : list[j];
 }
-// Least squares of the relative residuals (y_i − m_i(p))/y_i over log-parameters p;
+// Least squares of the relative residuals (y_i − m_i(p))/y_i over parameters p
+// (positive ones in logarithm);
 // `model` fills m(p) and ∂m/∂p. Returns p and its standard errors (χ²/dof scaled).
 struct RelativeFit {
   Eigen::VectorXd p, error;
@@ -160,33 +161,37 @@ RescaledCurve place_curve(const MeasuredCurve& c, std::size_t j, const RescaleSe
   }
   out.rms_residual = rms(out.residual, out.used);
 
+  // N1 = N1_y + k′ τ_y √x (fit/universal_law.h): the plateau N1_y is fitted, and
+  // may come out of either sign; points with N1 ≤ 0 have no relative residual.
   if (c.N1) {
-    std::vector<double> n1, root;
+    std::vector<double> n1, rate_term;
     for (std::size_t i = 0; i < n; ++i) {
       if (!out.used[i] || !((*c.N1)[i] > 0)) continue;
       n1.push_back((*c.N1)[i]);
-      root.push_back(std::sqrt(out.collapse_rate[i]));
+      rate_term.push_back(s.k_N1 * tau_y * std::sqrt(out.collapse_rate[i]));
     }
     if (n1.size() >= 2) {
-      std::vector<double> ratios;
-      for (std::size_t i = 0; i < n1.size(); ++i)
-        ratios.push_back(n1[i] / (1.0 + s.k_N1 * root[i]));
-      std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+      std::vector<double> plateaus;
+      for (std::size_t i = 0; i < n1.size(); ++i) plateaus.push_back(n1[i] - rate_term[i]);
+      std::nth_element(plateaus.begin(), plateaus.begin() + plateaus.size() / 2, plateaus.end());
       const RelativeFit fit = fit_relative(
-          n1, Eigen::VectorXd::Constant(1, std::log(ratios[ratios.size() / 2])),
+          n1, Eigen::VectorXd::Constant(1, plateaus[plateaus.size() / 2]),
           [&](const Eigen::VectorXd& p, Eigen::VectorXd& m, Eigen::MatrixXd& dm) {
-            for (std::size_t i = 0; i < n1.size(); ++i)
-              dm(i, 0) = m(i) = std::exp(p(0)) * (1.0 + s.k_N1 * root[i]);
+            for (std::size_t i = 0; i < n1.size(); ++i) {
+              m(i) = p(0) + rate_term[i];
+              dm(i, 0) = 1.0;
+            }
           },
           what + " (N1)");
-      const double n1_yield = std::exp(fit.p(0));
-      out.N1_yield = Estimate{n1_yield, n1_yield * fit.error(0)};
+      const double n1_yield = fit.p(0);
+      out.N1_yield = Estimate{n1_yield, fit.error(0)};
       out.N1_ratio.emplace();
       out.N1_residual.emplace();
       for (std::size_t i = 0; i < n; ++i) {
-        out.N1_ratio->push_back((*c.N1)[i] / n1_yield);
+        const double N1 = (*c.N1)[i];
+        out.N1_ratio->push_back(N1 / tau_y);
         out.N1_residual->push_back(
-            out.N1_ratio->back() / (1.0 + s.k_N1 * std::sqrt(out.collapse_rate[i])) - 1.0);
+            (N1 - n1_yield - s.k_N1 * tau_y * std::sqrt(out.collapse_rate[i])) / N1);
       }
       out.N1_rms_residual = rms(*out.N1_residual, out.used);
     }

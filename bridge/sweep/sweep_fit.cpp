@@ -34,32 +34,21 @@ SweepFitOutcome fit_sweep(const Sweep& sweep) {
     f.yield_strain = f.hb[index(Quantity::sigma)]->yield / f.modulus;
   }
 
-  // The universal stress law, then the normal laws on its yield strains.
-  std::vector<const Curve*> curves;
-  std::vector<double> moduli, yield_strains;
-  for (const PhiGroup& g : sweep.groups) {
-    curves.push_back(&*g.curves[index(Quantity::sigma)]);
-    moduli.push_back(g.modulus.value);
-  }
-  const UniversalFit& stress =
-      diagnostics.universal[index(Quantity::sigma)].emplace(fit_universal_stress(curves, moduli));
-  fit.k[index(Quantity::sigma)] = stress.converged ? stress.k : kNaN;
-  for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
-    GroupFit& f = fit.groups[j];
-    f.universal_yield[index(Quantity::sigma)] = stress.converged ? stress.yield[j] : kNaN;
-    f.universal_yield_strain = *f.universal_yield[index(Quantity::sigma)] / f.modulus;
-    yield_strains.push_back(f.universal_yield_strain);
-  }
-  for (Quantity q : {Quantity::N1, Quantity::N2}) {
+  // The universal laws, σ first: its yield stresses give the yield strains.
+  std::vector<double> moduli;
+  for (const PhiGroup& g : sweep.groups) moduli.push_back(g.modulus.value);
+  for (Quantity q : kStresses) {
     if (!sweep.present[index(q)]) continue;
-    curves.clear();
+    std::vector<const Curve*> curves;
     for (const PhiGroup& g : sweep.groups) curves.push_back(&*g.curves[index(q)]);
-    const UniversalFit& normal =
-        diagnostics.universal[index(q)].emplace(fit_universal_normal(curves, yield_strains));
-    fit.k[index(q)] = normal.converged ? normal.k : kNaN;
+    const UniversalFit& law = diagnostics.universal[index(q)].emplace(
+        fit_universal_law(curves, moduli, universal_sign(q)));
+    fit.k[index(q)] = law.converged ? law.k : kNaN;
     for (std::size_t j = 0; j < sweep.groups.size(); ++j)
-      fit.groups[j].universal_yield[index(q)] = normal.converged ? normal.yield[j] : kNaN;
+      fit.groups[j].universal_yield[index(q)] = law.converged ? law.yield[j] : kNaN;
   }
+  for (GroupFit& f : fit.groups)
+    f.universal_yield_strain = *f.universal_yield[index(Quantity::sigma)] / f.modulus;
 
   // Each φ's own constant from its m = ½ law: the collapse checked φ by φ.
   for (std::size_t j = 0; j < sweep.groups.size(); ++j) {
@@ -67,9 +56,7 @@ SweepFitOutcome fit_sweep(const Sweep& sweep) {
     for (Quantity q : kStresses) {
       if (!sweep.present[index(q)]) continue;
       const SquareRootLaw law = fit_square_root_law(*sweep.groups[j].curves[index(q)]);
-      f.own_k[index(q)] = q == Quantity::sigma
-                              ? law.slope / f.modulus
-                              : law.slope * f.universal_yield_strain / law.intercept;
+      f.own_k[index(q)] = universal_sign(q) * law.slope / f.modulus;
     }
   }
 

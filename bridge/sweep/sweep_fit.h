@@ -5,7 +5,7 @@
 //   - Herschel–Bulkley fits Q = Q_y + k_Q γ̃^m of σ, N1, N2 and f_m (those present);
 //   - the yield strain γ_y = σ_y/G0 from the σ fit;
 //   - the φ's own universal constant from its m = ½ law Q = a + c √γ̃:
-//     c/G0 for σ, c γ_y/a for N1 and N2 (a check of universality, φ by φ);
+//     c/G0 for σ and N1, −c/G0 for N2 (a check of universality, φ by φ);
 //   - with structure data, the paper's force law f_m = f_y + k_f γ̃^½ (its
 //     Fig. 3c; exponent fixed at ½, the free exponent being the HB fit's).
 // Over all φ:
@@ -29,6 +29,12 @@
 namespace softglass::bridge {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The sign of a universal law's rate term: −1 for N2, which falls with the
+/// rate, so that k, k′ and k″ are all positive (fit/universal_law.h).
+inline double universal_sign(Quantity q) {
+  return q == Quantity::N2 ? -1.0 : 1.0;
+}
 
 struct GroupFit {
   double phi = 0.0;

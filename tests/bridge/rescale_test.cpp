@@ -18,7 +18,7 @@ namespace {
 
 using testing::expect_contains;
 
-// τ = τ_y (1 + k √(γ̇ η_s/(E* γ_y²))), N1 = N1_y (1 + k′ …), 1e-3 … 1e3 1/s,
+// τ = τ_y (1 + k √(γ̇ η_s/(E* γ_y²))), N1 = N1_y + k′ τ_y √(…), 1e-3 … 1e3 1/s,
 // with 2 % relative noise.
 struct Sample {
   double tau_y = 100.0, gamma_y = 0.03, modulus = 40e3, viscosity = 1e-3, n1_yield = 40.0;
@@ -34,7 +34,7 @@ MeasuredCurve measured(const Sample& s, std::uint64_t seed, double noise = 0.02)
     const double root = std::sqrt(rate * s.viscosity / s.modulus) / s.gamma_y;
     c.shear_rate.push_back(rate);
     c.stress.push_back(s.tau_y * (1 + 80 * root) * (1 + noise * normal(rng)));
-    c.N1->push_back(s.n1_yield * (1 + 20 * root) * (1 + noise * normal(rng)));
+    c.N1->push_back((s.n1_yield + 20 * s.tau_y * root) * (1 + noise * normal(rng)));
   }
   return c;
 }

@@ -24,9 +24,9 @@ double SyntheticTruth::value(std::size_t j, Quantity q, double g) const {
     case Quantity::sigma:
       return sigma(j, g);
     case Quantity::N1:
-      return normal_yield(j, q) * (1.0 + k_N1 * std::sqrt(g) / yield_strain[j]);
+      return normal_yield(j, q) + k_N1 * sigma_yield(j) * std::sqrt(g) / yield_strain[j];
     case Quantity::N2:
-      return normal_yield(j, q) * (1.0 + k_N2 * std::sqrt(g) / yield_strain[j]);
+      return normal_yield(j, q) - k_N2 * sigma_yield(j) * std::sqrt(g) / yield_strain[j];
     case Quantity::force:
       return modulus[j] * (force_yield + force_slope * std::sqrt(g));
   }

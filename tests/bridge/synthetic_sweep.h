@@ -3,8 +3,8 @@
 //
 // Truth, per volume fraction φ_j with shear modulus G0_j and yield strain γ_y,j:
 //     σ_y = G0 γ_y,                σ   = σ_y (1 + k  √γ̃ / γ_y)
-//     N1_y = r1 σ_y,               N1  = N1_y (1 + k′ √γ̃ / γ_y)
-//     N2_y = r2 σ_y,               N2  = N2_y (1 + k″ √γ̃ / γ_y)
+//     N1_y = r1 σ_y,               N1  = N1_y + k′ σ_y √γ̃ / γ_y
+//     N2_y = r2 σ_y,               N2  = N2_y − k″ σ_y √γ̃ / γ_y
 //     f_m = f_y + k_f √γ̃ with f_y = c_y G0, k_f = c_k G0,
 // i.e. Herschel–Bulkley laws with m = ½ and k_σ = k G0. Every run (φ, γ̃, seed)
 // draws each value with an independent Gaussian relative error; every packing
