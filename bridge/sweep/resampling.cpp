@@ -142,15 +142,28 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
     }
   }
 
+  // Quasi-static runs (γ̃ = 0) are not resampled, as they are not fitted
+  // (sweep.h), but are checked against their rows like the others.
+  std::vector<std::vector<double>> quasi_static(sweep.groups.size());
   for (const PackingRun& run : runs) {
-    if (run.gamma_tilde == 0.0) continue;  // quasi-static runs: not fitted (sweep.h)
     const std::size_t j = find_group(sweep, run.phi);
-    const std::size_t i = j < sweep.groups.size() ? find_rate(sweep.groups[j], run.gamma_tilde) : 0;
-    if (j == sweep.groups.size() || i == sweep.groups[j].lines.size()) {
+    const bool at_rest = run.gamma_tilde == 0.0;
+    bool known = j < sweep.groups.size();
+    std::size_t i = 0;
+    if (known && at_rest) known = sweep.groups[j].quasi_static.has_value();
+    if (known && !at_rest) {
+      i = find_rate(sweep.groups[j], run.gamma_tilde);
+      known = i < sweep.groups[j].lines.size();
+    }
+    if (!known) {
       throw InputError(
           fmt::format("{}, line {}: phi = {}, gamma~ = {} is not a state point of "
                       "the flow-curve table",
                       source, run.line, run.phi, run.gamma_tilde));
+    }
+    if (at_rest) {
+      quasi_static[j].push_back(*run.values[index(Quantity::sigma)]);
+      continue;
     }
     for (Quantity q : kAllQuantities) {
       if (!redrawn[index(q)]) continue;
@@ -183,6 +196,18 @@ std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,
               "(line {}) says {:.6g}: are the two tables from the same sweep?",
               source, g.phi, c.x[i], column_name(q), m, g.lines[i], c.y[i]));
         }
+      }
+    }
+    if (const auto& row = g.quasi_static) {
+      const Estimate sigma = *row->values[index(Quantity::sigma)];
+      const std::vector<double>& s = quasi_static[j];
+      if (s.size() != row->packings || std::abs(mean(s) - sigma.value) > 0.01 * sigma.error) {
+        throw InputError(fmt::format(
+            "{}: {} quasi-static run(s) at phi = {}{} where the flow-curve table (line {}) "
+            "averages {} packings to sigma = {:.6g}: are the two tables from the same sweep?",
+            source, s.size(), g.phi,
+            s.empty() ? "" : fmt::format(" average sigma = {:.6g}", mean(s)), row->line,
+            row->packings, sigma.value));
       }
     }
     for (const auto& [seed, values] : moduli[j]) groups[j].moduli.push_back(mean(values));

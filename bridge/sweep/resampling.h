@@ -54,9 +54,10 @@ class Resampler {
 
 std::unique_ptr<Resampler> make_parametric_resampler(const Sweep& sweep);
 
-/// Quasi-static runs (γ̃ = 0) are skipped: they are not fitted.
+/// Quasi-static runs (γ̃ = 0) are checked against their rows but not resampled:
+/// they are not fitted.
 /// InputError unless the runs match the sweep: every run at a state point of
-/// the table, as many runs as the table's packings (at least 2) at every point,
+/// the table, as many runs as the table's packings at every point (at least 2 at γ̃ > 0),
 /// at least 2 packings with a G0 per φ, the same quantities, and run means equal
 /// to the table's values (within a hundredth of their standard errors).
 std::unique_ptr<Resampler> make_packing_resampler(const Sweep& sweep,

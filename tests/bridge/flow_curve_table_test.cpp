@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <regex>
 
 #include "bridge/io/flow_curve_table.h"
@@ -109,7 +110,8 @@ TEST(FlowCurveTable, RefusesDegenerateTablesNamingTheProblem) {
 
 // A sweep's quasi-static rows (γ̃ = 0, one per φ) are read, kept out of the
 // curves and of G0 — the sweep is that of the table without them — and their
-// stresses kept beside the curves; the companion's quasi-static runs are skipped.
+// stresses kept beside the curves; the companion's quasi-static runs are
+// checked against them but not resampled.
 TEST(FlowCurveTable, SetsQuasiStaticRowsApartFromTheCurves) {
   const testing::SyntheticTruth truth;
   const testing::SyntheticSweep plain = testing::make_synthetic_sweep(truth, 1);
@@ -137,8 +139,30 @@ TEST(FlowCurveTable, SetsQuasiStaticRowsApartFromTheCurves) {
     const Estimate sigma = *a.quasi_static->values[index(Quantity::sigma)];
     EXPECT_NEAR(sigma.value, truth.sigma_yield(j), 5 * sigma.error) << "the yield stress";
   }
-  EXPECT_NO_THROW(make_packing_resampler(
-      with, read_packing_runs(CsvTable::parse(testing::runs_csv(s), "runs.csv")), "runs.csv"));
+  const std::vector<PackingRun> runs =
+      read_packing_runs(CsvTable::parse(testing::runs_csv(s), "runs.csv"));
+  EXPECT_NO_THROW(make_packing_resampler(with, runs, "runs.csv"));
+  const auto refusal_of = [&](const Sweep& sweep, const std::vector<PackingRun>& companion) {
+    try {
+      make_packing_resampler(sweep, companion, "runs.csv");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "companion accepted";
+    return std::string();
+  };
+  const auto at_rest = [](const PackingRun& r) { return r.gamma_tilde == 0.0; };
+  const std::size_t first =
+      static_cast<std::size_t>(std::find_if(runs.begin(), runs.end(), at_rest) - runs.begin());
+  ASSERT_LT(first, runs.size());
+  std::vector<PackingRun> shifted = runs;
+  *shifted[first].values[index(Quantity::sigma)] *= 1.5;
+  expect_contains(refusal_of(with, shifted),
+                  {"quasi-static run(s) at phi = 0.7", "average sigma", "same sweep"});
+  std::vector<PackingRun> missing = runs;
+  missing.erase(missing.begin() + static_cast<std::ptrdiff_t>(first));
+  expect_contains(refusal_of(with, missing), {"quasi-static run(s) at phi = 0.7", "same sweep"});
+  expect_contains(refusal_of(without, runs), {"gamma~ = 0 is not a state point"});
 
   // φ within 1e-9 are one φ: a second row of it at the same γ̃, quasi-static
   // or not, is one too many.
