@@ -172,34 +172,53 @@ def fit_figures(law, directory):
 
 
 def rescale_figure(table, directory):
+    """Fig. 5: tau/tau_y on 1 + k x^(1/2) and, for curves with N1, N1/tau_y on
+    each curve's N1_y/tau_y + k' x^(1/2) (Figs. 5b, d)."""
     points = read_table(table)
     curves = read_table(os.path.splitext(table)[0] + "_curves.csv")
     k = number(curves[0], "k [1]")
-    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    k_n1 = number(curves[0], "k_N1 [1]")
+    normal = has(points, "N1_ratio [1]")
+    fig, axes = plt.subplots(1, 2 if normal else 1, figsize=(5.5 * (2 if normal else 1), 4.2),
+                             squeeze=False)
     labels = list(dict.fromkeys(r["curve"] for r in points))
+    x_all = [number(r, "collapse_rate [1]") for r in points]
+    grid = log_grid(min(x_all), max(x_all))
     for colour, label in zip(colours(len(labels)), labels):
         rows = [r for r in points if r["curve"] == label]
         fit = next(c for c in curves if c["curve"] == label)
         used = [r for r in rows if number(r, "used [1]") > 0]
         unused = [r for r in rows if number(r, "used [1]") == 0]
-        ax.plot([number(r, "collapse_rate [1]") for r in used],
-                [number(r, "stress_ratio [1]") for r in used], "o", ms=4, color=colour,
-                label=f"{label}: E* = {number(fit, 'E* [Pa]'):.3g} Pa, "
-                      f"rms {100 * number(fit, 'rms_residual [1]'):.1f} %")
-        if unused:
-            ax.plot([number(r, "collapse_rate [1]") for r in unused],
-                    [number(r, "stress_ratio [1]") for r in unused], "o", ms=4, mfc="none",
-                    color=colour)
-    x_all = [number(r, "collapse_rate [1]") for r in points]
-    grid = log_grid(min(x_all), max(x_all))
-    ax.plot(grid, [1 + k * math.sqrt(x) for x in grid], "k-", lw=1, label=f"1 + {k:.3g} x^½")
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("γ̇ η_s / (E* γ_y²)")
-    ax.set_ylabel("τ / τ_y")
-    ax.set_title("measured curves on the universal law (cf. Seth et al. 2011, Fig. 5); "
-                 "open: outside the fitted window", fontsize=8)
-    ax.legend(fontsize=6, frameon=False)
+        panels = [("stress_ratio [1]", f"{label}: E* = {number(fit, 'E* [Pa]'):.3g} Pa, "
+                                       f"rms {100 * number(fit, 'rms_residual [1]'):.1f} %")]
+        # A curve without an N1 law has zeros in the N1 columns (bridge/output/tables.h).
+        has_n1 = normal and any(number(r, "N1 [Pa]") != 0 for r in rows)
+        if has_n1:
+            panels.append(("N1_ratio [1]", label))
+            plateau = number(fit, "N1_y [Pa]") / number(fit, "tau_y [Pa]")
+            axes[0][1].plot(grid, [plateau + k_n1 * math.sqrt(x) for x in grid], "-",
+                            color=colour, lw=0.8)
+        for ax, (column, legend) in zip(axes[0], panels):
+            ax.plot([number(r, "collapse_rate [1]") for r in used],
+                    [number(r, column) for r in used], "o", ms=4, color=colour, label=legend)
+            if unused:
+                ax.plot([number(r, "collapse_rate [1]") for r in unused],
+                        [number(r, column) for r in unused], "o", ms=4, mfc="none",
+                        color=colour)
+    axes[0][0].plot(grid, [1 + k * math.sqrt(x) for x in grid], "k-", lw=1,
+                    label=f"1 + {k:.3g} x^½")
+    axes[0][0].set_ylabel("τ / τ_y")
+    if normal:
+        axes[0][1].plot(grid, [k_n1 * math.sqrt(x) for x in grid], "k--", lw=1,
+                        label=f"{k_n1:.3g} x^½ (thin: each curve's N1_y/τ_y + it)")
+        axes[0][1].set_ylabel("N1 / τ_y")
+    for ax in axes[0]:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("γ̇ η_s / (E* γ_y²)")
+        ax.legend(fontsize=6, frameon=False)
+    axes[0][0].set_title("measured curves on the universal law (cf. Seth et al. 2011, Fig. 5); "
+                         "open: outside the fitted window", fontsize=8)
     save(fig, directory, os.path.splitext(os.path.basename(table))[0] + "_universal.png")
 
 

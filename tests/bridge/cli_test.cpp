@@ -284,9 +284,10 @@ TEST_F(BridgeCli, BadInputIsRefusedWithExitCodeTwoAndNoOutput) {
 // Every subcommand refuses to replace its results without --force (exit code
 // 3) and leaves them untouched.
 TEST_F(BridgeCli, ExistingResultsAreKeptWithoutForce) {
+  // τ = 100 (1 + 80 x^½) Pa and N1 = 40 Pa + 20 · 100 x^½ Pa: both panels of Fig. 5.
   testing::write_text(work() / "data.csv",
-                      "Shear rate [1/s],Stress [Pa]\n0.001,100.6\n0.01,101.9\n"
-                      "0.1,106.0\n1,118.9\n10,159.6\n100,288.4\n");
+                      "Shear rate [1/s],Stress [Pa],N1 [Pa]\n0.001,100.6,40.15\n0.01,101.9,40.48\n"
+                      "0.1,106.0,41.5\n1,118.9,44.7\n10,159.6,54.9\n100,288.4,87.1\n");
   ASSERT_EQ(bridge(kFit).code, 0);
   const std::string material = "material law.prm --phi 0.8 --modulus 4e4 --viscosity 1e-3 -o m.prm";
   const std::string rescale = "rescale data.csv --viscosity 1e-3 --yield-strain 0.03 -o r.csv";
@@ -313,9 +314,10 @@ TEST_F(BridgeCli, PlotScriptDrawsTheFiguresFromTheTables) {
   }
   const std::string script = "/usr/bin/python3 '" SOFTGLASS_SOURCE_DIR "/scripts/plot_bridge.py' ";
   ASSERT_EQ(bridge(kFit).code, 0);
+  // τ = 100 (1 + 80 x^½) Pa and N1 = 40 Pa + 20 · 100 x^½ Pa: both panels of Fig. 5.
   testing::write_text(work() / "data.csv",
-                      "Shear rate [1/s],Stress [Pa]\n0.001,100.6\n0.01,101.9\n"
-                      "0.1,106.0\n1,118.9\n10,159.6\n100,288.4\n");
+                      "Shear rate [1/s],Stress [Pa],N1 [Pa]\n0.001,100.6,40.15\n0.01,101.9,40.48\n"
+                      "0.1,106.0,41.5\n1,118.9,44.7\n10,159.6,54.9\n100,288.4,87.1\n");
   ASSERT_EQ(bridge("rescale data.csv --viscosity 1e-3 --yield-strain 0.03").code, 0);
   const auto run = [&](const std::string& arguments) {
     return std::system(
