@@ -67,7 +67,8 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
   const std::size_t quasi_static = sweep.quasi_static_points();
   lines.push_back(fmt::format(
       "input:    {} ({} state points{}, {} volume fractions){}{}", o.table.string(), sweep.points(),
-      quasi_static > 0 ? fmt::format(" and {} quasi-static, not fitted", quasi_static) : "",
+      quasi_static > 0 ? fmt::format(" and {} quasi-static (gamma~ = 0), not fitted", quasi_static)
+                       : "",
       sweep.groups.size(), o.packings.empty() ? "" : ", runs " + o.packings.string(),
       o.structure.empty() ? "" : ", structure " + o.structure.string()));
   for (const std::string& c : table.comments) lines.push_back("input |   " + c);

@@ -80,7 +80,8 @@ void print_fit_report(const SweepAnalysis& a, const std::string& source) {
   fmt::print(
       "sweep    {}: {} state points, {} volume fractions {} ... {}, gamma~ {:.3g} ... {:.3g}{}\n",
       source, a.sweep.points(), groups.size(), groups.front().phi, groups.back().phi, low, high,
-      quasi_static > 0 ? fmt::format("; and {} quasi-static (gamma~ = 0)", quasi_static) : "");
+      quasi_static > 0 ? fmt::format("; and {} quasi-static (gamma~ = 0), not fitted", quasi_static)
+                       : "");
   fmt::print("errors   one standard deviation from a {}\n", a.method);
   for (Quantity q : kAllQuantities) {
     if (!a.sweep.present[index(q)]) continue;

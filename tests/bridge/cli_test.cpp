@@ -121,8 +121,10 @@ TEST_F(BridgeCli, FitLeavesQuasiStaticRowsOutAndReportsTheirYieldStress) {
   ASSERT_EQ(plain.code, 0) << plain.err;
   ASSERT_EQ(aqs.code, 0) << aqs.err;
   EXPECT_EQ(plain.out.find("quasi-static"), std::string::npos) << plain.out;
-  expect_contains(aqs.out, {"55 state points", "and 5 quasi-static (gamma~ = 0)",
+  expect_contains(aqs.out, {"55 state points", "and 5 quasi-static (gamma~ = 0), not fitted",
                             "yield stress: quasi-static (AQS", "AQS sigma_y/E*", "diff/SE"});
+  expect_contains(testing::read_text(work() / "aqs.prm"),
+                  {"55 state points and 5 quasi-static (gamma~ = 0), not fitted"});
   for (const char* suffix : {".prm", "_points.csv", "_constants.csv"}) {
     EXPECT_EQ(data_without(testing::read_text(work() / (std::string("aqs") + suffix))),
               data_without(testing::read_text(work() / (std::string("law") + suffix))))
