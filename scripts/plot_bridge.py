@@ -108,13 +108,22 @@ def flow_curves(points, phis, quantity, units, directory, name, title):
     save(fig, directory, name)
 
 
+def follow_data(ax, values):
+    """Log axis limits from the positive data: a plateau line below zero would
+    otherwise pull the axis down towards -inf."""
+    shown = [v for v in values if v > 0]
+    if shown:
+        ax.set_ylim(min(shown) / 2, max(shown) * 2)
+
+
 def collapse(points, phis, constants, directory, name):
     """Figs. 4a-c: sigma/sigma_y, N1/sigma_y and -N2/sigma_y against gamma~/gamma_y^2,
     all phi; sigma on 1 + k x^(1/2), the normal stresses on each phi's own
     plateau N_y/sigma_y + k' x^(1/2) (bridge/fit/universal_law.h)."""
-    # A quantity whose universal fit failed has no constant (and NaN ratios): no panel.
+    # A quantity whose universal fit failed has a NaN constant (or none): no panel.
     panels = [(q, c) for q, c in (("sigma", "k"), ("N1", "k_N1"), ("N2", "k_N2"))
-              if has(points, f"{q}_ratio [1]") and constant(constants, c) is not None]
+              if has(points, f"{q}_ratio [1]") and constant(constants, c) is not None
+              and math.isfinite(constant(constants, c)[0])]
     fig, axes = plt.subplots(1, len(panels), figsize=(4.2 * len(panels), 4), squeeze=False)
     groups = by_phi(points)
     plateau_rows = {number(r, "phi [1]"): r for r in phis}
@@ -142,9 +151,7 @@ def collapse(points, phis, constants, directory, name):
             ax.plot(grid, [k * math.sqrt(x) for x in grid], "k--", lw=1,
                     label=f"{letter[quantity]} x^½, {letter[quantity]} = {k:.3g} ± {error:.2g} "
                           "(thin: φ's plateau + it)")
-            # A plateau below zero sends its line down to -inf: the axis follows the data.
-            shown = [v for v in (number(r, f"{quantity}_ratio [1]") for r in points) if v > 0]
-            ax.set_ylim(min(shown) / 2, max(shown) * 2)
+            follow_data(ax, [number(r, f"{quantity}_ratio [1]") for r in points])
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("γ̃ / γ_y²")
@@ -212,6 +219,7 @@ def rescale_figure(table, directory):
         axes[0][1].plot(grid, [k_n1 * math.sqrt(x) for x in grid], "k--", lw=1,
                         label=f"{k_n1:.3g} x^½ (thin: each curve's N1_y/τ_y + it)")
         axes[0][1].set_ylabel("N1 / τ_y")
+        follow_data(axes[0][1], [number(r, "N1_ratio [1]") for r in points])
     for ax in axes[0]:
         ax.set_xscale("log")
         ax.set_yscale("log")

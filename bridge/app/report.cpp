@@ -195,7 +195,7 @@ void print_rescale_report(const std::vector<RescaledCurve>& rescaled, const Resc
           100.0 * r.rms_residual);
     }
     if (r.N1_yield) {
-      fmt::print("  N1 law            N1_y = {} Pa, rms relative residual {:.1f} %\n",
+      fmt::print("  N1 law            N1_y = {} Pa, rms residual {:.1f} % of tau_y\n",
                  with_error(r.N1_yield->value, r.N1_yield->error), 100.0 * *r.N1_rms_residual);
     }
   }

@@ -16,6 +16,7 @@ UniversalFit fit_universal_law(const std::vector<const Curve*>& curves,
   const auto groups = static_cast<Eigen::Index>(curves.size());
   require(groups >= 1, "a universal fit needs at least one volume fraction");
   require(modulus.size() == curves.size(), "a universal fit needs one G0 per volume fraction");
+  require(sign == 1.0 || sign == -1.0, "a universal law's sign is +1 or -1");
   Eigen::Index points = 0;
   for (const Curve* c : curves) points += static_cast<Eigen::Index>(c->size());
   std::vector<double> alpha;

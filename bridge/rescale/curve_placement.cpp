@@ -17,8 +17,7 @@ std::optional<double> pick(const std::vector<double>& list, std::size_t j) {
   if (list.empty()) return std::nullopt;
   return list.size() == 1 ? list[0] : list[j];
 }
-// Least squares of the relative residuals (y_i − m_i(p))/y_i over parameters p
-// (positive ones in logarithm);
+// Least squares of the relative residuals (y_i − m_i(p))/y_i over log-parameters p;
 // `model` fills m(p) and ∂m/∂p. Returns p and its standard errors (χ²/dof scaled).
 struct RelativeFit {
   Eigen::VectorXd p, error;
@@ -161,40 +160,31 @@ RescaledCurve place_curve(const MeasuredCurve& c, std::size_t j, const RescaleSe
   }
   out.rms_residual = rms(out.residual, out.used);
 
-  // N1 = N1_y + k′ τ_y √x (fit/universal_law.h): the plateau N1_y is fitted, and
-  // may come out of either sign; points with N1 ≤ 0 have no relative residual.
+  // N1 = N1_y + k′ τ_y √x (fit/universal_law.h). N1_y is the one free
+  // parameter: the mean over the window of N1 − k′ τ_y √x, of either sign. Its
+  // residuals are in units of τ_y, which stay defined where N1 crosses zero
+  // (relative ones would not, and would let the smallest |N1| rule the fit).
   if (c.N1) {
-    std::vector<double> n1, rate_term;
+    const auto rate_term = [&](std::size_t i) {
+      return s.k_N1 * tau_y * std::sqrt(out.collapse_rate[i]);
+    };
+    double sum = 0.0, count = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!out.used[i] || !((*c.N1)[i] > 0)) continue;
-      n1.push_back((*c.N1)[i]);
-      rate_term.push_back(s.k_N1 * tau_y * std::sqrt(out.collapse_rate[i]));
+      if (!out.used[i]) continue;
+      sum += (*c.N1)[i] - rate_term(i);
+      ++count;
     }
-    if (n1.size() >= 2) {
-      std::vector<double> plateaus;
-      for (std::size_t i = 0; i < n1.size(); ++i) plateaus.push_back(n1[i] - rate_term[i]);
-      std::nth_element(plateaus.begin(), plateaus.begin() + plateaus.size() / 2, plateaus.end());
-      const RelativeFit fit = fit_relative(
-          n1, Eigen::VectorXd::Constant(1, plateaus[plateaus.size() / 2]),
-          [&](const Eigen::VectorXd& p, Eigen::VectorXd& m, Eigen::MatrixXd& dm) {
-            for (std::size_t i = 0; i < n1.size(); ++i) {
-              m(i) = p(0) + rate_term[i];
-              dm(i, 0) = 1.0;
-            }
-          },
-          what + " (N1)");
-      const double n1_yield = fit.p(0);
-      out.N1_yield = Estimate{n1_yield, fit.error(0)};
-      out.N1_ratio.emplace();
-      out.N1_residual.emplace();
-      for (std::size_t i = 0; i < n; ++i) {
-        const double N1 = (*c.N1)[i];
-        out.N1_ratio->push_back(N1 / tau_y);
-        out.N1_residual->push_back(
-            (N1 - n1_yield - s.k_N1 * tau_y * std::sqrt(out.collapse_rate[i])) / N1);
-      }
-      out.N1_rms_residual = rms(*out.N1_residual, out.used);
+    const double n1_yield = sum / count;
+    out.N1_ratio.emplace();
+    out.N1_residual.emplace();
+    for (std::size_t i = 0; i < n; ++i) {
+      out.N1_ratio->push_back((*c.N1)[i] / tau_y);
+      out.N1_residual->push_back(((*c.N1)[i] - n1_yield - rate_term(i)) / tau_y);
     }
+    out.N1_rms_residual = rms(*out.N1_residual, out.used);
+    // The standard error of a mean, with the scatter about the law (count − 1 dof).
+    const double scatter = tau_y * *out.N1_rms_residual * std::sqrt(count / (count - 1.0));
+    out.N1_yield = Estimate{n1_yield, scatter / std::sqrt(count)};
   }
   return out;
 }

@@ -13,7 +13,8 @@
 // guess — over the points inside the rate window; parameters are fitted in
 // logarithm (they are positive) and their errors come from the Jacobian scaled
 // by the residual variance χ²/dof. The N1 law N1/τ_y = N1_y/τ_y + k′ (…)^½
-// (fit/universal_law.h) then fixes the plateau N1_y (points with N1 ≤ 0 left out). Every curve also
+// (fit/universal_law.h) then fixes the plateau N1_y, of either sign, by least
+// squares with residuals (N1 − model)/τ_y over the same window. Every curve also
 // gets its own Herschel–Bulkley fit τ = τ_y + K γ̇^n with the same weights; a curve whose τ_y is to
 // be fitted must show its yield plateau (fit/herschel_bulkley.h).
 //
@@ -61,7 +62,7 @@ struct RescaledCurve {
   std::vector<double> collapse_rate;                         // γ̇ η_s / (E* γ_y²)
   std::vector<double> stress_ratio;                          // τ/τ_y
   std::vector<double> residual;                              // (τ − model)/τ
-  std::optional<std::vector<double>> N1_ratio, N1_residual;  // N1/τ_y, (N1 − model)/N1
+  std::optional<std::vector<double>> N1_ratio, N1_residual;  // N1/τ_y, (N1 − model)/τ_y
   std::vector<bool> used;
   double rms_residual = 0.0;  // over the used points
   double chi2 = 0.0;  // Σ ((τ − model)/τ)² over the used points: what the fit minimises

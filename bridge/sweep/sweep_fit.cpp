@@ -34,7 +34,8 @@ SweepFitOutcome fit_sweep(const Sweep& sweep) {
     f.yield_strain = f.hb[index(Quantity::sigma)]->yield / f.modulus;
   }
 
-  // The universal laws, σ first: its yield stresses give the yield strains.
+  // The universal laws; the σ law's yield stresses give the yield strains γ_y of
+  // the collapse variable γ̃/γ_y² (the normal laws do not need them: σ_y/γ_y = G0).
   std::vector<double> moduli;
   for (const PhiGroup& g : sweep.groups) moduli.push_back(g.modulus.value);
   for (Quantity q : kStresses) {

@@ -68,6 +68,22 @@ TEST(Rescale, FitsTheModulusWhenItIsUnknown) {
     EXPECT_NEAR(r.stress_ratio[i] / (1 + 80 * std::sqrt(r.collapse_rate[i])), 1.0, 0.1);
 }
 
+// N1_y may be negative, N1 then crossing zero at low rates: the plateau is fitted
+// over every point of the window, and the residuals (in units of τ_y) stay finite.
+TEST(Rescale, FitsAnN1PlateauOfEitherSign) {
+  Sample s;
+  s.n1_yield = -30.0;
+  const auto out = rescale({measured(s, 3)}, settings_for(s));
+  ASSERT_EQ(out.size(), 1u);
+  const RescaledCurve& r = out[0];
+  ASSERT_TRUE(r.N1_yield.has_value());
+  expect_within(*r.N1_yield, s.n1_yield, "N1_y");
+  ASSERT_TRUE(r.N1_rms_residual.has_value());
+  // 2 % noise on |N1| ≤ 330 Pa against τ_y = 100 Pa: at most 0.066 per point.
+  EXPECT_LT(*r.N1_rms_residual, 0.066);
+  for (double residual : *r.N1_residual) EXPECT_TRUE(std::isfinite(residual));
+}
+
 TEST(Rescale, FitsOnlyTheYieldStressWhenTheModulusIsGiven) {
   const Sample s;
   RescaleSettings settings = settings_for(s);

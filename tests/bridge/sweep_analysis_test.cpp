@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "bridge/io/csv_table.h"
+#include "bridge/output/tables.h"
 #include "bridge/sweep/analysis.h"
 #include "bridge_test_support.h"
 #include "common/errors.h"
@@ -55,6 +57,10 @@ TEST(SweepAnalysis, RecoversTheSyntheticParametersWithinTheirErrors) {
     expect_within(*g.force_yield, *s.force_yield, t.force_yield * t.modulus[j],
                   at + " f_y (m = 1/2)");
     expect_within(*g.force_slope, *s.force_slope, t.force_slope * t.modulus[j], at + " k_f");
+    // Each φ's own constants, with the universal laws' signs (k″ > 0 for a falling N2).
+    expect_within(*g.own_k[0], *s.own_k[0], t.k, at + " own k");
+    expect_within(*g.own_k[1], *s.own_k[1], t.k_N1, at + " own k'");
+    expect_within(*g.own_k[2], *s.own_k[2], t.k_N2, at + " own k''");
   }
   expect_within(*v.k[0], *e.k[0], t.k, "k");
   expect_within(*v.k[1], *e.k[1], t.k_N1, "k'");
@@ -69,6 +75,34 @@ TEST(SweepAnalysis, RecoversTheSyntheticParametersWithinTheirErrors) {
 
 // The bias-corrected packing bootstrap reproduces the standard error of a mean
 // of K packings exactly (in the limit of many replicates): for G0, s/√K.
+// The points table's collapse ordinates (Fig. 4): σ/σ_y, N1/σ_y and −N2/σ_y,
+// each scaled by the universal σ_y of its φ, so −N2/σ_y is positive.
+TEST(SweepAnalysis, PointsTableScalesEveryStressBySigmaY) {
+  const SyntheticTruth t;
+  const SweepAnalysis a = analyse(testing::make_synthetic_sweep(t, 11), 20);
+  const CsvTable table = CsvTable::parse(points_table(a, {}), "points");
+  const auto column = [&](const char* name) {
+    const std::optional<std::size_t> c = table.find(name);
+    EXPECT_TRUE(c.has_value()) << name;
+    return c.value_or(0);
+  };
+  ASSERT_EQ(table.rows(), a.sweep.points());
+  for (std::size_t row = 0; row < table.rows(); ++row) {
+    const std::size_t j = find_group(a.sweep, table.number(row, column("phi [1]")));
+    ASSERT_LT(j, a.sweep.groups.size());
+    const double sigma_y = *a.estimate.fit.groups[j].universal_yield[index(Quantity::sigma)];
+    // The CSV carries 10 significant digits.
+    const auto expect_ratio = [&](const char* ratio, const char* value, double sign) {
+      const double expected = sign * table.number(row, column(value)) / sigma_y;
+      EXPECT_NEAR(table.number(row, column(ratio)), expected, 1e-8 * std::abs(expected)) << ratio;
+    };
+    expect_ratio("sigma_ratio [1]", "sigma [E*]", 1.0);
+    expect_ratio("N1_ratio [1]", "N1 [E*]", 1.0);
+    expect_ratio("N2_ratio [1]", "N2 [E*]", -1.0);
+    EXPECT_GT(table.number(row, column("N2_ratio [1]")), 0.0);
+  }
+}
+
 TEST(SweepAnalysis, PackingBootstrapReproducesTheStandardErrorOfAMean) {
   const testing::SyntheticSweep s = testing::make_synthetic_sweep({}, 5);
   const SweepAnalysis a = analyse(s, 4000);
