@@ -14,9 +14,10 @@
 // logarithm (they are positive) and their errors come from the Jacobian scaled
 // by the residual variance χ²/dof. The N1 law N1/τ_y = N1_y/τ_y + k′ (…)^½
 // (fit/universal_law.h) then fixes the plateau N1_y, of either sign, by least
-// squares with residuals (N1 − model)/τ_y over the same window. Every curve also
-// gets its own Herschel–Bulkley fit τ = τ_y + K γ̇^n with the same weights; a curve whose τ_y is to
-// be fitted must show its yield plateau (fit/herschel_bulkley.h).
+// squares with residuals (N1 − model)/τ_y over the same window. Every curve
+// also gets its own Herschel–Bulkley fit τ = τ_y + K γ̇^n with the same weights;
+// a curve whose τ_y is to be fitted must show its yield plateau
+// (fit/herschel_bulkley.h).
 //
 // One E* for several curves (`shared_modulus`): the same particles measured at
 // several φ or temperatures have one contact modulus. E* is then the minimum of

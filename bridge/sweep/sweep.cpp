@@ -89,20 +89,17 @@ Sweep make_sweep(const FlowCurveTable& table) {
   for (std::size_t k = 0; k < points.size(); ++k) {
     const StatePoint* p = points[k].second;
     const bool new_phi = k == 0 || points[k].first != points[k - 1].first;
-    if (!new_phi) {
-      const StatePoint* before = points[k - 1].second;
-      if (std::abs(p->gamma_tilde - before->gamma_tilde) <= 1e-9 * p->gamma_tilde) {
-        throw InputError(
-            fmt::format("{}, line {}: state point phi = {}, gamma~ = {} already on line {}",
-                        table.source, p->line, p->phi, p->gamma_tilde, before->line));
-      }
-    }
     if (new_phi) {
       if (!sweep.groups.empty()) close_group();
       PhiGroup& g = sweep.groups.emplace_back();
       g.phi = p->phi;
       for (Quantity q : kAllQuantities)
         if (table.present[index(q)]) g.curves[index(q)].emplace();
+    } else if (const StatePoint* before = points[k - 1].second;
+               std::abs(p->gamma_tilde - before->gamma_tilde) <= 1e-9 * p->gamma_tilde) {
+      throw InputError(
+          fmt::format("{}, line {}: state point phi = {}, gamma~ = {} already on line {}",
+                      table.source, p->line, p->phi, p->gamma_tilde, before->line));
     }
     PhiGroup& g = sweep.groups.back();
     if (p->converged && *p->converged < p->packings) {
