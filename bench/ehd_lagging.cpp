@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "micro/dynamics/integrator.h"
 #include "micro/packing/packing.h"
@@ -55,9 +54,8 @@ int main(int argc, char** argv) {
       if (flow.system().neighbours().builds() != builds) continue;
       const ContactField& field = flow.system().forces();
       friction.resize(previous.size());
-      const double per_radius = 6.0 * std::numbers::pi * gamma_tilde / model.mobility_factor;
       for (std::size_t a = 0; a < friction.size(); ++a)
-        friction[a] = per_radius * flow.system().particles().radius[a];
+        friction[a] = model.friction(flow.system().particles().radius[a]);
       std::vector<Vec3> v = previous;
       lagged.solve(field.contacts, gamma_tilde, friction, field.force, v);
       double scale = 1.0, error = 0.0;

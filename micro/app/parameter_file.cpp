@@ -3,6 +3,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
+#include <map>
 #include <sstream>
 
 #include "common/errors.h"
@@ -19,7 +22,11 @@ struct Entries {
   MicroParameters p;
   std::string distribution = "gaussian";
   std::string coupling = "implicit";
-  std::string packing_input, table_file, output_file = "micro.h5";
+  std::string film_velocity = "tangential";
+  std::string packing_input, output_file = "micro.h5";
+  // Every law's coefficients, by entry name "<law> <coefficient>" (the
+  // registry's declarations); only the chosen law's are used.
+  std::map<std::string, std::string> law_coefficients;
   unsigned long particles = 1000;
   unsigned long seed = 1;
   unsigned long stage_iterations = 2000;
@@ -34,6 +41,30 @@ void entry(ParameterHandler& prm, const std::string& name, T& value, const std::
   prm.add_parameter(name, value,
                     doc + " Allowed: " + pattern.description(Patterns::PatternBase::Text) + ".",
                     pattern);
+}
+
+// A law's coefficients as entries "<law> <coefficient>", with their ranges.
+void declare_coefficients(ParameterHandler& prm, const ContactLawEntry& law, Entries& e) {
+  for (const ComponentParameter& c : law.parameters) {
+    std::string& value = e.law_coefficients[law.name + " " + c.name];
+    value = c.default_value;
+    const std::string doc = fmt::format("For law = {}: {}", law.name, c.documentation);
+    const auto bound = [](double x) {
+      return std::isfinite(x) ? x : std::copysign(std::numeric_limits<double>::max(), x);
+    };
+    const Patterns::Double number(bound(c.lower), bound(c.upper));
+    switch (c.kind) {
+      case ComponentParameter::Kind::number:
+        entry(prm, law.name + " " + c.name, value, doc, number);
+        break;
+      case ComponentParameter::Kind::numbers:
+        entry(prm, law.name + " " + c.name, value, doc, Patterns::List(number, 0, 100, ","));
+        break;
+      case ComponentParameter::Kind::file:
+        entry(prm, law.name + " " + c.name, value, doc, Patterns::Anything());
+        break;
+    }
+  }
 }
 
 void declare(ParameterHandler& prm, Entries& e) {
@@ -77,14 +108,12 @@ void declare(ParameterHandler& prm, Entries& e) {
   prm.leave_subsection();
 
   prm.enter_subsection("contact law");
-  entry(prm, "law", p.contact_law.name,
-        "Elastic contact law: seth2011 (the paper's, Hertz up to eps = 0.1 then "
-        "stiffer), hertz, or table (from 'table file').",
-        Patterns::Selection("seth2011|hertz|table"));
-  entry(prm, "table file", e.table_file,
-        "For law = table: text file of rows (eps, f/(E* R_c^2)), both increasing. "
-        "Relative to this parameter file.",
-        Patterns::Anything());
+  std::string laws = "Elastic contact law f = E* R_c^2 F(eps), eps = h/R_c (docs/physics.md):";
+  for (const ContactLawEntry& law : contact_laws().entries())
+    laws += " " + law.name + ": " + law.summary + ";";
+  laws.back() = '.';
+  entry(prm, "law", p.contact_law.name, laws, Patterns::Selection(contact_laws().selection()));
+  for (const ContactLawEntry& law : contact_laws().entries()) declare_coefficients(prm, law, e);
   prm.leave_subsection();
 
   prm.enter_subsection("shear");
@@ -92,9 +121,10 @@ void declare(ParameterHandler& prm, Entries& e) {
         "Dimensionless shear rate gamma_dot eta_s / E* (the paper: 1e-9 ... 1e-4).",
         Patterns::Double(1e-14, 1e-1));
   entry(prm, "mobility factor", p.shear_model.mobility_factor,
-        "f_r in the mobility M = f_r / (6 pi eta_s R) (the paper: 0.01; results "
-        "unchanged below 0.1).",
-        Patterns::Double(1e-6, 1.0));
+        "f_r in the mobility M = f_r / (6 pi eta_s R) against the affine flow (the paper: 0.01; "
+        "results unchanged below 0.1). Above 1 that friction is weaker than a free sphere's "
+        "Stokes drag: the films carry the dissipation (docs/physics.md).",
+        Patterns::Double(kMinMobilityFactor, kMaxMobilityFactor));
   entry(prm, "sample interval", p.protocol.sample_interval, "Strain between stress samples.",
         Patterns::Double(1e-6, 0.5));
   entry(prm, "check interval", p.protocol.check_interval, "Strain between steady-state checks.",
@@ -118,6 +148,11 @@ void declare(ParameterHandler& prm, Entries& e) {
   prm.enter_subsection("drag");
   entry(prm, "ehd", p.shear_model.drag.enabled,
         "Include the elastohydrodynamic drag between sliding facets.", Patterns::Bool());
+  entry(prm, "velocity", e.film_velocity,
+        "Relative velocity the EHD drag acts on: tangential (the paper: sliding of the facets), "
+        "full (also approach and separation, a declared extension) or nonaffine (sliding "
+        "relative to the affine flow, a diagnostic); docs/physics.md.",
+        Patterns::Selection(film_velocity_names()));
   entry(prm, "coupling", e.coupling,
         "implicit: velocities solved with the drag at every step (Newton); lagged: "
         "drag from the previous velocities (for measuring that error only).",
@@ -223,6 +258,24 @@ std::string without_subsection(const std::string& text, const std::string& name)
   return out;
 }
 
+// The chosen law's coefficients, files resolved beside the parameter file,
+// completed and checked by the registry.
+ComponentValues law_coefficients(const Entries& e, const std::string& law,
+                                 const std::filesystem::path& file) {
+  ContactLawSpec spec{.name = law};
+  for (const ComponentParameter& c : contact_laws().at(law).parameters) {
+    const std::string name = law + " " + c.name;
+    std::string value = e.law_coefficients.at(name);
+    if (c.kind == ComponentParameter::Kind::file) {
+      require(!value.empty(), fmt::format("contact law '{}' needs '{}' in subsection 'contact law'",
+                                          law, name));
+      value = beside(file, value).string();
+    }
+    spec.coefficients.set(c.name, value);
+  }
+  return completed(spec).coefficients;
+}
+
 // The engine's types from the parsed entries, checked as a whole.
 MicroParameters convert(const ParameterHandler& prm, const Entries& e,
                         const std::filesystem::path& file) {
@@ -233,12 +286,11 @@ MicroParameters convert(const ParameterHandler& prm, const Entries& e,
   p.packing.relaxation.max_iterations = e.max_relaxation_iterations;
   p.packing.radii.shape = parse_radius_shape(e.distribution);
   p.shear_model.drag.coupling = parse_drag_coupling(e.coupling);
+  p.shear_model.drag.film.velocity = parse_film_velocity(e.film_velocity);
   p.packing_input = beside(file, e.packing_input);
-  p.contact_law.table_file = beside(file, e.table_file);
+  p.contact_law.coefficients = law_coefficients(e, p.contact_law.name, file);
   p.output_file = e.output_file;
   require(!e.output_file.empty(), "output file name is empty");
-  require(p.contact_law.name != "table" || !e.table_file.empty(),
-          "contact law 'table' needs 'table file' in subsection 'contact law'");
   require(p.packing.initial_volume_fraction <= p.packing.volume_fraction,
           fmt::format("initial volume fraction = {} exceeds the volume fraction {}",
                       p.packing.initial_volume_fraction, p.packing.volume_fraction));
@@ -387,7 +439,7 @@ MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSett
                                  c.gamma_tilde, clean_message(error.what())));
   }
   MicroParameters p = convert(prm, e, std::filesystem::path());
-  p.contact_law.table_file = base.contact_law.table_file;  // already resolved
+  p.contact_law.coefficients = base.contact_law.coefficients;  // files already resolved
   return p;
 }
 

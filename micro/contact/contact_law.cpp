@@ -1,33 +1,26 @@
 #include "micro/contact/contact_law.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
-#include <array>
 #include <fstream>
-#include <functional>
 #include <iterator>
 
 #include "common/errors.h"
+#include "micro/contact/registered_laws.h"
 
 namespace softglass::micro {
 
-// Each law lives in its own file and provides its factory.
-std::unique_ptr<ContactLaw> make_hertz_law(const ContactLawSpec&);
-std::unique_ptr<ContactLaw> make_seth2011_law(const ContactLawSpec&);
-std::unique_ptr<ContactLaw> make_table_law(const ContactLawSpec&);
+#define SOFTGLASS_DECLARE_LAW(name) ContactLawEntry name##_law();
+SOFTGLASS_CONTACT_LAWS(SOFTGLASS_DECLARE_LAW)
+#undef SOFTGLASS_DECLARE_LAW
 
-namespace {
-struct RegisteredLaw {
-  const char* name;
-  std::unique_ptr<ContactLaw> (*make)(const ContactLawSpec&);
-};
-constexpr std::array kRegistry{
-    RegisteredLaw{"seth2011", make_seth2011_law},
-    RegisteredLaw{"hertz", make_hertz_law},
-    RegisteredLaw{"table", make_table_law},
-};
-}  // namespace
+const Registry<ContactLawEntry>& contact_laws() {
+#define SOFTGLASS_LIST_LAW(name) name##_law(),
+  static const Registry<ContactLawEntry> registry("contact law",
+                                                  {SOFTGLASS_CONTACT_LAWS(SOFTGLASS_LIST_LAW)});
+#undef SOFTGLASS_LIST_LAW
+  return registry;
+}
 
 double ContactLaw::force(double deformation) const {
   double f = 0.0, k = 0.0;
@@ -43,23 +36,23 @@ double ContactLaw::stiffness(double deformation) const {
 
 std::string ContactLawSpec::table() const {
   if (name != "table" || !table_text.empty()) return table_text;
-  std::ifstream in(table_file);
-  if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", table_file.string()));
+  const std::string file = coefficients.has("file") ? coefficients.text("file") : "";
+  if (file.empty()) throw InputError("contact law 'table' needs 'table file' in subsection 'contact law'");
+  std::ifstream in(file);
+  if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", file));
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-std::vector<std::string> contact_law_names() {
-  std::vector<std::string> names;
-  for (const auto& law : kRegistry) names.emplace_back(law.name);
-  return names;
+ContactLawSpec completed(const ContactLawSpec& spec) {
+  const ContactLawEntry& entry = contact_laws().at(spec.name);
+  ContactLawSpec out = spec;
+  out.coefficients = complete_values(fmt::format("contact law '{}'", spec.name),
+                                     entry.parameters, spec.coefficients);
+  return out;
 }
 
 std::unique_ptr<ContactLaw> make_contact_law(const ContactLawSpec& spec) {
-  for (const auto& law : kRegistry) {
-    if (spec.name == law.name) return law.make(spec);
-  }
-  throw InputError(fmt::format("contact law '{}' is unknown; allowed: {}", spec.name,
-                               fmt::join(contact_law_names(), ", ")));
+  return contact_laws().at(spec.name).make(completed(spec));
 }
 
 }  // namespace softglass::micro

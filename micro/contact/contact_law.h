@@ -10,9 +10,12 @@
 // forces/ehd_drag.h).
 //
 // A new law is one new file — a class deriving from ContactLawImpl (see
-// contact_law_impl.h) that defines F, F′ and W — plus one line in
-// contact_law.cpp's registry. ContactLawImpl compiles the force kernel with the
-// law's F inlined, so the law costs no call per contact.
+// contact_law_impl.h) that defines F, F′ and W, and a function returning its
+// registry entry (name, summary, coefficients, factory) — plus one line in
+// registered_laws.h. ContactLawImpl compiles the force kernel with the law's F
+// inlined, so the law costs no call per contact. A law's coefficients are
+// parameter-file entries of subsection `contact law` named "<law> <coefficient>"
+// (e.g. `set power exponent = 2`); their defaults and ranges come from the entry.
 #pragma once
 
 #include <filesystem>
@@ -20,6 +23,8 @@
 #include <span>
 #include <string>
 #include <vector>
+
+#include "common/registry.h"
 
 namespace softglass::micro {
 
@@ -48,18 +53,24 @@ class ContactLaw {
 
 struct ContactLawSpec {
   std::string name = "seth2011";
-  std::filesystem::path table_file{};  // for name = "table": the file, or
-  std::string table_text{};            // its contents (as stored in a result file)
+  ComponentValues coefficients{};  // by the law's names; unset ones take their defaults
+  std::string table_text{};        // `table`: the file's contents (as stored in a result file)
 
-  /// The table's contents, read from table_file unless table_text holds them;
-  /// empty for other laws. InputError if the file cannot be read.
+  /// `table`: the contents of the file named by coefficient "file", unless
+  /// table_text holds them; empty for other laws. InputError if unreadable.
   std::string table() const;
 };
 
-/// The law named in `spec`; InputError for an unknown name or a bad table.
+using ContactLawEntry = ComponentEntry<ContactLaw, ContactLawSpec>;
+
+/// Every contact law (registered_laws.h).
+const Registry<ContactLawEntry>& contact_laws();
+
+/// The law named in `spec` with its coefficients completed by their defaults
+/// and checked; InputError for an unknown name, a bad coefficient or table.
 std::unique_ptr<ContactLaw> make_contact_law(const ContactLawSpec& spec);
 
-/// Names accepted by make_contact_law, for documentation and validation.
-std::vector<std::string> contact_law_names();
+/// `spec` with every coefficient of its law present (defaults filled in).
+ContactLawSpec completed(const ContactLawSpec& spec);
 
 }  // namespace softglass::micro

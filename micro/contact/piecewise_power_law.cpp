@@ -1,9 +1,13 @@
 #include "micro/contact/piecewise_power_law.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "common/errors.h"
 
 namespace softglass::micro {
 
@@ -46,6 +50,34 @@ PiecewisePowerLaw::PiecewisePowerLaw(std::vector<Branch> branches)
     energy_at_start_[k] = energy_at_start_[k - 1] + branch_energy(prev, branches_[k].start) -
                           branch_energy(prev, prev.start);
   }
+}
+
+PiecewisePowerLaw PiecewisePowerLaw::continuous(const std::string& what, double first_c,
+                                                const std::vector<double>& breakpoints,
+                                                const std::vector<double>& exponents) {
+  require(exponents.size() == breakpoints.size() + 1,
+          fmt::format("{}: {} exponents for {} breakpoints; allowed: one exponent more than "
+                      "breakpoints",
+                      what, exponents.size(), breakpoints.size()));
+  require(std::isfinite(first_c) && first_c > 0.0,
+          fmt::format("{}: C = {} must be positive", what, first_c));
+  for (std::size_t k = 0; k < breakpoints.size(); ++k) {
+    const double previous = k == 0 ? 0.0 : breakpoints[k - 1];
+    require(std::isfinite(breakpoints[k]) && breakpoints[k] > previous,
+            fmt::format("{}: breakpoints must be positive and increase; got {} after {}", what,
+                        breakpoints[k], previous));
+  }
+  for (double n : exponents)
+    require(std::isfinite(n) && n > 0.0, fmt::format("{}: exponent {} must be positive", what, n));
+  std::vector<Branch> branches{{0.0, (4.0 / 3.0) * first_c, exponents[0]}};
+  for (std::size_t k = 0; k < breakpoints.size(); ++k) {
+    // a_k ε_k^{n_k} = a_{k−1} ε_k^{n_{k−1}} at the breakpoint ε_k
+    const Branch& below = branches.back();
+    const double e = breakpoints[k];
+    branches.push_back({e, below.prefactor * std::pow(e, below.exponent - exponents[k + 1]),
+                        exponents[k + 1]});
+  }
+  return PiecewisePowerLaw(std::move(branches));
 }
 
 std::size_t PiecewisePowerLaw::bisect(double eps) const {

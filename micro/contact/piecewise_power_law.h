@@ -1,14 +1,20 @@
 // F(ε) = a_k ε^{n_k} on consecutive intervals (ε_k, ε_{k+1}], continuous in ε.
 //
-// The `seth2011` law (three branches) and the `table` law (log–log interpolation
-// of user data, which is exactly a piecewise power law) share this evaluator.
-// The energy W(ε) = ∫₀^ε F is exact: a sum of closed-form branch integrals.
+// The `seth2011` and `piecewise` laws (the paper's form (4/3) C ε^n with
+// deformation-dependent n and C) and the `table` law (log–log interpolation
+// of user data, which is exactly a piecewise power law) share this evaluator
+// and one contact-law class (make_piecewise_contact_law). The energy
+// W(ε) = ∫₀^ε F is exact: a sum of closed-form branch integrals.
 #pragma once
 
 #include <cmath>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace softglass::micro {
+
+class ContactLaw;
 
 class PiecewisePowerLaw {
  public:
@@ -20,6 +26,15 @@ class PiecewisePowerLaw {
 
   /// Branches must start at 0, increase, and join continuously (checked to 1e-9).
   explicit PiecewisePowerLaw(std::vector<Branch> branches);
+
+  /// F = (4/3) C ε^{n_0} up to the first breakpoint, then exponent n_k on the
+  /// k-th interval, each prefactor set by continuity: the paper's form with
+  /// deformation-dependent (n, C). Needs one exponent more than breakpoints,
+  /// breakpoints positive and increasing, exponents positive; InputError
+  /// otherwise, its message starting with `what`.
+  static PiecewisePowerLaw continuous(const std::string& what, double first_c,
+                                      const std::vector<double>& breakpoints,
+                                      const std::vector<double>& exponents);
 
   void evaluate(double eps, double& force, double& stiffness) const {
     const std::size_t k = branch_of(eps);
@@ -64,5 +79,9 @@ class PiecewisePowerLaw {
   std::vector<Kind> kinds_;  // fast paths for the common exponents
   std::vector<double> energy_at_start_;
 };
+
+/// The contact law `name` whose F is `law` (its force kernel is compiled once,
+/// in piecewise_contact_law.cpp, for every law of this form).
+std::unique_ptr<ContactLaw> make_piecewise_contact_law(std::string name, PiecewisePowerLaw law);
 
 }  // namespace softglass::micro

@@ -1,55 +1,39 @@
 // `seth2011` (default): the paper's contact law F(ε) = (4/3) C ε^n with
 // deformation-dependent (n, C), which stiffens large deformations (Liu, Williams
 // & Briscoe 1998). The paper's Supplementary Fig. S2 is not available; the
-// branches are those of docs/physics.md (spec model.md §3):
+// branches are those of docs/physics.md:
 //
 //     ε ≤ 0.1        n = 3/2   C = 1         Hertz (certain)
 //     0.1 < ε ≤ 0.2  n = 2     C = √10       reconstructed (exponent: Seth et al.
 //     ε > 0.2        n = 3     C = 5√10       J. Rheol. 2006; C from continuity)
 //
-// The C values are not typed in: each is computed here from continuity at the
-// breakpoints, so changing a breakpoint or an exponent keeps the law continuous.
-#include <cmath>
-
-#include "micro/contact/contact_law_impl.h"
+// It is the `piecewise` law at its default coefficients, kept under its own
+// name, without coefficients, as the literal reading of the paper.
+#include "micro/contact/contact_law.h"
 #include "micro/contact/piecewise_power_law.h"
 
 namespace softglass::micro {
+
+inline constexpr double kSeth2011Breakpoints[] = {0.1, 0.2};
+inline constexpr double kSeth2011Exponents[] = {1.5, 2.0, 3.0};
+
 namespace {
-
-struct Breakpoints {
-  double hertz_end = 0.1;
-  double quadratic_end = 0.2;
-};
-
-PiecewisePowerLaw seth2011_branches(const Breakpoints& bp) {
-  const double a0 = 4.0 / 3.0;  // Hertz: C = 1
-  // a_k ε_k^{n_k} = a_{k−1} ε_k^{n_{k−1}} at each breakpoint ε_k
-  const double a1 = a0 * std::pow(bp.hertz_end, 1.5 - 2.0);
-  const double a2 = a1 * std::pow(bp.quadratic_end, 2.0 - 3.0);
-  return PiecewisePowerLaw({{0.0, a0, 1.5}, {bp.hertz_end, a1, 2.0}, {bp.quadratic_end, a2, 3.0}});
+std::unique_ptr<ContactLaw> make(const ContactLawSpec&) {
+  return make_piecewise_contact_law(
+      "seth2011",
+      PiecewisePowerLaw::continuous(
+          "contact law 'seth2011'", 1.0,
+          {std::begin(kSeth2011Breakpoints), std::end(kSeth2011Breakpoints)},
+          {std::begin(kSeth2011Exponents), std::end(kSeth2011Exponents)}));
 }
-
-class Seth2011Law final : public ContactLawImpl<Seth2011Law> {
- public:
-  Seth2011Law() : law_(seth2011_branches(Breakpoints{})) {}
-
-  std::string name() const override { return "seth2011"; }
-
-  void force_and_stiffness(double eps, double& force, double& stiffness) const {
-    law_.evaluate(eps, force, stiffness);
-  }
-
-  double energy(double eps) const override { return law_.energy(eps); }
-
- private:
-  PiecewisePowerLaw law_;
-};
-
 }  // namespace
 
-std::unique_ptr<ContactLaw> make_seth2011_law(const ContactLawSpec&) {
-  return std::make_unique<Seth2011Law>();
+ContactLawEntry seth2011_law() {
+  return {"seth2011",
+          "the paper's law as reconstructed: Hertz up to eps = 0.1, n = 2 up to 0.2, n = 3 "
+          "beyond (C from continuity)",
+          {},
+          make};
 }
 
 }  // namespace softglass::micro

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "common/errors.h"
-#include "micro/contact/contact_law_impl.h"
+#include "micro/contact/contact_law.h"
 #include "micro/contact/piecewise_power_law.h"
 
 namespace softglass::micro {
@@ -85,30 +85,22 @@ PiecewisePowerLaw interpolate(const std::vector<Point>& p, const std::filesystem
   return PiecewisePowerLaw(std::move(branches));
 }
 
-class TableLaw final : public ContactLawImpl<TableLaw> {
- public:
-  TableLaw(const std::string& text, const std::filesystem::path& file)
-      : law_(interpolate(read_points(text, file), file)) {}
-
-  std::string name() const override { return "table"; }
-
-  void force_and_stiffness(double eps, double& force, double& stiffness) const {
-    law_.evaluate(eps, force, stiffness);
-  }
-
-  double energy(double eps) const override { return law_.energy(eps); }
-
- private:
-  PiecewisePowerLaw law_;
-};
+std::unique_ptr<ContactLaw> make(const ContactLawSpec& spec) {
+  const std::string text = spec.table();
+  const std::filesystem::path file =
+      spec.coefficients.has("file") ? spec.coefficients.text("file") : "(stored table)";
+  return make_piecewise_contact_law("table", interpolate(read_points(text, file), file));
+}
 
 }  // namespace
 
-std::unique_ptr<ContactLaw> make_table_law(const ContactLawSpec& spec) {
-  if (spec.table_file.empty() && spec.table_text.empty()) {
-    throw InputError("contact law 'table' needs a table file (parameter 'table file')");
-  }
-  return std::make_unique<TableLaw>(spec.table(), spec.table_file);
+ContactLawEntry table_law() {
+  return {"table",
+          "tabulated (eps, f/(E* R_c^2)), interpolated as a power law between rows",
+          {{"file", ComponentParameter::Kind::file, "",
+            "Text file of rows (eps, f/(E* R_c^2)), both increasing. Relative to this parameter "
+            "file."}},
+          make};
 }
 
 }  // namespace softglass::micro

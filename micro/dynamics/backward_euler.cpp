@@ -37,7 +37,6 @@
 // retried with h/4.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "common/errors.h"
 
@@ -89,16 +88,14 @@ class BackwardEuler final : public Integrator {
       drag.clear();
       if (flow.model().drag.enabled) {
         const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
-        freeze_drag(field.contacts, gamma_tilde, drag);
+        freeze_drag(field.contacts, gamma_tilde, flow.model().drag.film, drag);
       }
-      const double friction_per_radius =
-          6.0 * std::numbers::pi * gamma_tilde / flow.model().mobility_factor;
       proximal_.resize(n);
       velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
       guess_.resize(n);
       shift_.resize(n);
       for (std::size_t a = 0; a < n; ++a) {
-        proximal_[a] = friction_per_radius * p.radius[a] / h;
+        proximal_[a] = flow.model().friction(p.radius[a]) / h;
         guess_[a] = h * velocity_[a];
         shift_[a] = Vec3(0.5 * h * velocity_[a].y(), 0.0, 0.0);
       }
@@ -109,7 +106,7 @@ class BackwardEuler final : public Integrator {
       // term bounds the Hessian below): 1 % of the step tolerance is enough.
       IncrementalSettings settings = minimiser_.settings();
       settings.absolute_force =
-          0.01 * spec_.tolerance * friction_per_radius * min_radius(p.radius) / h;
+          0.01 * spec_.tolerance * flow.model().friction(min_radius(p.radius)) / h;
       settings.loosen = true;
       minimiser_.set_settings(settings);
       const IncrementalResult r = minimiser_.minimise(system, proximal_, drag, h, guess_);

@@ -30,18 +30,18 @@ void FrozenDrag::clear() {
   affine.clear();
 }
 
-void freeze_drag(const ContactList& c, double gamma_tilde, FrozenDrag& out) {
+void freeze_drag(const ContactList& c, double gamma_tilde, const FilmModel& film,
+                 FrozenDrag& out) {
   out.clear();
+  out.film = film;
   for (std::size_t k = 0; k < c.size(); ++k) {
     const Vec3 n = c.separation[k].normalized();
-    Vec3 g = Vec3::Zero();
-    g.x() = c.separation[k].y();  // affine relative velocity d_y e_x (γ̇ = 1)
     out.i.push_back(c.i[k]);
     out.j.push_back(c.j[k]);
     out.normal.push_back(n);
-    out.coefficient.push_back(std::sqrt(0.75 * gamma_tilde * c.contact_radius[k] * c.force[k] *
-                                        std::sqrt(c.deformation[k])));
-    out.affine.push_back(g - n * n.dot(g));
+    out.coefficient.push_back(
+        film_coefficient(gamma_tilde, c.contact_radius[k], c.force[k], c.deformation[k]));
+    out.affine.push_back(film.affine(n, c.separation[k]));
   }
 }
 
@@ -70,9 +70,7 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
   }
   w.resize(drag.size());
   for (std::size_t k = 0; k < drag.size(); ++k) {
-    const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
-    const Vec3& nk = drag.normal[k];
-    w[k] = du - nk * nk.dot(du) + drag.affine[k];
+    w[k] = drag.film.project(drag.normal[k], (u[drag.i[k]] - u[drag.j[k]]) / h) + drag.affine[k];
     const double speed = w[k].norm();
     value.dissipation += h * (2.0 / 3.0) * drag.coefficient[k] * speed * std::sqrt(speed);
     if (speed > 0.0) {
@@ -122,9 +120,8 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
     const double floor_speed = (force_floor / a) * (force_floor / a);
     const double s = a / std::sqrt(std::max(speed, floor_speed)) / h;
     const Vec3 unit = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
-    const Vec3& nk = drag.normal[k];
     const Eigen::Matrix3d b =
-        s * (identity - nk * nk.transpose() - relief_[k] * unit * unit.transpose());
+        s * (drag.film.projector(drag.normal[k]) - relief_[k] * unit * unit.transpose());
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
     while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;

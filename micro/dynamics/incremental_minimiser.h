@@ -47,6 +47,7 @@
 #include <vector>
 
 #include "micro/forces/block_cg.h"
+#include "micro/forces/film.h"
 #include "micro/system/contact_system.h"
 
 namespace softglass::micro {
@@ -63,16 +64,18 @@ struct IncrementalSettings {
 
 /// The frozen drag of one step (from the contacts at the step's start).
 struct FrozenDrag {
+  FilmModel film{};  // P_c (film.h)
   std::vector<std::uint32_t> i, j;
   std::vector<Vec3> normal;         // n_c
   std::vector<double> coefficient;  // a_c
-  std::vector<Vec3> affine;         // w⁰_c = P_c (d_y e_x)
+  std::vector<Vec3> affine;         // w⁰_c = P_c (d_y e_x), or 0
   void clear();
   std::size_t size() const { return i.size(); }
 };
 
-/// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} for every contact of `contacts` (ehd_drag.h).
-void freeze_drag(const ContactList& contacts, double gamma_tilde, FrozenDrag& out);
+/// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} and w⁰_c for every contact of `contacts` (film.h).
+void freeze_drag(const ContactList& contacts, double gamma_tilde, const FilmModel& film,
+                 FrozenDrag& out);
 
 struct IncrementalResult {
   bool converged = false;

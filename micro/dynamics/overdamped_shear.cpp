@@ -12,9 +12,15 @@ namespace softglass::micro {
 void ShearModel::validate() const {
   require(std::isfinite(gamma_tilde) && gamma_tilde >= 1e-14 && gamma_tilde <= 1e-1,
           fmt::format("dimensionless shear rate γ̃ = {} is outside [1e-14, 1e-1]", gamma_tilde));
-  require(std::isfinite(mobility_factor) && mobility_factor > 0.0 && mobility_factor <= 1.0,
-          fmt::format("mobility factor f_r = {} is outside (0, 1]", mobility_factor));
+  require(std::isfinite(mobility_factor) && mobility_factor >= kMinMobilityFactor &&
+              mobility_factor <= kMaxMobilityFactor,
+          fmt::format("mobility factor f_r = {} is outside [{:g}, {:g}]", mobility_factor,
+                      kMinMobilityFactor, kMaxMobilityFactor));
   drag.validate();
+}
+
+double ShearModel::friction(double radius) const {
+  return 6.0 * std::numbers::pi * gamma_tilde * radius / mobility_factor;
 }
 
 ShearObservables observables(const Eigen::Matrix3d& s) {
@@ -35,12 +41,10 @@ void OverdampedShear::evaluate() {
   const std::size_t n = p.size();
   // ζ and 1/ζ change only when the particles are reordered (at list builds).
   if (friction_.size() != n || ordered_at_build_ != system_.neighbours().builds()) {
-    const double friction_per_radius =
-        6.0 * std::numbers::pi * model_.gamma_tilde / model_.mobility_factor;
     friction_.resize(n);
     mobility_.resize(n);
     for (std::size_t a = 0; a < n; ++a) {
-      friction_[a] = friction_per_radius * p.radius[a];
+      friction_[a] = model_.friction(p.radius[a]);
       mobility_[a] = 1.0 / friction_[a];
     }
     ordered_at_build_ = system_.neighbours().builds();

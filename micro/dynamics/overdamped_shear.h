@@ -24,12 +24,19 @@
 
 namespace softglass::micro {
 
+/// f_r above 1 makes the friction against the affine flow weaker than a free
+/// sphere's Stokes drag: the limit in which the films carry the dissipation.
+inline constexpr double kMinMobilityFactor = 1e-6, kMaxMobilityFactor = 1e4;
+
 struct ShearModel {
   double gamma_tilde = 1e-5;      // γ̇ η_s / E*
   double mobility_factor = 0.01;  // f_r
   EhdSettings drag;
 
   void validate() const;
+  /// ζ = 6π γ̃ R / f_r, the friction of a particle of radius R against the
+  /// affine flow (units E* R² per γ̇ R).
+  double friction(double radius) const;
 };
 
 /// Stress tensors (units of E*), σ = −(1/V) Σ d ⊗ f over contacts.

@@ -17,10 +17,8 @@ constexpr std::size_t kParallelContacts = 8192;
 constexpr double kArmijo = 1e-4;
 constexpr int kMaxHalvings = 50;
 
-// a_c = (¾ γ̃ R_c |f| √ε)^{1/2}; see the header.
 inline double drag_coefficient(const ContactList& c, std::size_t k, double gamma_tilde) {
-  return std::sqrt(0.75 * gamma_tilde * c.contact_radius[k] * c.force[k] *
-                   std::sqrt(c.deformation[k]));
+  return film_coefficient(gamma_tilde, c.contact_radius[k], c.force[k], c.deformation[k]);
 }
 }  // namespace
 
@@ -49,12 +47,14 @@ void EhdDrag::prepare(const ContactList& c, double gamma_tilde) {
   const std::size_t m = c.size();
   geometry_.normal.resize(m);
   geometry_.coefficient.resize(m);
+  geometry_.affine.resize(m);
   w_.resize(m);
   scratch_.resize(m);
 #pragma omp parallel for schedule(static) if (m >= kParallelContacts)
   for (std::size_t k = 0; k < m; ++k) {
     geometry_.normal[k] = c.separation[k].normalized();
     geometry_.coefficient[k] = drag_coefficient(c, k, gamma_tilde);
+    geometry_.affine[k] = settings_.film.affine(geometry_.normal[k], c.separation[k]);
   }
 }
 
@@ -95,10 +95,7 @@ void EhdDrag::gradient_at(const ContactList& c, std::span<const double> friction
   const std::size_t m = c.size();
 #pragma omp parallel for schedule(static) if (m >= kParallelContacts)
   for (std::size_t k = 0; k < m; ++k) {
-    Vec3 g = v[c.i[k]] - v[c.j[k]];
-    g.x() += c.separation[k].y();  // affine relative velocity γ̇ d_y e_x (γ̇ = 1)
-    const Vec3& n = geometry_.normal[k];
-    w[k] = g - n * n.dot(g);
+    w[k] = settings_.film.project(geometry_.normal[k], v[c.i[k]] - v[c.j[k]]) + geometry_.affine[k];
     const double speed = w[k].norm();
     // ∂/∂w of ⅔ a |w|^{3/2} = a |w|^{1/2} ŵ = a w / |w|^{1/2}
     const double secant = speed > 0.0 ? geometry_.coefficient[k] / std::sqrt(speed) : 0.0;
@@ -125,21 +122,21 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
                               geometry_.coefficient[k];
     s_[k] = geometry_.coefficient[k] / std::sqrt(std::max(speed, resolution * resolution));
     unit_w_[k] = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
-    const Vec3& nk = geometry_.normal[k];
-    const Eigen::Matrix3d block = s_[k] * (Eigen::Matrix3d::Identity() - nk * nk.transpose() -
-                                           relief_[k] * unit_w_[k] * unit_w_[k].transpose());
+    const Eigen::Matrix3d block =
+        s_[k] * (settings_.film.projector(geometry_.normal[k]) -
+                 relief_[k] * unit_w_[k] * unit_w_[k].transpose());
     block_inverse_[c.i[k]] += block;
     block_inverse_[c.j[k]] += block;
   }
   for (auto& b : block_inverse_) b = b.inverse().eval();
 
-  // H p = ζ p + Σ_c ±A_c (p_i − p_j),  A_c q = s_c (q − n(n·q) − θ_c ŵ(ŵ·q)).
+  // H p = ζ p + Σ_c ±A_c (p_i − p_j),  A_c q = s_c (P q − θ_c ŵ(ŵ·q)).
   const auto hessian_times = [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {
 #pragma omp parallel for schedule(static) if (m >= kParallelContacts)
     for (std::size_t k = 0; k < m; ++k) {
       const Vec3 q = in[c.i[k]] - in[c.j[k]];
-      const Vec3& nk = geometry_.normal[k];
-      scratch_[k] = s_[k] * (q - nk * nk.dot(q) - relief_[k] * unit_w_[k] * unit_w_[k].dot(q));
+      scratch_[k] = s_[k] * (settings_.film.project(geometry_.normal[k], q) -
+                             relief_[k] * unit_w_[k] * unit_w_[k].dot(q));
     }
     for (std::size_t a = 0; a < n; ++a) out[a] = friction[a] * in[a];
     gather(scratch_, out);
@@ -170,10 +167,8 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
   // for when the step is accepted).
 #pragma omp parallel for schedule(static) reduction(+ : change, magnitude) if (m >= kParallelContacts)
   for (std::size_t k = 0; k < m; ++k) {
-    Vec3 g = trial_[c.i[k]] - trial_[c.j[k]];
-    g.x() += c.separation[k].y();
-    const Vec3& n_k = geometry_.normal[k];
-    w_trial_[k] = g - n_k * n_k.dot(g);
+    w_trial_[k] = settings_.film.project(geometry_.normal[k], trial_[c.i[k]] - trial_[c.j[k]]) +
+                  geometry_.affine[k];
     const double speed = w_trial_[k].norm(), root = std::sqrt(speed);
     const double old_speed = w_[k].norm();
     const double a = geometry_.coefficient[k];
@@ -303,10 +298,8 @@ Eigen::Matrix3d EhdDrag::virial(const ContactList& c, double gamma_tilde, std::s
                                 std::span<Vec3> drag) const {
   Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
   for (std::size_t k = 0; k < c.size(); ++k) {
-    Vec3 g = v[c.i[k]] - v[c.j[k]];
-    g.x() += c.separation[k].y();
-    const Vec3 n = c.separation[k].normalized();
-    const Vec3 w = g - n * n.dot(g);
+    const Vec3 w = settings_.film.sliding(c.separation[k].normalized(), v[c.i[k]] - v[c.j[k]],
+                                          c.separation[k]);
     const double speed = w.norm();
     if (speed == 0.0) continue;
     const double a = drag_coefficient(c, k, gamma_tilde);

@@ -4,7 +4,7 @@
 // velocities γ̇ R):
 //     f^EHD = −a_c |w|^{1/2} ŵ,     a_c = ( γ̃ C R_c³ ε^{(2n+1)/2} )^{1/2},
 // with w the tangential part of the relative velocity (including the affine
-// flow). Because C ε^n = ¾ F(ε) for every law, a_c² = ¾ γ̃ R_c³ F(ε) √ε = ¾ γ̃ R_c |f| √ε:
+// flow), or another projection of it (film.h). Because C ε^n = ¾ F(ε) for every law, a_c² = ¾ γ̃ R_c³ F(ε) √ε = ¾ γ̃ R_c |f| √ε:
 // the drag needs only the elastic force, so it follows any contact law.
 //
 // Velocities. Overdamped motion, u_α = u∞(x_α) + (m_α/γ̃)(F^e_α + F^EHD_α) with
@@ -57,6 +57,7 @@
 
 #include "micro/forces/block_cg.h"
 #include "micro/forces/contact_forces.h"
+#include "micro/forces/film.h"
 
 namespace softglass::micro {
 
@@ -66,6 +67,7 @@ std::string to_string(DragCoupling coupling);
 
 struct EhdSettings {
   bool enabled = true;
+  FilmModel film{};  // which relative velocity the drag acts on (film.h)
   DragCoupling coupling = DragCoupling::implicit;
   double tolerance = 1e-6;  // velocity residual relative to max(1, max|v|)
   int max_newton_iterations = 60;
@@ -101,6 +103,7 @@ class EhdDrag {
   struct Geometry {  // per contact
     std::vector<Vec3> normal;
     std::vector<double> coefficient;  // a_c
+    std::vector<Vec3> affine;         // w⁰_c
   };
   void prepare(const ContactList& contacts, double gamma_tilde);
   void build_incidence(const ContactList& contacts, std::size_t n);

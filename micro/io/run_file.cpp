@@ -177,6 +177,8 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
   if (record.shear) {
     H5Group shear = root.create_group("shear");
     shear.set_attribute("contact_law", record.contact_law.name);
+    const std::string coefficients = record.contact_law.coefficients.serialise();
+    if (!coefficients.empty()) shear.set_attribute("contact_law_coefficients", coefficients);
     const std::string table = record.contact_law.table();
     if (!table.empty())
       shear.write_string("contact_law_table", table, {"", "the table law's data"});
@@ -333,6 +335,9 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
   const std::string where = path.string();
   StoredSnapshots s;
   s.contact_law.name = shear.attribute_string("contact_law");
+  if (shear.has_attribute("contact_law_coefficients"))
+    s.contact_law.coefficients =
+        ComponentValues::parse(shear.attribute_string("contact_law_coefficients"));
   if (shear.has_child("contact_law_table"))
     s.contact_law.table_text = shear.read_string("contact_law_table");
   const StoredConfiguration configuration = read_configuration(shear.group("configuration"), where);

@@ -32,7 +32,7 @@ TEST(ContactTableFuzz, RefusesOrReadsEveryMutation) {
     ContactLawSpec spec;
     spec.name = "table";
     spec.table_text = text;
-    spec.table_file = "table.dat";
+    spec.coefficients.set("file", "table.dat");
     return read_and_check(
         [&] { return make_contact_law(spec); },
         [&](const std::unique_ptr<ContactLaw>& law) { expect_valid(*law, input); }, input);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "micro/contact/contact_law.h"
 #include "micro/io/run_file.h"
 #include "micro_cli_fixture.h"
 
@@ -101,6 +102,17 @@ TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
        tiny_with("contact law", "law", "kelvin"),
        {"kelvin", "seth2011", "hertz", "table"}},
       {"table law without file", tiny_with("contact law", "law", "table"), {"table file"}},
+      {"piecewise exponents do not match its breakpoints",
+       kTiny + "subsection contact law\n  set law = piecewise\n  set piecewise exponents = 1.5, 2\n"
+               "end\n",
+       {"piecewise", "2 exponents for 2 breakpoints"}},
+      {"piecewise exponent out of range",
+       tiny_with("contact law", "piecewise exponents", "1.5, 2, 30"),
+       {"piecewise exponents", "10"}},
+      {"mobility factor above its range",
+       tiny_with("shear", "mobility factor", "1e5"),
+       {"mobility factor", "10000"}},
+      {"unknown EHD velocity", tiny_with("drag", "velocity", "radial"), {"radial", "full"}},
       {"unknown distribution",
        tiny_with("particles", "distribution", "weibull"),
        {"weibull", "gaussian", "uniform", "lognormal", "bidisperse"}},
@@ -213,6 +225,27 @@ TEST_F(MicroCli, RunWritesATimeSeries) {
 
 namespace softglass::micro {
 namespace {
+
+TEST_F(MicroCli, LawCoefficientsFromTheParameterFileAreStoredWithTheRun) {
+  // The coefficients of a law reach the run file, and the law rebuilt from the
+  // file (as `analyze` does) is the one the run used.
+  const std::string prm = parameters(
+      "piecewise.prm",
+      kTiny +
+          "subsection contact law\n  set law = piecewise\n  set piecewise breakpoints = 0.4, 0.9\n"
+          "end\nsubsection shear\n  set gamma dot tilde = 1e-4\n  set min strain = 0.4\n"
+          "  set max strain = 0.4\n  set min stationary strain = 0.2\n"
+          "  set snapshot interval = 0.02\nend\n");
+  ASSERT_EQ(micro("run --quiet -o run.h5 " + prm).code, 0);
+  const StoredSnapshots stored = read_stationary_snapshots(work() / "run.h5");
+  EXPECT_EQ(stored.contact_law.name, "piecewise");
+  EXPECT_EQ(stored.contact_law.coefficients.text("breakpoints"), "0.4, 0.9");
+  const auto used = make_contact_law(
+      {.name = "piecewise",
+       .coefficients = {{"breakpoints", "0.4, 0.9"}, {"exponents", "1.5, 2, 3"}, {"C", "1"}}});
+  const auto rebuilt = make_contact_law(stored.contact_law);
+  for (double eps : {0.2, 0.6, 1.2}) EXPECT_EQ(rebuilt->force(eps), used->force(eps)) << eps;
+}
 
 TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
   // A short run stores snapshots every 0.02 strain; `analyze` adds /structure

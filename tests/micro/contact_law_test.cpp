@@ -22,8 +22,12 @@ namespace fs = std::filesystem;
 using testing::TemporaryDirectory;
 using testing::write_text;
 
+ContactLawSpec table_spec(const fs::path& table) {
+  return {.name = "table", .coefficients = {{"file", table.string()}}};
+}
+
 std::unique_ptr<ContactLaw> law(const std::string& name, const fs::path& table = {}) {
-  return make_contact_law({.name = name, .table_file = table});
+  return make_contact_law(name == "table" ? table_spec(table) : ContactLawSpec{.name = name});
 }
 
 fs::path hertz_table() {
@@ -292,7 +296,7 @@ TEST(ContactLawTable, MalformedTablesAreRejectedWithFileAndLine) {
   for (const MalformedTable& c : cases) {
     const fs::path file = dir / ("bad_" + std::to_string(index++) + ".dat");
     write_text(file, c.contents);
-    const std::string message = input_error({.name = "table", .table_file = file});
+    const std::string message = input_error(table_spec(file));
     EXPECT_NE(message.find(file.string()), std::string::npos) << c.what << ": " << message;
     if (c.line > 0) {
       EXPECT_NE(message.find("line " + std::to_string(c.line)), std::string::npos)
@@ -304,24 +308,103 @@ TEST(ContactLawTable, MalformedTablesAreRejectedWithFileAndLine) {
 TEST(ContactLawTable, MissingFileIsAnInputErrorNamingIt) {
   TemporaryDirectory dir;
   const fs::path file = dir / "no_such_table.dat";
-  const std::string message = input_error({.name = "table", .table_file = file});
+  const std::string message = input_error(table_spec(file));
   EXPECT_NE(message.find(file.string()), std::string::npos) << message;
 }
 
 TEST(ContactLawTable, TableLawWithoutFileIsAnInputError) {
-  const std::string message = input_error({.name = "table", .table_file = {}});
+  const std::string message = input_error({.name = "table"});
   EXPECT_NE(message.find("table file"), std::string::npos) << message;
 }
 
 TEST(ContactLaw, UnknownNameListsTheAllowedNames) {
-  const std::string message = input_error({.name = "kelvin-voigt", .table_file = {}});
+  const std::string message = input_error({.name = "kelvin-voigt"});
   EXPECT_NE(message.find("kelvin-voigt"), std::string::npos) << message;
-  const std::vector<std::string> names = contact_law_names();
-  EXPECT_EQ(names, (std::vector<std::string>{"seth2011", "hertz", "table"}));
+  const std::vector<std::string> names = contact_laws().names();
   for (const std::string& name : names) EXPECT_NE(message.find(name), std::string::npos) << message;
-  // and every listed name is accepted (table needs its file)
+  // and every registered law is accepted at its default coefficients (table
+  // needs its file), under its own name
   for (const std::string& name : names) {
-    EXPECT_NO_THROW(make_contact_law({.name = name, .table_file = hertz_table()})) << name;
+    const auto made = law(name, hertz_table());
+    EXPECT_EQ(made->name(), name);
+  }
+}
+
+// Every registered law at its defaults (table: the Hertz table): continuous,
+// F' = dF/dε and W' = F by central differences, F increasing from F(0+) = 0.
+// A new law is checked here without editing the test.
+TEST(ContactLaw, EveryRegisteredLawIsConsistent) {
+  for (const std::string& name : contact_laws().names()) {
+    const auto l = law(name, hertz_table());
+    EXPECT_LT(l->force(1e-9), 1e-9) << name;
+    double previous = 0.0;
+    for (double eps : kSamples) {
+      const double h = 1e-6 * eps;
+      const double f = l->force(eps);
+      EXPECT_GT(f, previous) << name << " at " << eps;
+      previous = f;
+      const double df = (l->force(eps + h) - l->force(eps - h)) / (2 * h);
+      EXPECT_NEAR(l->stiffness(eps) / df, 1.0, 1e-6) << name << " at " << eps;
+      const double dw = (l->energy(eps + h) - l->energy(eps - h)) / (2 * h);
+      EXPECT_NEAR(dw / f, 1.0, 1e-6) << name << " at " << eps;
+    }
+  }
+  // (h = 1e-6 ε keeps every stencil inside one branch; the rounding of the
+  // differences, ≈ 4·2⁻⁵²/(n·1e-6) ≈ 1e-9, and the truncation, ≈ 1e-12, are far
+  // below the 1e-6 allowed.)
+}
+
+// ---------------------------------------------------------------- piecewise
+
+ContactLawSpec piecewise(const std::string& breakpoints, const std::string& exponents,
+                         const std::string& c = "1") {
+  return {.name = "piecewise",
+          .coefficients = {{"breakpoints", breakpoints}, {"exponents", exponents}, {"C", c}}};
+}
+
+TEST(ContactLawPiecewise, DefaultsAreSeth2011) {
+  const auto defaults = make_contact_law({.name = "piecewise"});
+  const auto seth = law("seth2011");
+  for (double eps : kSamples) EXPECT_EQ(defaults->force(eps), seth->force(eps)) << eps;
+}
+
+// Breakpoints moved to ε = 0.4 and 0.9 (away from kSamples, as the stencils of
+// the helpers need): C from continuity, written here from the definition:
+// (4/3) ε^{3/2} = (4/3) C₁ ε² at 0.4 → C₁ = 0.4^{-1/2}; C₁ ε² = C₂ ε³ at 0.9.
+TEST(ContactLawPiecewise, CoefficientsFromTheParameterFileKeepTheLawContinuous) {
+  const auto l = make_contact_law(piecewise("0.4, 0.9", "1.5, 2, 3"));
+  const double c1 = 1.0 / std::sqrt(0.4), c2 = c1 / 0.9;
+  const std::vector<Branch> spec = {{0.0, 0.4, 4.0 / 3.0, 1.5},
+                                    {0.4, 0.9, 4.0 / 3.0 * c1, 2.0},
+                                    {0.9, 3.0, 4.0 / 3.0 * c2, 3.0}};
+  for (double eps : {0.05, 0.3, 0.399, 0.401, 0.6, 0.899, 0.901, 1.5}) {
+    const Branch& b = branch_at(spec, eps);
+    EXPECT_NEAR(l->force(eps) / (b.a * std::pow(eps, b.n)), 1.0, 1e-14) << eps;
+  }
+  expect_stiffness_is_derivative(*l, spec);
+  expect_energy_is_integral(*l, spec);
+  // a first prefactor C scales the whole law
+  const auto doubled = make_contact_law(piecewise("0.4, 0.9", "1.5, 2, 3", "2"));
+  for (double eps : {0.05, 0.6, 1.5}) EXPECT_NEAR(doubled->force(eps) / l->force(eps), 2.0, 1e-14);
+}
+
+TEST(ContactLawPiecewise, BadCoefficientsAreInputErrorsNamingThem) {
+  struct Case {
+    ContactLawSpec spec;
+    const char* expected;
+  };
+  const std::vector<Case> cases = {
+      {piecewise("0.1, 0.2", "1.5, 2"), "2 exponents for 2 breakpoints"},
+      {piecewise("0.2, 0.1", "1.5, 2, 3"), "breakpoints must be positive and increase"},
+      {piecewise("0.1", "1.5, 0.5"), "'exponents' = 0.5 is outside"},
+      {piecewise("0.1", "1.5, 2", "-1"), "'C' = -1 is outside"},
+      {piecewise("0.1, x", "1.5, 2, 3"), "'x' is not a number"},
+      {{.name = "piecewise", .coefficients = {{"slope", "2"}}}, "has no coefficient 'slope'"},
+      {{.name = "hertz", .coefficients = {{"C", "2"}}}, "contact law 'hertz' has no coefficient 'C'"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = input_error(c.spec);
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
   }
 }
 

@@ -15,6 +15,7 @@
 #include <random>
 
 #include "micro/contact/contact_law.h"
+#include "micro/dynamics/incremental_minimiser.h"
 #include "micro/dynamics/overdamped_shear.h"
 #include "micro/forces/ehd_drag.h"
 #include "micro/packing/packing.h"
@@ -366,6 +367,117 @@ TEST(EhdDrag, ConvergesOnEveryHardConfiguration) {
     }
   }
   EXPECT_LE(newton, 300);
+}
+
+// ------------------------------------------------- which velocity the film drags
+//
+// Two equal spheres (R = 1) along x, overlapping (h = 0.1, ε = 0.2, seth2011's
+// joint: C = √10, n = 2 by the spec table), no affine velocity across them
+// (d_y = 0). The elastic force f pushes them apart along n: by symmetry
+// v_i = −v_j = v n and the relative velocity is the normal 2v. With the paper's
+// tangential film nothing resists it, v = f/ζ; with the `full` film the drag
+// a√(2v) does, and
+//     ζ v + a √(2v) = f   ⇒   √(2v) = (√(a² + 2ζf) − a)/ζ.
+// (The engine may reorder particles: the contact's own i, j and n are used.)
+struct PairProblem {
+  ContactSystem system{Particles({Vec3(10, 10, 10), Vec3(11.9, 10, 10)}, {1.0, 1.0}),
+                       LeesEdwardsBox(20.0), testing::named_law("seth2011"), 0.1};
+  std::uint32_t i = 0, j = 0;
+  Vec3 n;
+  double force = 0.0, zeta = 0.0, a = 0.0;
+};
+
+PairProblem pair_problem() {
+  PairProblem p;
+  const ContactField& field = p.system.compute_forces({.contacts = true});
+  const ContactList& c = field.contacts;
+  p.i = c.i[0], p.j = c.j[0];
+  p.n = c.separation[0].normalized();
+  p.force = field.force[p.i].dot(p.n);
+  p.zeta = friction_of(p.system.particles())[0];
+  // a = (γ̃ C R_c³ ε^{(2n+1)/2})^{1/2} from the spec, R_c = ½, ε = 0.2, n = 2
+  const auto [cc, nn] = seth2011_branch(0.2 - 1e-12);
+  p.a = std::sqrt(kGammaTilde * cc * 0.125 * std::pow(0.2, (2.0 * nn + 1.0) / 2.0));
+  return p;
+}
+
+TEST(EhdFilm, TangentialFilmLeavesTheApproachFreeAndFullFilmDragsIt) {
+  PairProblem p = pair_problem();
+  ASSERT_GT(p.force, 0.0);
+  const ContactField& field = p.system.forces();
+  const std::vector<double> zeta(2, p.zeta);
+  for (FilmVelocity film : {FilmVelocity::tangential, FilmVelocity::full}) {
+    EhdDrag drag({.film = {film}, .tolerance = 1e-12});
+    std::vector<Vec3> v(2, Vec3::Zero());
+    drag.solve(field.contacts, kGammaTilde, zeta, field.force, v);
+    const double root = (std::sqrt(p.a * p.a + 2.0 * p.zeta * p.force) - p.a) / p.zeta;
+    const double expected = film == FilmVelocity::full ? 0.5 * root * root : p.force / p.zeta;
+    EXPECT_NEAR(v[p.i].dot(p.n) / expected, 1.0, 1e-9) << to_string(film);
+    EXPECT_NEAR(v[p.j].dot(p.n) / -expected, 1.0, 1e-9) << to_string(film);
+    EXPECT_LT((v[p.i] - p.n * v[p.i].dot(p.n)).norm(), 1e-12 * expected);
+  }
+}
+
+TEST(EhdFilm, NonaffineFilmIgnoresTheAffineSliding) {
+  // A pair stacked along y slides past itself with the affine flow (d_y e_x):
+  // the paper's film drags that sliding, the `nonaffine` one only motion
+  // relative to it.
+  ContactSystem system(Particles({Vec3(10, 11.9, 10), Vec3(10, 10, 10)}, {1.0, 1.0}),
+                       LeesEdwardsBox(20.0), testing::named_law("seth2011"), 0.1);
+  const ContactList& c = system.compute_forces({.contacts = true}).contacts;
+  ASSERT_EQ(c.size(), 1u);
+  const std::uint32_t i = c.i[0];
+  const double dy = c.separation[0].y();  // ±1.9: i above or below j
+  const double sign = dy > 0 ? 1.0 : -1.0;
+  const std::vector<Vec3> at_rest(2, Vec3::Zero());
+  std::vector<Vec3> paper(2, Vec3::Zero()), nonaffine(2, Vec3::Zero());
+  EhdDrag({}).virial(c, kGammaTilde, at_rest, paper);
+  EhdDrag({.film = {FilmVelocity::nonaffine}}).virial(c, kGammaTilde, at_rest, nonaffine);
+  EXPECT_LT(sign * paper[i].x(), 0.0);  // held back against its affine sliding
+  EXPECT_EQ(nonaffine[i], Vec3::Zero());
+  // sliding faster than the flow by 0.3: the nonaffine film drags 0.3 alone,
+  // the paper's 0.3 + |d_y|; a√|w| goes as the square root of the speed
+  std::vector<Vec3> moving(2, Vec3::Zero());
+  moving[i] = Vec3(0.3 * sign, 0, 0);
+  std::vector<Vec3> drag(2, Vec3::Zero());
+  EhdDrag({.film = {FilmVelocity::nonaffine}}).virial(c, kGammaTilde, moving, drag);
+  const std::vector<Vec3> spec = spec_drag_per_particle(c, kGammaTilde, moving);
+  const double d = std::abs(dy);
+  EXPECT_NEAR(drag[i].x() / paper[i].x(), std::sqrt(0.3 / d), 1e-12);
+  EXPECT_NEAR(spec[i].x() / paper[i].x(), std::sqrt((0.3 + d) / d), 1e-12);
+}
+
+// One implicit (backward-Euler) step of the pair from rest with the `full`
+// film: the minimiser's displacement u n of particle i (and −u n of j)
+// satisfies
+//     ζ u/h + a √(2u/h) = R_c² F((h₀ − 2u)/R_c)
+// with the drag frozen at the step's start; here that scalar equation is solved
+// by bisection with the law's own F.
+TEST(EhdFilm, ImplicitStepBalancesTheFullFilmDrag) {
+  PairProblem p = pair_problem();
+  const double h = 1e-3;
+  FrozenDrag drag;
+  freeze_drag(p.system.forces().contacts, kGammaTilde, {FilmVelocity::full}, drag);
+  EXPECT_NEAR(drag.coefficient[0] / p.a, 1.0, 1e-12);  // the frozen a is the spec's
+  const std::vector<double> proximal(2, p.zeta / h);
+  std::vector<Vec3> u(2, Vec3::Zero());
+  IncrementalMinimiser minimiser({.relative_force = 1e-12});
+  const IncrementalResult r = minimiser.minimise(p.system, proximal, drag, h, u);
+  ASSERT_TRUE(r.converged);
+
+  const auto law = testing::named_law("seth2011");
+  const auto balance = [&](double x) {
+    return p.zeta * x / h + p.a * std::sqrt(2.0 * x / h) - 0.25 * law->force((0.1 - 2.0 * x) / 0.5);
+  };
+  double lo = 0.0, hi = 0.05;
+  ASSERT_LT(balance(lo), 0.0);
+  ASSERT_GT(balance(hi), 0.0);
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (balance(mid) < 0.0 ? lo : hi) = mid;
+  }
+  EXPECT_NEAR(u[p.i].dot(p.n) / lo, 1.0, 1e-8);
+  EXPECT_NEAR(u[p.j].dot(p.n) / -lo, 1.0, 1e-8);
 }
 
 }  // namespace
