@@ -32,9 +32,11 @@ void print_packing(const RunRecord& r, const MicroParameters& prm) {
   fmt::print(
       "         Z = {:.3f} (backbone {:.3f}, {} rattlers), <eps> = {:.4f}, max eps = {:.4f}\n",
       k.coordination, k.coordination_nonrattler, k.rattlers, k.mean_deformation, k.max_deformation);
-  fmt::print("         Pi = {:.4e} E*, G0 = {:.4e} E* (affine {:.4e}), residual {:.1e}{}\n",
-             k.pressure, r.modulus.modulus, r.modulus.affine_modulus, k.residual,
-             k.converged ? "" : "  NOT CONVERGED");
+  fmt::print(
+      "         Pi = {:.4e} E*, G0 = {:.4e} E* (six shears, sd {:.2e}; x-y {:.4e}; affine "
+      "{:.4e}), residual {:.1e}{}\n",
+      k.pressure, r.modulus.modulus, r.modulus.direction_spread, r.modulus.flow_gradient_modulus,
+      r.modulus.affine_modulus, k.residual, k.converged ? "" : "  NOT CONVERGED");
 }
 
 void print_shear(const ShearRecord& s, double particles) {

@@ -16,7 +16,20 @@ namespace softglass::micro {
 
 namespace {
 
-constexpr std::int64_t kFormatVersion = 1;
+// Format 2: /packing/shear_modulus is the mean over the six simple shears
+// (format 1 held the x–y shear alone, a different number for the same packing).
+constexpr std::int64_t kFormatVersion = 2;
+
+void require_format(const H5Group& root, const std::filesystem::path& path) {
+  const std::int64_t format =
+      root.has_attribute("format_version") ? root.attribute_int("format_version") : 0;
+  if (format != kFormatVersion) {
+    throw InputError(fmt::format(
+        "'{}' has run-file format {}, this version reads {} (G0 is now the mean over six "
+        "simple shears: rerun the case)",
+        path.string(), format, kFormatVersion));
+  }
+}
 // The attribute `protocol` of /shear; files written before it existed are overdamped.
 constexpr const char* kOverdamped = "overdamped";
 constexpr const char* kQuasiStatic = "aqs";
@@ -39,7 +52,12 @@ void write_packing(H5Group& g, const PackingReport& r, const ShearModulus& m) {
   scalar("residual", r.residual, "1", "max |F_i| / mean contact force after relaxation");
   scalar("iterations", static_cast<double>(r.iterations), "1", "FIRE iterations, all stages");
   scalar("converged", r.converged ? 1.0 : 0.0, "1", "1 if the residual met the tolerance");
-  scalar("shear_modulus", m.modulus, "E*", "G0, linear shear modulus (exact linear response)");
+  scalar("shear_modulus", m.modulus, "E*",
+         "G0, linear shear modulus (exact linear response), mean over the six simple shears");
+  scalar("shear_modulus_flow_gradient", m.flow_gradient_modulus, "E*",
+         "linear modulus of the x-y simple shear alone");
+  scalar("shear_modulus_direction_sd", m.direction_spread, "E*",
+         "standard deviation of the six simple-shear moduli");
   scalar("affine_shear_modulus", m.affine_modulus, "E*", "affine (unrelaxed) shear modulus");
   scalar("shear_modulus_solver_error", m.solver_error, "1", "relative residual of H u = Xi");
 }
@@ -191,11 +209,7 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
 StoredPacking read_packing(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
-  if (root.attribute_int("format_version") != kFormatVersion) {
-    throw InputError(fmt::format("'{}' has run-file format {}, this version reads {}",
-                                 path.string(), root.attribute_int("format_version"),
-                                 kFormatVersion));
-  }
+  require_format(root, path);
   const H5Group p = root.group("packing");
   const std::string where = path.string();
   StoredConfiguration configuration = read_configuration(p.group("configuration"), where);
@@ -223,6 +237,8 @@ StoredPacking read_packing(const std::filesystem::path& path) {
   r.iterations = whole("iterations");
   r.converged = number("converged") != 0.0;
   s.modulus.modulus = number("shear_modulus");
+  s.modulus.flow_gradient_modulus = number("shear_modulus_flow_gradient");
+  s.modulus.direction_spread = number("shear_modulus_direction_sd");
   s.modulus.affine_modulus = number("affine_shear_modulus");
   s.modulus.solver_error = number("shear_modulus_solver_error");
   return s;
@@ -236,6 +252,7 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
 StoredRunSummary read_run_summary(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
+  require_format(root, path);
   if (!root.has_child("shear")) {
     throw InputError(
         fmt::format("'{}' holds no sheared run (made by `micro pack`?)", path.string()));
