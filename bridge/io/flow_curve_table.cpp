@@ -93,6 +93,15 @@ class Columns {
     return value(
         r, c, [](double v) { return v > 0; }, "> 0");
   }
+  double nonnegative(std::size_t r, std::size_t c) const {
+    return value(
+        r, c, [](double v) { return v >= 0; }, ">= 0");
+  }
+  // A quantity's value by its sign rule (flow_curve_table.h).
+  double quantity(Quantity q, std::size_t r, std::size_t c) const {
+    if (may_be_negative(q)) return csv_.number(r, c);
+    return may_be_zero(q) ? nonnegative(r, c) : positive(r, c);
+  }
   // γ̃: positive, or 0 for the quasi-static limit (a sweep's AQS rows).
   double rate(std::size_t r, std::size_t c) const {
     return value(
@@ -166,8 +175,7 @@ FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
     for (Quantity q : kAllQuantities) {
       const auto& c = quantities[index(q)];
       if (!c) continue;
-      const double v = may_be_negative(q) ? csv.number(r, c->first) : columns.positive(r, c->first);
-      p.values[index(q)] = Estimate{v, columns.positive(r, c->second)};
+      p.values[index(q)] = Estimate{columns.quantity(q, r, c->first), columns.positive(r, c->second)};
     }
     const auto [it, fresh] = seen.emplace(std::pair(p.phi, p.gamma_tilde), p.line);
     if (!fresh) {
@@ -212,7 +220,7 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
                                    csv.source(), csv.line(r), p, g, from_line[i]));
     }
     from_line[i] = csv.line(r);
-    it->values[force] = Estimate{columns.positive(r, value), columns.positive(r, error)};
+    it->values[force] = Estimate{columns.nonnegative(r, value), columns.positive(r, error)};
   }
   for (std::size_t i = 0; i < table.points.size(); ++i) {
     if (from_line[i] == 0) {
@@ -242,8 +250,7 @@ std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
     for (Quantity q : kAllQuantities) {
       const auto& c = quantities[index(q)];
       if (!c) continue;
-      run.values[index(q)] =
-          may_be_negative(q) ? csv.number(r, c->first) : columns.positive(r, c->first);
+      run.values[index(q)] = columns.quantity(q, r, c->first);
     }
     runs.push_back(run);
   }

@@ -52,10 +52,13 @@ using PerQuantity = std::array<std::optional<T>, kQuantities>;
 inline std::size_t index(Quantity q) {
   return static_cast<std::size_t>(q);
 }
-/// N1 and N2 may take either sign; σ and the contact force are positive.
+/// N1 and N2 may take either sign; σ is positive.
 inline bool may_be_negative(Quantity q) {
   return q == Quantity::N1 || q == Quantity::N2;
 }
+/// f_m may be 0: the minimum of g_{2,-2} can lie beyond contact of two mean
+/// spheres (r_m > 2R at low rates and φ), where no force acts.
+inline bool may_be_zero(Quantity q) { return q == Quantity::force; }
 
 /// One state point of the table, averaged over its packings.
 struct StatePoint {

@@ -108,6 +108,32 @@ TEST(FlowCurveTable, RefusesDegenerateTablesNamingTheProblem) {
   }
 }
 
+// The synthetic table with the first data row's `column` set to `value`.
+std::string with_first_row(const std::string& column, const std::string& value) {
+  std::string text = testing::table_csv(testing::make_synthetic_sweep({}, 1));
+  const auto header_start = text.find("phi [1]");
+  const auto header_end = text.find('\n', header_start);
+  const std::string header = text.substr(header_start, header_end - header_start);
+  std::size_t field = 0;
+  for (std::size_t at = 0; at < header.find(column); ++at) field += header[at] == ',';
+  const auto row_start = header_end + 1, row_end = text.find('\n', row_start);
+  std::string row = text.substr(row_start, row_end - row_start);
+  std::size_t begin = 0;
+  for (std::size_t k = 0; k < field; ++k) begin = row.find(',', begin) + 1;
+  const std::size_t end = std::min(row.find(',', begin), row.size());
+  row.replace(begin, end - begin, value);
+  return text.replace(row_start, row_end - row_start, row);
+}
+
+// f_m = 0 is a value (the minimum of g_{2,-2} beyond contact, no force there);
+// a negative f_m is not.
+TEST(FlowCurveTable, ForceAtMaximumAccumulationMayBeZeroNotNegative) {
+  const FlowCurveTable t = parse_table(with_first_row("f_m [E*R^2]", "0"));
+  EXPECT_EQ(t.points[0].values[index(Quantity::force)]->value, 0.0);
+  expect_contains(refusal(with_first_row("f_m [E*R^2]", "-0.01")),
+                  {"'f_m [E*R^2]'", "must be >= 0"});
+}
+
 // A sweep's quasi-static rows (γ̃ = 0, one per φ) are read, kept out of the
 // curves and of G0 — the sweep is that of the table without them — and their
 // stresses kept beside the curves; the companion's quasi-static runs are
