@@ -67,6 +67,10 @@ VARIANTS = {
     "hertz": ({("contact law", "law"): "hertz"}, "Hertz at every ε"),
     "hertz_fr1": ({("contact law", "law"): "hertz", ("shear", "mobility factor"): "1"},
                   "Hertz, f_r = 1"),
+    # seth2011's breakpoints read as nominal strain δ/2R = ε/4 of a sphere
+    # between plates (Liu et al.'s measure: Hertz to 10 %, stiffer beyond).
+    "nominal": (piecewise([0.4, 0.8], [1.5, 2, 3]),
+                "seth2011's branches at eps = 0.4, 0.8 (10 %, 20 % nominal strain)"),
     "poly20": ({("particles", "polydispersity"): "0.2"}, "literal, 20 % polydispersity"),
     # The film-dominated limit: friction against the affine flow below a free
     # sphere's Stokes drag. The explicit step scales like γ̃/f_r, so these run
