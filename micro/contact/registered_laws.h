@@ -7,4 +7,5 @@
   LAW(seth2011)                     \
   LAW(hertz)                        \
   LAW(piecewise)                    \
+  LAW(power)                        \
   LAW(table)

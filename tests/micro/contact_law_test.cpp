@@ -354,6 +354,22 @@ TEST(ContactLaw, EveryRegisteredLawIsConsistent) {
   // below the 1e-6 allowed.)
 }
 
+// -------------------------------------------------------------------- power
+
+// (4/3) C ε^n with the user's C and n, written here from the definition.
+TEST(ContactLawPower, IsFourThirdsCEpsilonToTheN) {
+  const auto l = make_contact_law({.name = "power", .coefficients = {{"C", "2"}, {"n", "2.5"}}});
+  const std::vector<Branch> spec = {{0.0, 3.0, 8.0 / 3.0, 2.5}};
+  for (double eps : kSamples)
+    EXPECT_NEAR(l->force(eps) / (8.0 / 3.0 * std::pow(eps, 2.5)), 1.0, 1e-14) << eps;
+  expect_stiffness_is_derivative(*l, spec);
+  expect_energy_is_integral(*l, spec);
+  // the defaults are Hertz
+  const auto hertz = law("hertz");
+  const auto defaults = make_contact_law({.name = "power"});
+  for (double eps : kSamples) EXPECT_NEAR(defaults->force(eps) / hertz->force(eps), 1.0, 1e-14);
+}
+
 // ---------------------------------------------------------------- piecewise
 
 ContactLawSpec piecewise(const std::string& breakpoints, const std::string& exponents,
