@@ -21,10 +21,14 @@ and per variant: k, k', k'' fitted over all φ with their collapse statistic
 the mobility factor f_r are compared point by point (the paper's claim: σ does
 not change for f_r < 0.1).
 
+With --static, only the packings are made (`micro pack`, no shear): G0/E*,
+Π/E* and ⟨ε⟩ per φ and variant against compressed emulsions — the check of the
+contact law that does not involve the dynamics (default φ 0.66 … 0.90).
+
 Usage (bench/model_sensitivity.sh wraps it):
   model_sensitivity.py --bin BUILD --out DIR [--variants a,b,...] [--phis ...]
                        [--rates ...] [--particles N] [--packings P] [--strain S]
-                       [--ranks R] [--list]
+                       [--ranks R] [--static] [--list]
 Finished sweeps are not rerun (micro sweep resumes), so the study can be grown
 one variant at a time into the same DIR.
 """
@@ -53,8 +57,8 @@ def mason_yield(phi):
 
 def piecewise(breakpoints, exponents):
     return {("contact law", "law"): "piecewise",
-            ("contact law", "breakpoints"): ", ".join(str(b) for b in breakpoints),
-            ("contact law", "exponents"): ", ".join(str(n) for n in exponents)}
+            ("contact law", "piecewise breakpoints"): ", ".join(str(b) for b in breakpoints),
+            ("contact law", "piecewise exponents"): ", ".join(str(n) for n in exponents)}
 
 
 # name -> (entries {(subsection, entry): value}, one-line description)
@@ -71,6 +75,8 @@ VARIANTS = {
     # between plates (Liu et al.'s measure: Hertz to 10 %, stiffer beyond).
     "nominal": (piecewise([0.4, 0.8], [1.5, 2, 3]),
                 "seth2011's branches at eps = 0.4, 0.8 (10 %, 20 % nominal strain)"),
+    "half_nominal": (piecewise([0.2, 0.4], [1.5, 2, 3]),
+                     "seth2011's branches at eps = 0.2, 0.4 (between seth2011 and nominal)"),
     "poly20": ({("particles", "polydispersity"): "0.2"}, "literal, 20 % polydispersity"),
     # The film-dominated limit: friction against the affine flow below a free
     # sphere's Stokes drag. The explicit step scales like γ̃/f_r, so these run
@@ -227,6 +233,49 @@ def mobility_sensitivity(args, done):
     return lines
 
 
+def static_scan(args, names):
+    """G0, Π, ⟨ε⟩ of relaxed packings per variant and φ (micro pack)."""
+    import h5py  # Debian's python3-h5py
+    phis = args.phis if args.phis_given else ["0.66", "0.70", "0.75", "0.80", "0.85", "0.90"]
+    print(f"# static packings: N = {args.particles}, {args.packings} packings per phi; "
+          f"Mason: G' = 1.7 (gamma_i/R) phi (phi - {PHI_C}), E* = {E_STAR_PER_LAPLACE} gamma_i/R")
+    print(" ".join(f"{h:>13}" for h in ("variant", "phi", "G0 [E*]", "G0/Mason", "Pi [E*]",
+                                          "<eps>", "Z", "seconds")))
+    for name in names:
+        entries = {k: v for k, v in VARIANTS[name][0].items() if k[0] in ("contact law", "particles")}
+        folder = os.path.join(args.out, "static", name)
+        os.makedirs(folder, exist_ok=True)
+        for phi in phis:
+            g0, pressure, eps, z, seconds = [], [], [], [], 0.0
+            for seed in range(1, args.packings + 1):
+                out = os.path.join(folder, f"phi{phi}_seed{seed}.h5")
+                if not os.path.exists(out):
+                    prm = os.path.join(folder, f"phi{phi}_seed{seed}.prm")
+                    sweep = {("particles", "number"): str(args.particles),
+                             ("particles", "volume fraction"): phi,
+                             ("particles", "seed"): str(seed),
+                             ("output", "file"): out}
+                    variant_file(prm, name, entries, sweep)
+                    start = time.time()
+                    status = subprocess.run([os.path.join(args.bin, "micro"), "--threads", "1",
+                                             "pack", "-q", prm], capture_output=True, text=True)
+                    seconds += time.time() - start
+                    if status.returncode != 0:
+                        sys.exit(f"variant {name}, phi {phi}: micro pack failed: {status.stderr}")
+                with h5py.File(out) as f:
+                    p = f["packing"]
+                    g0.append(float(p["shear_modulus"][()]))
+                    pressure.append(float(p["pressure"][()]))
+                    eps.append(float(p["mean_deformation"][()]))
+                    z.append(float(p["coordination"][()]))
+            mean = sum(g0) / len(g0)
+            se = (sum((g - mean) ** 2 for g in g0) / max(1, len(g0) - 1) / len(g0)) ** 0.5
+            cells = (name, phi, fmt(mean, se), fmt(mean / mason_g0(float(phi))),
+                     fmt(sum(pressure) / len(pressure)), fmt(sum(eps) / len(eps)),
+                     fmt(sum(z) / len(z)), f"{seconds:.0f}")
+            print(" ".join(f"{c:>13}" for c in cells), flush=True)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--bin", default="build/bin")
@@ -238,8 +287,11 @@ def main():
     parser.add_argument("--packings", type=int, default=2)
     parser.add_argument("--strain", type=float, default=5.0)
     parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--static", action="store_true",
+                        help="packings only: G0 against compressed emulsions")
     parser.add_argument("--list", action="store_true", help="print the variants and stop")
     args = parser.parse_args()
+    args.phis_given = args.phis != parser.get_default("phis")
     if args.list:
         for name, (_, text) in VARIANTS.items():
             print(f"{name:<14} {text}")
@@ -252,6 +304,9 @@ def main():
         sys.exit(f"unknown variant(s) {', '.join(unknown)}; --list shows them")
     args.out = os.path.abspath(args.out)
     args.bin = os.path.abspath(args.bin)
+    if args.static:
+        static_scan(args, names)
+        return
     table = []
     for name in names:
         folder = run_variant(args, name)

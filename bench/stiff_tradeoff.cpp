@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "micro/dynamics/aqs.h"
+#include "micro/protocol/aqs.h"
 #include "micro/dynamics/integrator.h"
 #include "micro/packing/packing.h"
 

@@ -15,7 +15,7 @@
 
 #include <span>
 
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
 

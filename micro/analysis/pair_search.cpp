@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "common/errors.h"
-#include "micro/neighbour/neighbour_list.h"
+#include "micro/geometry/neighbour_list.h"
 
 namespace softglass::micro {
 

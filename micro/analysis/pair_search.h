@@ -7,7 +7,7 @@
 #include <functional>
 #include <span>
 
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
 

@@ -27,7 +27,7 @@
 #include <array>
 #include <cstddef>
 
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 
 namespace softglass::micro {
 

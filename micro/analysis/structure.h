@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "micro/contact/contact_law.h"
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
 

@@ -19,7 +19,7 @@
 #include "common/errors.h"
 #include "common/version.h"
 #include "micro/app/commands.h"
-#include "micro/app/parameter_file.h"
+#include "micro/input/parameter_file.h"
 #include "micro/app/sweep_command.h"
 #include "micro/app/workers.h"
 

@@ -9,7 +9,7 @@
 
 #include "common/errors.h"
 #include "common/progress.h"
-#include "micro/analysis/run_structure.h"
+#include "micro/results/run_structure.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/io/checkpoint_file.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "common/atomic_output.h"
-#include "micro/app/parameter_file.h"
+#include "micro/input/parameter_file.h"
 #include "micro/io/run_file.h"
 #include "micro/protocol/quasi_static_run.h"
 

@@ -24,7 +24,7 @@
 #include "common/version.h"
 #include "micro/app/run_steps.h"
 #include "micro/sweep/directory_lock.h"
-#include "micro/sweep/flow_curve_table.h"
+#include "micro/results/flow_curve_table.h"
 
 namespace softglass::micro {
 

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "micro/app/parameter_file.h"
+#include "micro/input/parameter_file.h"
 #include "micro/app/workers.h"
 
 namespace softglass::micro {

@@ -7,7 +7,7 @@
 //
 // so the paper's law is F(ε) = (4/3) C ε^n. The pair stiffness along the normal
 // is df/dh = E* R_c F'(ε). The EHD drag needs only F as well (see
-// forces/ehd_drag.h).
+// model/ehd_drag.h).
 //
 // A new law is one new file — a class deriving from ContactLawImpl (see
 // contact_law_impl.h) that defines F, F′ and W, and a function returning its

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "micro/contact/contact_law.h"
-#include "micro/forces/contact_kernel.h"
+#include "micro/contact/contact_kernel.h"
 
 namespace softglass::micro {
 

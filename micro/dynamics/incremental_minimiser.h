@@ -46,9 +46,9 @@
 #include <span>
 #include <vector>
 
-#include "micro/forces/block_cg.h"
-#include "micro/forces/film.h"
-#include "micro/system/contact_system.h"
+#include "micro/numerics/block_cg.h"
+#include "micro/model/film.h"
+#include "micro/model/contact_system.h"
 
 namespace softglass::micro {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "micro/dynamics/overdamped_shear.h"
+#include "micro/model/overdamped_shear.h"
 
 namespace softglass::micro {
 

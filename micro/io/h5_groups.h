@@ -8,8 +8,8 @@
 
 #include "common/h5_file.h"
 #include "micro/protocol/shear_run.h"
-#include "micro/system/lees_edwards_box.h"
-#include "micro/system/particles.h"
+#include "micro/geometry/lees_edwards_box.h"
+#include "micro/geometry/particles.h"
 
 namespace softglass::micro {
 

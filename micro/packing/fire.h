@@ -16,7 +16,7 @@
 
 #include <cstddef>
 
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 
 namespace softglass::micro {
 

@@ -15,8 +15,8 @@
 #include <memory>
 
 #include "micro/packing/fire.h"
-#include "micro/system/contact_system.h"
-#include "micro/system/radius_distribution.h"
+#include "micro/model/contact_system.h"
+#include "micro/geometry/radius_distribution.h"
 
 namespace softglass::micro {
 

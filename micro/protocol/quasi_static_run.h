@@ -22,7 +22,7 @@
 #include <limits>
 #include <memory>
 
-#include "micro/dynamics/aqs.h"
+#include "micro/protocol/aqs.h"
 #include "micro/protocol/shear_run.h"
 
 namespace softglass::micro {

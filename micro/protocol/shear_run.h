@@ -23,7 +23,7 @@
 
 #include "micro/analysis/steady_state.h"
 #include "micro/dynamics/integrator.h"
-#include "micro/dynamics/overdamped_shear.h"
+#include "micro/model/overdamped_shear.h"
 
 namespace softglass::micro {
 

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "micro/dynamics/aqs.h"
+#include "micro/protocol/aqs.h"
 
 namespace softglass::micro {
 

@@ -305,7 +305,7 @@ TEST(FlowCurveTable, MergesACompanionStructureTable) {
   expect_contains(refusal_of(pascals, bare), {"'f_m [N]'", "expected 'E*R^2'"});
 }
 
-// The columns `micro sweep` writes (micro/sweep/flow_curve_table.cpp): the
+// The columns `micro sweep` writes (micro/results/flow_curve_table.cpp): the
 // documented ones in its order, with the elastic/viscous parts, pressure, Z,
 // converged, and the structure columns r_m (ignored) and f_m (the force law).
 TEST(FlowCurveTable, ReadsTheTableMicroSweepWrites) {

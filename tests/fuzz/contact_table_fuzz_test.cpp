@@ -1,4 +1,4 @@
-// Fuzzing the contact-law table (`contact law = table`, micro/contact/table.cpp):
+// Fuzzing the contact-law table (`contact law = table`, micro/contact/laws/table.cpp):
 // a text file of (deformation, reduced force) rows, interpolated as a power law
 // between rows. An accepted table must never give NaN or a negative force.
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
-// Fuzzing the micro parameter and sweep files (micro/app/parameter_file.h):
+// Fuzzing the micro parameter and sweep files (micro/input/parameter_file.h):
 // mutations of the cases and of the full template, read in-process.
 #include <gtest/gtest.h>
 
 #include "fuzz_check.h"
-#include "micro/app/parameter_file.h"
+#include "micro/input/parameter_file.h"
 #include "tests/common/test_files.h"
 
 namespace softglass::micro {

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "micro/analysis/run_structure.h"
+#include "micro/results/run_structure.h"
 #include "micro/contact/contact_law.h"
 #include "micro/io/checkpoint_file.h"
 #include "micro/io/run_file.h"

@@ -14,7 +14,7 @@
 
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/integrator.h"
-#include "micro/dynamics/overdamped_shear.h"
+#include "micro/model/overdamped_shear.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

@@ -1,4 +1,4 @@
-// Elastohydrodynamic drag and the implicit velocities (forces/ehd_drag.h).
+// Elastohydrodynamic drag and the implicit velocities (micro/model/ehd_drag.h).
 //
 // Spec (model.md §3), reduced units (forces E* R², velocities γ̇ R):
 //     f^EHD on α from β = −(γ̃ C u∥ R_c³)^{1/2} ε^{(2n+1)/4} t̂,
@@ -16,10 +16,10 @@
 
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/incremental_minimiser.h"
-#include "micro/dynamics/overdamped_shear.h"
-#include "micro/forces/ehd_drag.h"
+#include "micro/model/overdamped_shear.h"
+#include "micro/model/ehd_drag.h"
 #include "micro/packing/packing.h"
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

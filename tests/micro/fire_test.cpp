@@ -5,7 +5,7 @@
 #include "common/errors.h"
 #include "micro/contact/contact_law.h"
 #include "micro/packing/fire.h"
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

@@ -2,7 +2,7 @@
 // boundary at strain 0, 0.5 and after many box lengths.
 #include <gtest/gtest.h>
 
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
 namespace {

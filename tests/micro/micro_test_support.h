@@ -32,8 +32,8 @@
 #include "micro/io/run_file.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
-#include "micro/system/lees_edwards_box.h"
-#include "micro/system/particles.h"
+#include "micro/geometry/lees_edwards_box.h"
+#include "micro/geometry/particles.h"
 
 #include "tests/common/test_files.h"
 

@@ -13,8 +13,8 @@
 
 #include "common/errors.h"
 #include "micro/contact/contact_law.h"
-#include "micro/forces/contact_forces.h"
-#include "micro/neighbour/neighbour_list.h"
+#include "micro/contact/contact_forces.h"
+#include "micro/geometry/neighbour_list.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

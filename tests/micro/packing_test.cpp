@@ -9,7 +9,7 @@
 #include <numeric>
 
 #include "micro/contact/contact_law.h"
-#include "micro/dynamics/overdamped_shear.h"
+#include "micro/model/overdamped_shear.h"
 #include "micro/packing/packing.h"
 #include "micro_test_support.h"
 

@@ -6,7 +6,7 @@
 #include <cfloat>
 
 #include "micro/contact/contact_law.h"
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

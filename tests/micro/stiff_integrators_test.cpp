@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "common/errors.h"
-#include "micro/dynamics/aqs.h"
+#include "micro/protocol/aqs.h"
 #include "micro/dynamics/incremental_minimiser.h"
 #include "micro_test_support.h"
 

@@ -10,8 +10,8 @@
 #include <cmath>
 
 #include "micro/contact/contact_law.h"
-#include "micro/dynamics/overdamped_shear.h"
-#include "micro/system/contact_system.h"
+#include "micro/model/overdamped_shear.h"
+#include "micro/model/contact_system.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

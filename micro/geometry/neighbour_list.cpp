@@ -1,4 +1,4 @@
-#include "micro/neighbour/neighbour_list.h"
+#include "micro/geometry/neighbour_list.h"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -1,4 +1,4 @@
-#include "micro/system/particles.h"
+#include "micro/geometry/particles.h"
 
 #include <algorithm>
 #include <numbers>

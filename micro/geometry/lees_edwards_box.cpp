@@ -1,4 +1,4 @@
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 #include <stdexcept>
 

@@ -13,9 +13,9 @@
 #include <span>
 
 #include "micro/contact/contact_law.h"
-#include "micro/forces/contact_forces.h"
-#include "micro/neighbour/neighbour_list.h"
-#include "micro/system/particles.h"
+#include "micro/contact/contact_forces.h"
+#include "micro/geometry/neighbour_list.h"
+#include "micro/geometry/particles.h"
 
 namespace softglass::micro {
 

@@ -19,8 +19,8 @@
 #include <limits>
 #include <vector>
 
-#include "micro/forces/ehd_drag.h"
-#include "micro/system/contact_system.h"
+#include "micro/model/ehd_drag.h"
+#include "micro/model/contact_system.h"
 
 namespace softglass::micro {
 

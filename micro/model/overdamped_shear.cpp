@@ -1,4 +1,4 @@
-#include "micro/dynamics/overdamped_shear.h"
+#include "micro/model/overdamped_shear.h"
 
 #include <fmt/format.h>
 

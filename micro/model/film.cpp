@@ -1,4 +1,4 @@
-#include "micro/forces/film.h"
+#include "micro/model/film.h"
 
 #include <fmt/format.h>
 

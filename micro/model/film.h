@@ -27,7 +27,7 @@
 #include <cmath>
 #include <string>
 
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
 

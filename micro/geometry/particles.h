@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "micro/system/lees_edwards_box.h"
+#include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
 

@@ -1,6 +1,6 @@
 // Preconditioned conjugate gradients for the Newton systems of the engine,
 // H x = −g with one 3-vector per particle: the EHD velocity solve
-// (forces/ehd_drag.cpp) and the implicit step's minimisation
+// (model/ehd_drag.cpp) and the implicit step's minimisation
 // (dynamics/incremental_minimiser.cpp). H is applied matrix-free; the
 // preconditioner is the inverse of H's diagonal (3×3 blocks or scalars).
 //
@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "micro/system/particles.h"
+#include "micro/geometry/particles.h"
 
 namespace softglass::micro {
 

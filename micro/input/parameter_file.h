@@ -10,7 +10,7 @@
 #include "micro/analysis/structure.h"
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/integrator.h"
-#include "micro/dynamics/overdamped_shear.h"
+#include "micro/model/overdamped_shear.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
 #include "micro/sweep/sweep_plan.h"

@@ -1,4 +1,4 @@
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 
 #include <fmt/format.h>
 

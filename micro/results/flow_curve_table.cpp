@@ -1,4 +1,4 @@
-#include "micro/sweep/flow_curve_table.h"
+#include "micro/results/flow_curve_table.h"
 
 #include <fmt/format.h>
 

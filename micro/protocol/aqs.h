@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "micro/protocol/shear_run.h"
-#include "micro/system/contact_system.h"
+#include "micro/model/contact_system.h"
 
 namespace softglass::micro {
 

@@ -1,4 +1,4 @@
-#include "micro/analysis/run_structure.h"
+#include "micro/results/run_structure.h"
 
 #include <fmt/format.h>
 

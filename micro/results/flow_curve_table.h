@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "micro/analysis/packing_average.h"
+#include "micro/results/packing_average.h"
 #include "micro/io/run_file.h"
 
 namespace softglass::micro {

@@ -1,4 +1,4 @@
-#include "micro/forces/ehd_drag.h"
+#include "micro/model/ehd_drag.h"
 
 #include <fmt/format.h>
 

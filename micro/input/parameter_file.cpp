@@ -1,4 +1,4 @@
-#include "micro/app/parameter_file.h"
+#include "micro/input/parameter_file.h"
 
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>

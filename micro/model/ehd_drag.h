@@ -55,9 +55,9 @@
 #include <string>
 #include <vector>
 
-#include "micro/forces/block_cg.h"
-#include "micro/forces/contact_forces.h"
-#include "micro/forces/film.h"
+#include "micro/numerics/block_cg.h"
+#include "micro/contact/contact_forces.h"
+#include "micro/model/film.h"
 
 namespace softglass::micro {
 

@@ -1,4 +1,4 @@
-#include "micro/dynamics/aqs.h"
+#include "micro/protocol/aqs.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "micro/system/radius_distribution.h"
+#include "micro/geometry/radius_distribution.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "micro/analysis/packing_average.h"
+#include "micro/results/packing_average.h"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
-#include "micro/forces/contact_forces.h"
-#include "micro/forces/contact_kernel.h"
+#include "micro/contact/contact_forces.h"
+#include "micro/contact/contact_kernel.h"
 
 #include <omp.h>
 

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "micro/forces/contact_forces.h"
+#include "micro/contact/contact_forces.h"
 
 namespace softglass::micro {
 
