@@ -58,7 +58,7 @@ Packing tile(const Packing& base, int k) {
 int main(int argc, char** argv) {
   CLI::App app{"engine_bench: particle-steps per second and memory per particle"};
   PackingSpec spec;
-  spec.radii.shape = RadiusShape::uniform;  // as the LAMMPS peer input: diameters 0.83 … 1.17
+  spec.radii.shape = "uniform";  // as the LAMMPS peer input: diameters 0.83 … 1.17
   std::string law_name = "hertz";
   int tile_factor = 1, steps = 2000, threads = 1;
   double strain_per_step = 2e-6, gamma_tilde = 1e-4;

@@ -76,7 +76,8 @@ ComponentValues ComponentValues::parse(const std::string& text) {
     const auto eq = line.find(" = ");
     if (eq == std::string::npos) {
       if (!trimmed(line).empty())
-        throw InputError(fmt::format("component coefficients: line '{}' is not 'name = value'", line));
+        throw InputError(
+            fmt::format("component coefficients: line '{}' is not 'name = value'", line));
       continue;
     }
     values.set(trimmed(line.substr(0, eq)), trimmed(line.substr(eq + 3)));
@@ -98,9 +99,8 @@ ComponentValues complete_values(const std::string& what,
     if (p.kind == ComponentParameter::Kind::file) continue;
     std::vector<double> numbers;
     try {
-      numbers = p.kind == ComponentParameter::Kind::number
-                    ? std::vector<double>{out.number(p.name)}
-                    : out.numbers(p.name);
+      numbers = p.kind == ComponentParameter::Kind::number ? std::vector<double>{out.number(p.name)}
+                                                           : out.numbers(p.name);
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", what, e.what()));
     }

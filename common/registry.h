@@ -73,13 +73,18 @@ ComponentValues complete_values(const std::string& what,
                                 const std::vector<ComponentParameter>& declared,
                                 const ComponentValues& values);
 
-/// A registered component: name, summary, coefficients and factory.
-template <class Product, class Spec>
+/// No traits beyond name, summary, coefficients and factory.
+struct NoTraits {};
+
+/// A registered component: name, summary, coefficients, factory, and whatever
+/// else the tools need to know of a component of this kind (`Traits`).
+template <class Product, class Spec, class Traits = NoTraits>
 struct ComponentEntry {
   std::string name;
   std::string summary;
   std::vector<ComponentParameter> parameters;
   std::unique_ptr<Product> (*make)(const Spec&) = nullptr;
+  Traits traits{};
 };
 
 template <class Entry>
@@ -104,8 +109,8 @@ class Registry {
   const Entry& at(const std::string& name) const {
     for (const Entry& e : entries_)
       if (e.name == name) return e;
-    throw InputError(fmt::format("{} '{}' is unknown; allowed: {}", kind_, name,
-                                 fmt::join(names(), ", ")));
+    throw InputError(
+        fmt::format("{} '{}' is unknown; allowed: {}", kind_, name, fmt::join(names(), ", ")));
   }
 
  private:

@@ -17,8 +17,9 @@ Eigen::SparseMatrix<double> hessian(const ContactList& c, Eigen::Index dof) {
     const Vec3& d = c.separation[k];
     const double r = d.norm();
     const Vec3 n = d / r;
-    const Eigen::Matrix3d block = c.stiffness[k] * n * n.transpose() -
-                                  (c.force[k] / r) * (Eigen::Matrix3d::Identity() - n * n.transpose());
+    const Eigen::Matrix3d block =
+        c.stiffness[k] * n * n.transpose() -
+        (c.force[k] / r) * (Eigen::Matrix3d::Identity() - n * n.transpose());
     const Eigen::Index i = 3 * c.i[k], j = 3 * c.j[k];
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) {
@@ -80,7 +81,8 @@ ShearModulus shear_modulus(ContactSystem& system, double tolerance) {
   result.modulus = sum / count;
   result.affine_modulus = affine / count;
   result.flow_gradient_modulus = result.directions[0];
-  result.direction_spread = std::sqrt(std::max(0.0, sum2 / count - result.modulus * result.modulus));
+  result.direction_spread =
+      std::sqrt(std::max(0.0, sum2 / count - result.modulus * result.modulus));
   return result;
 }
 

@@ -42,8 +42,8 @@ struct ShearModulus {
   double affine_modulus = 0.0;         // mean E_γγ / V, the upper bound without relaxation
   std::array<double, 6> directions{};  // each simple shear's modulus, in kSimpleShears order
   std::array<double, 6> affine_directions{};
-  std::size_t iterations = 0;          // conjugate-gradient iterations, all six solves
-  double solver_error = 0.0;           // largest relative residual of H u = Ξ
+  std::size_t iterations = 0;  // conjugate-gradient iterations, all six solves
+  double solver_error = 0.0;   // largest relative residual of H u = Ξ
 };
 
 ShearModulus shear_modulus(ContactSystem& system, double tolerance = 1e-10);

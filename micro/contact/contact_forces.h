@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "micro/contact/contact_law.h"
-#include "micro/geometry/neighbour_list.h"
 #include "micro/geometry/lees_edwards_box.h"
+#include "micro/geometry/neighbour_list.h"
 
 namespace softglass::micro {
 

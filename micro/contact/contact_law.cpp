@@ -37,7 +37,8 @@ double ContactLaw::stiffness(double deformation) const {
 std::string ContactLawSpec::table() const {
   if (name != "table" || !table_text.empty()) return table_text;
   const std::string file = coefficients.has("file") ? coefficients.text("file") : "";
-  if (file.empty()) throw InputError("contact law 'table' needs 'table file' in subsection 'contact law'");
+  if (file.empty())
+    throw InputError("contact law 'table' needs 'table file' in subsection 'contact law'");
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", file));
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -46,8 +47,8 @@ std::string ContactLawSpec::table() const {
 ContactLawSpec completed(const ContactLawSpec& spec) {
   const ContactLawEntry& entry = contact_laws().at(spec.name);
   ContactLawSpec out = spec;
-  out.coefficients = complete_values(fmt::format("contact law '{}'", spec.name),
-                                     entry.parameters, spec.coefficients);
+  out.coefficients = complete_values(fmt::format("contact law '{}'", spec.name), entry.parameters,
+                                     spec.coefficients);
   return out;
 }
 

@@ -7,8 +7,8 @@
 // force kernel (forces/contact_kernel.h) once per law with F inlined.
 #pragma once
 
-#include "micro/contact/contact_law.h"
 #include "micro/contact/contact_kernel.h"
+#include "micro/contact/contact_law.h"
 
 namespace softglass::micro {
 

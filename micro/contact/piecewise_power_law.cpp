@@ -74,8 +74,8 @@ PiecewisePowerLaw PiecewisePowerLaw::continuous(const std::string& what, double 
     // a_k ε_k^{n_k} = a_{k−1} ε_k^{n_{k−1}} at the breakpoint ε_k
     const Branch& below = branches.back();
     const double e = breakpoints[k];
-    branches.push_back({e, below.prefactor * std::pow(e, below.exponent - exponents[k + 1]),
-                        exponents[k + 1]});
+    branches.push_back(
+        {e, below.prefactor * std::pow(e, below.exponent - exponents[k + 1]), exponents[k + 1]});
   }
   return PiecewisePowerLaw(std::move(branches));
 }

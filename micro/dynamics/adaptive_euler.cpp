@@ -68,10 +68,19 @@ class AdaptiveEuler final : public Integrator {
   OverdampedShear::Snapshot before_;  // the state a rejected step returns to
 };
 
+std::unique_ptr<Integrator> make(const IntegratorSpec& spec) {
+  return std::make_unique<AdaptiveEuler>(spec);
+}
 }  // namespace
 
-std::unique_ptr<Integrator> make_adaptive_euler(const IntegratorSpec& spec) {
-  return std::make_unique<AdaptiveEuler>(spec);
+// Cost (sweep planning): 25 s per 5 strain at N = 1000, γ̃ = 1e-5, steps per
+// strain ∝ γ̃^-0.8 below (docs/sweeps.md, docs/validation.md).
+IntegratorEntry euler_integrator() {
+  return {"euler",
+          "explicit Euler with error control, step below the stability limit (cost ~ 1/gamma~)",
+          {},
+          make,
+          {.default_tolerance = 1e-4, .seconds_at_reference = 25.0, .rate_exponent = -0.8}};
 }
 
 }  // namespace softglass::micro

@@ -1,27 +1,25 @@
 #include "micro/dynamics/integrator.h"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <algorithm>
-#include <array>
 
 #include "common/errors.h"
+#include "micro/dynamics/registered_integrators.h"
 
 namespace softglass::micro {
 
-// Each scheme lives in its own file and provides its factory.
-std::unique_ptr<Integrator> make_adaptive_euler(const IntegratorSpec&);
-std::unique_ptr<Integrator> make_backward_euler(const IntegratorSpec&);
+#define SOFTGLASS_DECLARE_INTEGRATOR(name) IntegratorEntry name##_integrator();
+SOFTGLASS_INTEGRATORS(SOFTGLASS_DECLARE_INTEGRATOR)
+#undef SOFTGLASS_DECLARE_INTEGRATOR
 
-namespace {
-struct RegisteredIntegrator {
-  const char* name;
-  std::unique_ptr<Integrator> (*make)(const IntegratorSpec&);
-};
-constexpr std::array kRegistry{RegisteredIntegrator{"euler", make_adaptive_euler},
-                               RegisteredIntegrator{"implicit", make_backward_euler}};
-}  // namespace
+const Registry<IntegratorEntry>& integrators() {
+#define SOFTGLASS_LIST_INTEGRATOR(name) name##_integrator(),
+  static const Registry<IntegratorEntry> registry(
+      "integrator", {SOFTGLASS_INTEGRATORS(SOFTGLASS_LIST_INTEGRATOR)});
+#undef SOFTGLASS_LIST_INTEGRATOR
+  return registry;
+}
 
 void Integrator::record_accepted(double dt) {
   stats_.smallest_step = stats_.accepted == 0 ? dt : std::min(stats_.smallest_step, dt);
@@ -43,14 +41,8 @@ void IntegratorSpec::validate() const {
           fmt::format("implicit solver tolerance = {} is outside (0, 1e-3]", solver_tolerance));
 }
 
-std::vector<std::string> integrator_names() {
-  std::vector<std::string> names;
-  for (const auto& i : kRegistry) names.emplace_back(i.name);
-  return names;
-}
-
 double default_tolerance(const std::string& scheme) {
-  return scheme == "implicit" ? 1e-3 : 1e-4;
+  return integrators().at(scheme).traits.default_tolerance;
 }
 
 namespace {
@@ -71,12 +63,7 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec) {
   require(spec.name != "auto",
           "integrator 'auto' depends on the shear rate: resolve it first (resolved_for)");
   spec.validate();
-  const IntegratorSpec resolved = with_default_tolerance(spec);
-  for (const auto& i : kRegistry) {
-    if (spec.name == i.name) return i.make(resolved);
-  }
-  throw InputError(fmt::format("integrator '{}' is unknown; allowed: auto, {}", spec.name,
-                               fmt::join(integrator_names(), ", ")));
+  return integrators().at(spec.name).make(with_default_tolerance(spec));
 }
 
 }  // namespace softglass::micro

@@ -1,5 +1,8 @@
 // Time integrators for the overdamped shear dynamics: one small interface, one
-// scheme per file, chosen by name (`integrator = euler` in the parameter file).
+// scheme per file, chosen by name (`scheme = euler` in the parameter file). A
+// new scheme is its file — a class deriving from Integrator and a function
+// returning its registry entry (IntegratorEntry <name>_integrator()) — plus one
+// line in registered_integrators.h.
 //
 // Schemes: `euler` (explicit, adaptive_euler.cpp) and `implicit` (backward
 // Euler as a minimising movement, backward_euler.cpp, for the stiff low-γ̃
@@ -17,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/registry.h"
 #include "micro/model/overdamped_shear.h"
 
 namespace softglass::micro {
@@ -72,12 +76,27 @@ struct IntegratorSpec {
 
 inline constexpr double kAutoImplicitBelow = 1e-5;
 
-/// The tolerance a scheme uses when none is given: `euler` 1e-4 (σ within
-/// 0.3 % at γ̃ ≥ 1e-5), `implicit` 1e-3 (σ within 1 % at 1e-9 and 1e-11).
+/// What the tools know of a scheme besides its factory.
+struct IntegratorTraits {
+  /// The tolerance used when none is given (docs/integrators.md measures it).
+  double default_tolerance = 1e-4;
+  /// Estimated cost of a case (sweep planning): seconds of one core per 5
+  /// strain at N = 1000 and γ̃ = 1e-5, growing like γ̃^rate_exponent and like
+  /// N (explicit schemes) or N^1.35 (schemes that minimise: `minimises`).
+  double seconds_at_reference = 25.0;
+  double rate_exponent = -0.8;
+  bool minimises = false;
+};
+
+using IntegratorEntry = ComponentEntry<Integrator, IntegratorSpec, IntegratorTraits>;
+
+/// Every scheme (registered_integrators.h).
+const Registry<IntegratorEntry>& integrators();
+
+/// The tolerance a scheme uses when none is given (its traits).
 double default_tolerance(const std::string& scheme);
 
 /// `spec` must name a scheme of the registry (resolve `auto` first).
 std::unique_ptr<Integrator> make_integrator(const IntegratorSpec& spec);
-std::vector<std::string> integrator_names();
 
 }  // namespace softglass::micro

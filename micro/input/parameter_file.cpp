@@ -20,7 +20,6 @@ namespace Patterns = dealii::Patterns;
 /// What the file sets, before conversion to the engine's types.
 struct Entries {
   MicroParameters p;
-  std::string distribution = "gaussian";
   std::string coupling = "implicit";
   std::string film_velocity = "tangential";
   std::string packing_input, output_file = "micro.h5";
@@ -41,6 +40,15 @@ void entry(ParameterHandler& prm, const std::string& name, T& value, const std::
   prm.add_parameter(name, value,
                     doc + " Allowed: " + pattern.description(Patterns::PatternBase::Text) + ".",
                     pattern);
+}
+
+// An entry's documentation: `intro`, then every registered component's name
+// and summary.
+template <class Entry>
+std::string documented_choice(std::string intro, const Registry<Entry>& registry) {
+  for (const Entry& e : registry.entries()) intro += " " + e.name + ": " + e.summary + ";";
+  intro.back() = '.';
+  return intro;
 }
 
 // A law's coefficients as entries "<law> <coefficient>", with their ranges.
@@ -77,8 +85,9 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Double(0.64, 0.95));
   entry(prm, "polydispersity", p.packing.radii.polydispersity,
         "Standard deviation / mean of the radius (the paper: 0.10).", Patterns::Double(0.0, 0.3));
-  entry(prm, "distribution", e.distribution, "Shape of the radius distribution.",
-        Patterns::Selection("gaussian|uniform|lognormal|bidisperse"));
+  entry(prm, "distribution", p.packing.radii.shape,
+        documented_choice("Shape of the radius distribution:", radius_shapes()),
+        Patterns::Selection(radius_shapes().selection()));
   entry(prm, "truncation", p.packing.radii.truncation_sigmas,
         "Gaussian and lognormal radii are cut at this many standard deviations.",
         Patterns::Double(1.0, 5.0));
@@ -108,11 +117,10 @@ void declare(ParameterHandler& prm, Entries& e) {
   prm.leave_subsection();
 
   prm.enter_subsection("contact law");
-  std::string laws = "Elastic contact law f = E* R_c^2 F(eps), eps = h/R_c (docs/physics.md):";
-  for (const ContactLawEntry& law : contact_laws().entries())
-    laws += " " + law.name + ": " + law.summary + ";";
-  laws.back() = '.';
-  entry(prm, "law", p.contact_law.name, laws, Patterns::Selection(contact_laws().selection()));
+  entry(prm, "law", p.contact_law.name,
+        documented_choice("Elastic contact law f = E* R_c^2 F(eps), eps = h/R_c (docs/physics.md):",
+                          contact_laws()),
+        Patterns::Selection(contact_laws().selection()));
   for (const ContactLawEntry& law : contact_laws().entries()) declare_coefficients(prm, law, e);
   prm.leave_subsection();
 
@@ -166,9 +174,11 @@ void declare(ParameterHandler& prm, Entries& e) {
 
   prm.enter_subsection("integrator");
   entry(prm, "scheme", p.integrator.name,
-        "Time integrator: auto (euler at gamma~ >= 1e-5, implicit below), euler (explicit) "
-        "or implicit (backward Euler, for low gamma~); docs/integrators.md.",
-        Patterns::Selection("auto|euler|implicit"));
+        documented_choice(fmt::format("Time integrator (docs/integrators.md): auto: euler at "
+                                      "gamma~ >= {:g}, implicit below;",
+                                      kAutoImplicitBelow),
+                          integrators()),
+        Patterns::Selection("auto|" + integrators().selection()));
   entry(prm, "tolerance", p.integrator.tolerance,
         "Local position error allowed per step, in units of R; 0: the scheme's default "
         "(euler 1e-4, implicit 1e-3).",
@@ -267,8 +277,8 @@ ComponentValues law_coefficients(const Entries& e, const std::string& law,
     const std::string name = law + " " + c.name;
     std::string value = e.law_coefficients.at(name);
     if (c.kind == ComponentParameter::Kind::file) {
-      require(!value.empty(), fmt::format("contact law '{}' needs '{}' in subsection 'contact law'",
-                                          law, name));
+      require(!value.empty(),
+              fmt::format("contact law '{}' needs '{}' in subsection 'contact law'", law, name));
       value = beside(file, value).string();
     }
     spec.coefficients.set(c.name, value);
@@ -284,7 +294,6 @@ MicroParameters convert(const ParameterHandler& prm, const Entries& e,
   p.packing.seed = e.seed;
   p.packing.stage_iterations = e.stage_iterations;
   p.packing.relaxation.max_iterations = e.max_relaxation_iterations;
-  p.packing.radii.shape = parse_radius_shape(e.distribution);
   p.shear_model.drag.coupling = parse_drag_coupling(e.coupling);
   p.shear_model.drag.film.velocity = parse_film_velocity(e.film_velocity);
   p.packing_input = beside(file, e.packing_input);

@@ -25,6 +25,8 @@ std::string to_string(FilmVelocity velocity) {
   }
 }
 
-std::string film_velocity_names() { return "tangential|full|nonaffine"; }
+std::string film_velocity_names() {
+  return "tangential|full|nonaffine";
+}
 
 }  // namespace softglass::micro

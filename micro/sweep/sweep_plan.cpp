@@ -22,29 +22,25 @@ std::vector<double> decades(int first, int last, int per_decade) {
 
 const std::vector<double> kPaperVolumeFractions = {0.70, 0.75, 0.80, 0.85, 0.90};
 
-// Cost estimates of the cases, in seconds of one core per 5 strain, from one
-// N = 1000, φ = 0.80 column run with the default scheme (docs/sweeps.md):
-// explicit 25 s at γ̃ = 1e-5, growing like γ̃^-0.8 below (steps per strain,
-// docs/validation.md); implicit 8.5 s at 3.16e-6 and 691 s at 1e-9, i.e.
-// about 4.5 s × (γ̃/1e-5)^-0.55; quasi-static 334–494 s at Δγ = 2e-4, 3.3×
-// less per strain at Δγ = 1e-3 for N = 250 (∝ Δγ^-0.75). Cost grows like N
-// for the explicit scheme and like N^1.35 for the minimisers (AQS: 7.7 s per
-// strain at N = 250 against 50 s at N = 1000). The estimates order the work,
-// split it over the workers (longest first) and apportion the time left, so
-// a factor 2 is harmless; a wrong scheme (an explicit estimate for an
-// implicit run is 55× too high at 1e-9) is not.
-double explicit_cost(std::size_t particles, double rate) {
-  return 25.0 * (static_cast<double>(particles) / 1000.0) * std::pow(rate / 1e-5, -0.8);
-}
-
+// Cost estimates of the cases, in seconds of one core per 5 strain: each
+// scheme's own (IntegratorTraits, measured on one N = 1000, φ = 0.80 column,
+// docs/sweeps.md); quasi-static ∝ Δγ^-0.75 (N = 250: 3.3× less per strain at
+// Δγ = 1e-3 than at 2e-4). Cost grows like N for the explicit scheme and like
+// N^1.35 for the minimisers (AQS: 7.7 s per strain at N = 250 against 50 s at
+// N = 1000). The estimates order the work, split it over the workers (longest
+// first) and apportion the time left, so a factor 2 is harmless; a wrong
+// scheme (an explicit estimate for an implicit run is 55× too high at 1e-9) is
+// not.
 double minimiser_scale(std::size_t particles) {
   return std::pow(static_cast<double>(particles) / 1000.0, 1.35);
 }
 
 double rate_cost(std::size_t particles, double rate, const std::string& scheme) {
-  const bool implicit = scheme == "implicit" || (scheme == "auto" && rate < kAutoImplicitBelow);
-  return implicit ? 4.5 * minimiser_scale(particles) * std::pow(rate / 1e-5, -0.55)
-                  : explicit_cost(particles, rate);
+  const IntegratorSpec resolved = IntegratorSpec{.name = scheme}.resolved_for(rate);
+  const IntegratorTraits& t = integrators().at(resolved.name).traits;
+  const double size =
+      t.minimises ? minimiser_scale(particles) : static_cast<double>(particles) / 1000.0;
+  return t.seconds_at_reference * size * std::pow(rate / 1e-5, t.rate_exponent);
 }
 
 double quasi_static_cost(std::size_t particles, double strain_step) {

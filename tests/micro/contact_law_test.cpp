@@ -390,9 +390,8 @@ TEST(ContactLawPiecewise, DefaultsAreSeth2011) {
 TEST(ContactLawPiecewise, CoefficientsFromTheParameterFileKeepTheLawContinuous) {
   const auto l = make_contact_law(piecewise("0.4, 0.9", "1.5, 2, 3"));
   const double c1 = 1.0 / std::sqrt(0.4), c2 = c1 / 0.9;
-  const std::vector<Branch> spec = {{0.0, 0.4, 4.0 / 3.0, 1.5},
-                                    {0.4, 0.9, 4.0 / 3.0 * c1, 2.0},
-                                    {0.9, 3.0, 4.0 / 3.0 * c2, 3.0}};
+  const std::vector<Branch> spec = {
+      {0.0, 0.4, 4.0 / 3.0, 1.5}, {0.4, 0.9, 4.0 / 3.0 * c1, 2.0}, {0.9, 3.0, 4.0 / 3.0 * c2, 3.0}};
   for (double eps : {0.05, 0.3, 0.399, 0.401, 0.6, 0.899, 0.901, 1.5}) {
     const Branch& b = branch_at(spec, eps);
     EXPECT_NEAR(l->force(eps) / (b.a * std::pow(eps, b.n)), 1.0, 1e-14) << eps;
@@ -416,7 +415,8 @@ TEST(ContactLawPiecewise, BadCoefficientsAreInputErrorsNamingThem) {
       {piecewise("0.1", "1.5, 2", "-1"), "'C' = -1 is outside"},
       {piecewise("0.1, x", "1.5, 2, 3"), "'x' is not a number"},
       {{.name = "piecewise", .coefficients = {{"slope", "2"}}}, "has no coefficient 'slope'"},
-      {{.name = "hertz", .coefficients = {{"C", "2"}}}, "contact law 'hertz' has no coefficient 'C'"},
+      {{.name = "hertz", .coefficients = {{"C", "2"}}},
+       "contact law 'hertz' has no coefficient 'C'"},
   };
   for (const Case& c : cases) {
     const std::string message = input_error(c.spec);

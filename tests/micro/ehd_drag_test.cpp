@@ -16,10 +16,10 @@
 
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/incremental_minimiser.h"
-#include "micro/model/overdamped_shear.h"
-#include "micro/model/ehd_drag.h"
-#include "micro/packing/packing.h"
 #include "micro/model/contact_system.h"
+#include "micro/model/ehd_drag.h"
+#include "micro/model/overdamped_shear.h"
+#include "micro/packing/packing.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {

@@ -63,7 +63,7 @@ Window shear_window(const IntegratorSpec& spec, double gamma_tilde, double strai
 }
 
 TEST(StiffIntegrators, RegisteredByName) {
-  const auto names = integrator_names();
+  const auto names = integrators().names();
   EXPECT_NE(std::find(names.begin(), names.end(), "implicit"), names.end());
   EXPECT_EQ(make_integrator({.name = "implicit"})->name(), "implicit");
   IntegratorSpec bad;

@@ -21,10 +21,14 @@ class HertzLaw final : public ContactLawImpl<HertzLaw> {
   double energy(double eps) const override { return (8.0 / 15.0) * eps * eps * std::sqrt(eps); }
 };
 
-std::unique_ptr<ContactLaw> make(const ContactLawSpec&) { return std::make_unique<HertzLaw>(); }
+std::unique_ptr<ContactLaw> make(const ContactLawSpec&) {
+  return std::make_unique<HertzLaw>();
+}
 
 }  // namespace
 
-ContactLawEntry hertz_law() { return {"hertz", "Hertz at every deformation: (4/3) eps^1.5", {}, make}; }
+ContactLawEntry hertz_law() {
+  return {"hertz", "Hertz at every deformation: (4/3) eps^1.5", {}, make};
+}
 
 }  // namespace softglass::micro

@@ -20,11 +20,10 @@ inline constexpr double kSeth2011Exponents[] = {1.5, 2.0, 3.0};
 namespace {
 std::unique_ptr<ContactLaw> make(const ContactLawSpec&) {
   return make_piecewise_contact_law(
-      "seth2011",
-      PiecewisePowerLaw::continuous(
-          "contact law 'seth2011'", 1.0,
-          {std::begin(kSeth2011Breakpoints), std::end(kSeth2011Breakpoints)},
-          {std::begin(kSeth2011Exponents), std::end(kSeth2011Exponents)}));
+      "seth2011", PiecewisePowerLaw::continuous(
+                      "contact law 'seth2011'", 1.0,
+                      {std::begin(kSeth2011Breakpoints), std::end(kSeth2011Breakpoints)},
+                      {std::begin(kSeth2011Exponents), std::end(kSeth2011Exponents)}));
 }
 }  // namespace
 
