@@ -92,6 +92,11 @@ VARIANTS = {
                     ("integrator", "scheme"): "implicit"},
                    "EHD on the full relative velocity, f_r = 100"),
     "full": ({("drag", "velocity"): "full"}, "EHD on the full relative velocity, f_r = 0.01"),
+    "neighbours": ({("drag", "stokes reference"): "neighbours"},
+                   "Stokes friction against the neighbours (pair dashpots), f_r = 0.01"),
+    "neighbours_fr0.05": ({("drag", "stokes reference"): "neighbours",
+                           ("shear", "mobility factor"): "0.05"},
+                          "Stokes friction against the neighbours, f_r = 0.05"),
     "nonaffine": ({("drag", "velocity"): "nonaffine"}, "EHD on the non-affine sliding only"),
 }
 

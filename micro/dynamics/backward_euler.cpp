@@ -84,18 +84,21 @@ class BackwardEuler final : public Integrator {
       const auto& p = system.particles();
 
       // Frozen drag from the contacts at x_n (recomputed: a rebuild reorders).
+      const ShearModel& model = flow.model();
+      friction_.resize(n);
+      for (std::size_t a = 0; a < n; ++a) friction_[a] = model.friction(p.radius[a]);
       FrozenDrag& drag = drag_;
       drag.clear();
-      if (flow.model().drag.enabled) {
+      if (model.drag.enabled || model.drag.stokes.has_pairs()) {
         const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
-        freeze_drag(field.contacts, gamma_tilde, flow.model().drag.film, drag);
+        freeze_drag(field.contacts, gamma_tilde, model.drag, friction_, drag);
       }
       proximal_.resize(n);
       velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
       guess_.resize(n);
       shift_.resize(n);
       for (std::size_t a = 0; a < n; ++a) {
-        proximal_[a] = flow.model().friction(p.radius[a]) / h;
+        proximal_[a] = model.drag.stokes.reservoir(friction_[a]) / h;
         guess_[a] = h * velocity_[a];
         shift_[a] = Vec3(0.5 * h * velocity_[a].y(), 0.0, 0.0);
       }
@@ -105,8 +108,9 @@ class BackwardEuler final : public Integrator {
       // The solve's residual g moves a particle by at most g h/ζ (the proximal
       // term bounds the Hessian below): 1 % of the step tolerance is enough.
       IncrementalSettings settings = minimiser_.settings();
-      settings.absolute_force =
-          0.01 * spec_.tolerance * flow.model().friction(min_radius(p.radius)) / h;
+      settings.absolute_force = 0.01 * spec_.tolerance *
+                                model.drag.stokes.reservoir(model.friction(min_radius(p.radius))) /
+                                h;
       settings.loosen = true;
       minimiser_.set_settings(settings);
       const IncrementalResult r = minimiser_.minimise(system, proximal_, drag, h, guess_);
@@ -171,7 +175,7 @@ class BackwardEuler final : public Integrator {
   IntegratorSpec spec_;
   IncrementalMinimiser minimiser_;
   FrozenDrag drag_;
-  std::vector<double> proximal_;
+  std::vector<double> proximal_, friction_;
   std::vector<Vec3> velocity_, guess_, shift_;
   double proposal_ = 1e300;
   std::size_t solver_failures_ = 0;

@@ -28,21 +28,26 @@ void FrozenDrag::clear() {
   normal.clear();
   coefficient.clear();
   affine.clear();
+  dashpot.clear();
+  shift.clear();
 }
 
-void freeze_drag(const ContactList& c, double gamma_tilde, const FilmModel& film,
-                 FrozenDrag& out) {
+void freeze_drag(const ContactList& c, double gamma_tilde, const EhdSettings& settings,
+                 std::span<const double> friction, FrozenDrag& out) {
   out.clear();
-  out.film = film;
+  out.film = settings.film;
   for (std::size_t k = 0; k < c.size(); ++k) {
     const Vec3 n = c.separation[k].normalized();
     out.i.push_back(c.i[k]);
     out.j.push_back(c.j[k]);
     out.normal.push_back(n);
-    out.coefficient.push_back(
-        film_coefficient(gamma_tilde, c.contact_radius[k], c.force[k], c.deformation[k]));
-    out.affine.push_back(film.affine(n, c.separation[k]));
+    out.coefficient.push_back(settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
+                                                                  c.force[k], c.deformation[k])
+                                               : 0.0);
+    out.affine.push_back(settings.film.affine(n, c.separation[k]));
+    out.shift.push_back(c.separation[k].y());
   }
+  settings.stokes.pair_coefficients(c, friction, out.dashpot);
 }
 
 bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const double> proximal,
@@ -70,14 +75,19 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
   }
   w.resize(drag.size());
   for (std::size_t k = 0; k < drag.size(); ++k) {
-    w[k] = drag.film.project(drag.normal[k], (u[drag.i[k]] - u[drag.j[k]]) / h) + drag.affine[k];
+    const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
+    w[k] = drag.film.project(drag.normal[k], du) + drag.affine[k];
     const double speed = w[k].norm();
     value.dissipation += h * (2.0 / 3.0) * drag.coefficient[k] * speed * std::sqrt(speed);
-    if (speed > 0.0) {
-      const Vec3 f = w[k] * (drag.coefficient[k] / std::sqrt(speed));  // a |w|^{1/2} ŵ
-      gradient[drag.i[k]] += f;
-      gradient[drag.j[k]] -= f;
+    Vec3 f = speed > 0.0 ? Vec3(w[k] * (drag.coefficient[k] / std::sqrt(speed)))  // a |w|^{1/2} ŵ
+                         : Vec3::Zero();
+    if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + d_y e_x
+      const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());
+      value.dissipation += h * 0.5 * b * q0.squaredNorm();
+      f += b * q0;
     }
+    gradient[drag.i[k]] += f;
+    gradient[drag.j[k]] -= f;
   }
   return true;
 }
@@ -107,7 +117,8 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
     diagonal_[c.i[k]] += majorant;
     diagonal_[c.j[k]] += majorant;
   }
-  // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header).
+  // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header), plus (b/h) I
+  // of the Stokes pair dashpots.
   // Its pairs are mostly the elastic ones, listed in the same order (both come
   // from the same neighbour list, particle by particle): a drag block is added
   // to its pair's elastic block when there is one, halving the product's work.
@@ -115,13 +126,15 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
   std::size_t cursor = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
     const double a = drag.coefficient[k];
-    if (a <= 0.0) continue;
-    const double speed = w_[k].norm();
-    const double floor_speed = (force_floor / a) * (force_floor / a);
-    const double s = a / std::sqrt(std::max(speed, floor_speed)) / h;
-    const Vec3 unit = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
-    const Eigen::Matrix3d b =
-        s * (drag.film.projector(drag.normal[k]) - relief_[k] * unit * unit.transpose());
+    if (a <= 0.0 && drag.dashpot[k] <= 0.0) continue;
+    Eigen::Matrix3d b = (drag.dashpot[k] / h) * identity;
+    if (a > 0.0) {
+      const double speed = w_[k].norm();
+      const double floor_speed = (force_floor / a) * (force_floor / a);
+      const double s = a / std::sqrt(std::max(speed, floor_speed)) / h;
+      const Vec3 unit = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
+      b += s * (drag.film.projector(drag.normal[k]) - relief_[k] * unit * unit.transpose());
+    }
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
     while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;

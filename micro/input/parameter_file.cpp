@@ -22,6 +22,7 @@ struct Entries {
   MicroParameters p;
   std::string coupling = "implicit";
   std::string film_velocity = "tangential";
+  std::string stokes_reference = "affine";
   std::string packing_input, output_file = "micro.h5";
   // Every law's coefficients, by entry name "<law> <coefficient>" (the
   // registry's declarations); only the chosen law's are used.
@@ -161,6 +162,15 @@ void declare(ParameterHandler& prm, Entries& e) {
         "full (also approach and separation, a declared extension) or nonaffine (sliding "
         "relative to the affine flow, a diagnostic); docs/physics.md.",
         Patterns::Selection(film_velocity_names()));
+  entry(prm, "stokes reference", e.stokes_reference,
+        "What the Stokes friction 6 pi eta_s R / f_r acts against: affine (the paper: the motion "
+        "relative to the imposed flow) or neighbours (relative to the contacting particles, as "
+        "pair dashpots; docs/physics.md).",
+        Patterns::Selection(stokes_reference_names()));
+  entry(prm, "stokes reservoir share", p.shear_model.drag.stokes.reservoir_share,
+        "For stokes reference = neighbours: share of the friction left against the affine flow "
+        "(keeps particles without contacts moving with the solvent).",
+        Patterns::Double(1e-6, 1.0));
   entry(prm, "coupling", e.coupling,
         "implicit: velocities solved with the drag at every step (Newton); lagged: "
         "drag from the previous velocities (for measuring that error only).",
@@ -296,6 +306,7 @@ MicroParameters convert(const ParameterHandler& prm, const Entries& e,
   p.packing.relaxation.max_iterations = e.max_relaxation_iterations;
   p.shear_model.drag.coupling = parse_drag_coupling(e.coupling);
   p.shear_model.drag.film.velocity = parse_film_velocity(e.film_velocity);
+  p.shear_model.drag.stokes.reference = parse_stokes_reference(e.stokes_reference);
   p.packing_input = beside(file, e.packing_input);
   p.contact_law.coefficients = law_coefficients(e, p.contact_law.name, file);
   p.output_file = e.output_file;

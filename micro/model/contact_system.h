@@ -12,8 +12,8 @@
 #include <memory>
 #include <span>
 
-#include "micro/contact/contact_law.h"
 #include "micro/contact/contact_forces.h"
+#include "micro/contact/contact_law.h"
 #include "micro/geometry/neighbour_list.h"
 #include "micro/geometry/particles.h"
 

@@ -4,8 +4,9 @@
 // velocities γ̇ R):
 //     f^EHD = −a_c |w|^{1/2} ŵ,     a_c = ( γ̃ C R_c³ ε^{(2n+1)/2} )^{1/2},
 // with w the tangential part of the relative velocity (including the affine
-// flow), or another projection of it (film.h). Because C ε^n = ¾ F(ε) for every law, a_c² = ¾ γ̃ R_c³ F(ε) √ε = ¾ γ̃ R_c |f| √ε:
-// the drag needs only the elastic force, so it follows any contact law.
+// flow), or another projection of it (film.h). Because C ε^n = ¾ F(ε) for every law, a_c² = ¾ γ̃
+// R_c³ F(ε) √ε = ¾ γ̃ R_c |f| √ε: the drag needs only the elastic force, so it follows any contact
+// law.
 //
 // Velocities. Overdamped motion, u_α = u∞(x_α) + (m_α/γ̃)(F^e_α + F^EHD_α) with
 // m_α = f_r/(6π R_α). Writing v = u − u∞ for the non-affine velocity and
@@ -14,6 +15,9 @@
 // in which the relative velocity of a contact is v_i − v_j + d_y e_x. This is the
 // stationarity condition of the strictly convex function
 //     Φ(v) = Σ_α ½ ζ_α |v_α|² + Σ_c ⅔ a_c |P_c(v_i − v_j + d_y e_x)|^{3/2} − Σ_α F^e_α·v_α ,
+// (with the Stokes friction against the neighbours, stokes_friction.h, ζ_α is
+// its reservoir share and Φ gains Σ_c ½ b_c |v_i − v_j + d_y e_x|²: quadratic,
+// convex, one more term of the same kind in every step below)
 // (P_c projects on the contact plane), so the solution exists, is unique, and is
 // found in two phases. First nonlinear Jacobi sweeps, v_α ← v_α − ∇_αΦ / D_α with
 // D_α = ζ_α + ¾ Σ_c a_c/√|w_c| (the friction plus the particle's own drag
@@ -55,9 +59,10 @@
 #include <string>
 #include <vector>
 
-#include "micro/numerics/block_cg.h"
 #include "micro/contact/contact_forces.h"
 #include "micro/model/film.h"
+#include "micro/model/stokes_friction.h"
+#include "micro/numerics/block_cg.h"
 
 namespace softglass::micro {
 
@@ -67,7 +72,8 @@ std::string to_string(DragCoupling coupling);
 
 struct EhdSettings {
   bool enabled = true;
-  FilmModel film{};  // which relative velocity the drag acts on (film.h)
+  FilmModel film{};         // which relative velocity the drag acts on (film.h)
+  StokesFriction stokes{};  // what the Stokes friction acts against (stokes_friction.h)
   DragCoupling coupling = DragCoupling::implicit;
   double tolerance = 1e-6;  // velocity residual relative to max(1, max|v|)
   int max_newton_iterations = 60;
@@ -88,37 +94,40 @@ class EhdDrag {
   explicit EhdDrag(EhdSettings settings);
   const EhdSettings& settings() const { return settings_; }
 
-  /// Non-affine velocities v for the given contacts and elastic forces; `v` holds
-  /// the initial guess on entry. Throws NumericalError if Newton fails.
+  /// Non-affine velocities v for the given contacts, Stokes frictions ζ
+  /// (6π γ̃ R/f_r) and elastic forces; `v` holds the initial guess on entry.
+  /// Throws NumericalError if Newton fails.
   VelocitySolveStats solve(const ContactList& contacts, double gamma_tilde,
                            std::span<const double> friction, std::span<const Vec3> elastic_force,
                            std::span<Vec3> v);
 
-  /// Σ_c d ⊗ f^EHD at velocities v (σ^v = −virial/V); also the drag on each
-  /// particle if `drag` is not empty.
+  /// Σ_c d ⊗ f at velocities v of the pair forces that dissipate — the EHD
+  /// drag and, with `neighbours`, the Stokes pair dashpots (σ^v = −virial/V);
+  /// also the sum of those forces on each particle if `drag` is not empty.
+  /// `friction` (ζ) is needed for the dashpots only.
   Eigen::Matrix3d virial(const ContactList& contacts, double gamma_tilde, std::span<const Vec3> v,
-                         std::span<Vec3> drag = {}) const;
+                         std::span<Vec3> drag = {}, std::span<const double> friction = {}) const;
 
  private:
   struct Geometry {  // per contact
     std::vector<Vec3> normal;
-    std::vector<double> coefficient;  // a_c
+    std::vector<double> coefficient;  // a_c (0 without EHD)
     std::vector<Vec3> affine;         // w⁰_c
+    std::vector<double> dashpot;      // b_c (stokes_friction.h; 0 for `affine`)
   };
-  void prepare(const ContactList& contacts, double gamma_tilde);
+  void prepare(const ContactList& contacts, double gamma_tilde, std::span<const double> friction);
   void build_incidence(const ContactList& contacts, std::size_t n);
   /// ∇Φ(v); leaves the tangential relative velocities in `w`.
-  void gradient_at(const ContactList& contacts, std::span<const double> friction,
-                   std::span<const Vec3> force, std::span<const Vec3> v, std::vector<Vec3>& w,
-                   std::vector<Vec3>& gradient);
+  void gradient_at(const ContactList& contacts, std::span<const Vec3> force,
+                   std::span<const Vec3> v, std::vector<Vec3>& w, std::vector<Vec3>& gradient);
   /// Φ(v + tδ) − Φ(v) for the Newton step δ, without cancellation, and a bound
   /// on its rounding error; leaves the trial point, its tangential velocities
   /// and gradient in the trial buffers.
   struct Change {
     double value, rounding;
   };
-  Change change_along_step(const ContactList& contacts, std::span<const double> friction,
-                           std::span<const Vec3> force, std::span<const Vec3> v, double t);
+  Change change_along_step(const ContactList& contacts, std::span<const Vec3> force,
+                           std::span<const Vec3> v, double t);
   /// Adds per-contact vectors to particles: out_α += Σ_{c∋α} ±y_c.
   void gather(std::span<const Vec3> per_contact, std::span<Vec3> out) const;
   /// Newton direction: H δ = −g by block-Jacobi preconditioned CG to ‖r‖ ≤ η‖g‖.
@@ -135,10 +144,11 @@ class EhdDrag {
   std::vector<Vec3> step_;
   CgWorkspace cg_;
   std::vector<Eigen::Matrix3d> block_inverse_;
-  std::vector<double> s_;       // a_c / √max(|w|, floor)
-  std::vector<double> relief_;  // θ_c: ½ (Newton) or 0 (majoriser)
-  std::vector<double> secant_;  // a_c / √|w_c| at the last gradient
-  std::vector<Vec3> unit_w_;    // ŵ
+  std::vector<double> s_;          // a_c / √max(|w|, floor)
+  std::vector<double> relief_;     // θ_c: ½ (Newton) or 0 (majoriser)
+  std::vector<double> secant_;     // a_c / √|w_c| at the last gradient
+  std::vector<Vec3> unit_w_;       // ŵ
+  std::vector<double> reservoir_;  // the friction against the affine flow, per particle
 };
 
 }  // namespace softglass::micro

@@ -33,7 +33,8 @@ OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model)
 }
 
 void OverdampedShear::evaluate() {
-  const bool with_drag = model_.drag.enabled;
+  // The velocities are implicit with the EHD drag or the Stokes pair dashpots.
+  const bool with_drag = model_.drag.enabled || model_.drag.stokes.has_pairs();
   stress_valid_ = strain() >= stress_from_;
   const ContactField& field =
       system_.compute_forces({.energy = false, .contacts = with_drag, .virial = stress_valid_});
@@ -54,7 +55,7 @@ void OverdampedShear::evaluate() {
     last_solve_ =
         drag_.solve(field.contacts, model_.gamma_tilde, friction_, field.force, p.velocity);
     if (stress_valid_)
-      viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity);
+      viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity, {}, friction_);
   } else {
     for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * field.force[a];
     viscous_virial_.setZero();

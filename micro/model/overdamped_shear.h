@@ -19,8 +19,8 @@
 #include <limits>
 #include <vector>
 
-#include "micro/model/ehd_drag.h"
 #include "micro/model/contact_system.h"
+#include "micro/model/ehd_drag.h"
 
 namespace softglass::micro {
 

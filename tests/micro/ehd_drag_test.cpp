@@ -457,7 +457,8 @@ TEST(EhdFilm, ImplicitStepBalancesTheFullFilmDrag) {
   PairProblem p = pair_problem();
   const double h = 1e-3;
   FrozenDrag drag;
-  freeze_drag(p.system.forces().contacts, kGammaTilde, {FilmVelocity::full}, drag);
+  const std::vector<double> zeta(2, p.zeta);
+  freeze_drag(p.system.forces().contacts, kGammaTilde, {.film = {FilmVelocity::full}}, zeta, drag);
   EXPECT_NEAR(drag.coefficient[0] / p.a, 1.0, 1e-12);  // the frozen a is the spec's
   const std::vector<double> proximal(2, p.zeta / h);
   std::vector<Vec3> u(2, Vec3::Zero());
@@ -478,6 +479,108 @@ TEST(EhdFilm, ImplicitStepBalancesTheFullFilmDrag) {
   }
   EXPECT_NEAR(u[p.i].dot(p.n) / lo, 1.0, 1e-8);
   EXPECT_NEAR(u[p.j].dot(p.n) / -lo, 1.0, 1e-8);
+}
+
+// ------------------------------------- Stokes friction against the neighbours
+//
+// stokes_friction.h: pair dashpots b_c = (1 − κ) ½ (ζ_i/z_i + ζ_j/z_j) on the
+// whole relative velocity, a share κ of ζ left against the affine flow.
+
+// The pair alone (z = 1 each, no EHD): b = (1 − κ) ζ, and the symmetric motion
+// v n, −v n balances κζ v + b (2v) = f.
+TEST(StokesNeighbours, PairDashpotResistsRelativeMotionOnly) {
+  PairProblem p = pair_problem();
+  const ContactField& field = p.system.forces();
+  const std::vector<double> zeta(2, p.zeta);
+  const double kappa = 0.01;
+  EhdSettings settings{.enabled = false, .tolerance = 1e-12};
+  settings.stokes = {StokesReference::neighbours, kappa};
+  EhdDrag drag(settings);
+  std::vector<Vec3> v(2, Vec3::Zero());
+  drag.solve(field.contacts, kGammaTilde, zeta, field.force, v);
+  const double expected = p.force / (kappa * p.zeta + 2.0 * (1.0 - kappa) * p.zeta);
+  EXPECT_NEAR(v[p.i].dot(p.n) / expected, 1.0, 1e-9);
+  EXPECT_NEAR(v[p.j].dot(p.n) / -expected, 1.0, 1e-9);
+  // A common velocity of both costs the reservoir share alone: the dashpot
+  // force of the pair at v + U is that at v, whatever U.
+  std::vector<Vec3> moved = v, force_v(2, Vec3::Zero()), force_moved(2, Vec3::Zero());
+  for (Vec3& x : moved) x += Vec3(0.7, -0.2, 0.4);
+  drag.virial(field.contacts, kGammaTilde, v, force_v, zeta);
+  drag.virial(field.contacts, kGammaTilde, moved, force_moved, zeta);
+  EXPECT_LT((force_v[p.i] - force_moved[p.i]).norm(), 1e-15 * p.force);
+}
+
+// A packing with the EHD drag and the neighbour dashpots: the solved velocities
+// satisfy κζ v − F^EHD(v) + Σ_c b_c q⁰_c = F^e, with b_c and F^EHD recomputed
+// here from their definitions; the virial carries both pair forces.
+TEST(StokesNeighbours, ImplicitVelocitiesSatisfyTheForceBalance) {
+  ContactSystem system = drag_system();
+  const std::size_t n = system.size();
+  const ContactField& field = system.compute_forces({.contacts = true});
+  const ContactList& c = field.contacts;
+  const std::vector<double> zeta = friction_of(system.particles());
+  const double kappa = 0.05;
+  EhdSettings settings{.tolerance = kTolerance};
+  settings.stokes = {StokesReference::neighbours, kappa};
+  EhdDrag drag(settings);
+  std::vector<Vec3> v(n, Vec3::Zero());
+  drag.solve(c, kGammaTilde, zeta, field.force, v);
+
+  std::vector<double> z(n, 0.0);
+  for (std::size_t k = 0; k < c.size(); ++k) z[c.i[k]] += 1, z[c.j[k]] += 1;
+  std::vector<Vec3> pair_force = spec_drag_per_particle(c, kGammaTilde, v);
+  Eigen::Matrix3d expected_virial = Eigen::Matrix3d::Zero();
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const double b = (1.0 - kappa) * 0.5 * (zeta[c.i[k]] / z[c.i[k]] + zeta[c.j[k]] / z[c.j[k]]);
+    const Vec3 q0 = v[c.i[k]] - v[c.j[k]] + Vec3(c.separation[k].y(), 0.0, 0.0);
+    pair_force[c.i[k]] -= b * q0;
+    pair_force[c.j[k]] += b * q0;
+    expected_virial += c.separation[k] * (spec_drag(c, k, kGammaTilde, v) - b * q0).transpose();
+  }
+  const double scale = std::max(1.0, max_norm(v));
+  double worst = 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
+    const Vec3 residual = kappa * zeta[a] * v[a] - field.force[a] - pair_force[a];
+    worst = std::max(worst, residual.norm() / zeta[a] / scale);
+  }
+  EXPECT_LE(worst, kTolerance);
+  const Eigen::Matrix3d virial = drag.virial(c, kGammaTilde, v, {}, zeta);
+  EXPECT_LE((virial - expected_virial).cwiseAbs().maxCoeff(),
+            1e-12 * expected_virial.cwiseAbs().maxCoeff());
+}
+
+// One implicit step of the pair with the neighbour dashpots (no EHD): the
+// displacement u n of i satisfies  κζ u/h + b (2u)/h = R_c² F((h₀ − 2u)/R_c).
+// (h = 1e-8: ζ ∝ γ̃ = 1e-10 is tiny, a longer step would part the pair.)
+TEST(StokesNeighbours, ImplicitStepBalancesThePairDashpot) {
+  PairProblem p = pair_problem();
+  const double h = 1e-8, kappa = 0.01;
+  EhdSettings settings{.enabled = false};
+  settings.stokes = {StokesReference::neighbours, kappa};
+  const std::vector<double> zeta(2, p.zeta);
+  FrozenDrag drag;
+  freeze_drag(p.system.forces().contacts, kGammaTilde, settings, zeta, drag);
+  ASSERT_EQ(drag.dashpot.size(), 1u);
+  EXPECT_NEAR(drag.dashpot[0] / ((1.0 - kappa) * p.zeta), 1.0, 1e-14);
+  const std::vector<double> proximal(2, kappa * p.zeta / h);
+  std::vector<Vec3> u(2, Vec3::Zero());
+  IncrementalMinimiser minimiser({.relative_force = 1e-12});
+  const IncrementalResult r = minimiser.minimise(p.system, proximal, drag, h, u);
+  ASSERT_TRUE(r.converged) << r.iterations << " iterations, residual " << r.residual;
+
+  const auto law = testing::named_law("seth2011");
+  const double b = drag.dashpot[0];
+  const auto balance = [&](double x) {
+    return kappa * p.zeta * x / h + 2.0 * b * x / h - 0.25 * law->force((0.1 - 2.0 * x) / 0.5);
+  };
+  double lo = 0.0, hi = 0.05;
+  ASSERT_LT(balance(lo), 0.0);
+  ASSERT_GT(balance(hi), 0.0);
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (balance(mid) < 0.0 ? lo : hi) = mid;
+  }
+  EXPECT_NEAR(u[p.i].dot(p.n) / lo, 1.0, 1e-8);
 }
 
 }  // namespace
