@@ -4,7 +4,7 @@
 Usage: contact_deformations.py RUN.h5 [RUN.h5 ...]
 Prints, per run file (docs/output.md), the contacts per particle, the mean ε,
 the fractions of contacts beyond ε = 0.1 and 0.2 (the Hertz and the first
-stiffened branch of seth2011 end there, spec model.md §3) and the 95th
+stiffened branch of seth2011 end there, docs/physics.md, "Elastic force") and the 95th
 percentile. Pairs are found by brute force through the Lees–Edwards minimum
 image, which is enough for the N ≤ 1000 of the benches.
 """

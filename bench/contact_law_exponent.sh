@@ -4,7 +4,7 @@
 # explained"; docs/bridge.md § "On the project's own sweep").
 #
 # The paper's law for ε > 0.1 (its Supplementary Fig. S2) is not available;
-# seth2011 is a reconstruction (spec model.md §3). At φ = 0.80 most contacts sit
+# seth2011 is a reconstruction (docs/physics.md, "Elastic force"). At φ = 0.80 most contacts sit
 # in that branch (ε > 0.2 for two thirds of them at rest), so the law sets how
 # σ^e grows with the rate. This bench shears the same protocol with three laws
 # that agree up to ε = 0.1 and stiffen differently beyond it:

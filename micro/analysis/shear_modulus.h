@@ -1,4 +1,4 @@
-// The linear shear modulus G0 of a relaxed packing (spec §6.4), exactly, from the
+// The linear shear modulus G0 of a relaxed packing (docs/physics.md, "Protocol"), exactly, from the
 // Hessian rather than by finite strains.
 //
 // Under a small affine shear γ (x → x + γ y e_x, Lees–Edwards offset γL) followed

@@ -1,5 +1,5 @@
 // The structure of a sheared soft glass and its link to the stress
-// (spec model.md §7, the paper's Fig. 3).
+// (docs/structure.md, the paper's Fig. 3).
 //
 // Pair distribution, expanded in real orthonormal spherical harmonics with the
 // polar axis along z (vorticity), l = 0 and 2:

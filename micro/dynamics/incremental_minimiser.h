@@ -3,7 +3,7 @@
 // is the minimiser of a potential.
 //
 // The motion is a generalised gradient flow with a dissipation potential
-// (spec model.md §4; Ortiz & Stainier's "variational constitutive updates",
+// (docs/physics.md, "Motion"; Ortiz & Stainier's "variational constitutive updates",
 // Mielke's doubly nonlinear flows): ζ_α v_α + ∂Ψ_EHD/∂v_α = F^e_α = −∂E/∂x_α,
 // with Ψ_EHD(v) = Σ_c ⅔ a_c |P_c(v_i − v_j) + w⁰_c|^{3/2} the drag potential of
 // ehd_drag.h (w⁰_c the affine tangential relative velocity), plus, with the

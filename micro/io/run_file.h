@@ -4,7 +4,7 @@
 // packing and its measurements, the sampled stress history, the final
 // configuration and the steady-state summary with standard errors.
 //
-// Units are those of the simulation (spec model.md §4): lengths R (mean radius),
+// Units are those of the simulation (docs/physics.md, "Motion"): lengths R (mean radius),
 // stresses E*, strain for time; every dataset carries a `units` attribute.
 #pragma once
 

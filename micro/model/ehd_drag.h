@@ -1,6 +1,6 @@
 // Elastohydrodynamic (EHD) drag and the velocities it makes implicit.
 //
-// Drag on α from β (spec model.md §3), in reduced units (forces E* R²,
+// Drag on α from β (docs/physics.md, "EHD drag"), in reduced units (forces E* R²,
 // velocities γ̇ R):
 //     f^EHD = −a_c |w|^{1/2} ŵ,     a_c = ( γ̃ C R_c³ ε^{(2n+1)/2} )^{1/2},
 // with w the tangential part of the relative velocity (including the affine

@@ -3,7 +3,7 @@
 // In reduced units (lengths R, time 1/γ̇ so that time is strain, forces E* R²)
 //     dx_α/dγ = y_α e_x + v_α,     ζ_α v_α = F^e_α + F^EHD_α(v),
 //     ζ_α = γ̃ / m_α = 6π γ̃ R_α / f_r,
-// where v is the non-affine velocity (spec model.md §4). This class evaluates the
+// where v is the non-affine velocity (docs/physics.md, "Motion"). This class evaluates the
 // right-hand side at the current configuration — elastic forces, the implicit
 // EHD velocity solve, the stress, and a bound on the stiffness — and moves the
 // particles; integrators (integrator.h) decide the steps.

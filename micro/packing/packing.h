@@ -1,4 +1,4 @@
-// Compressed, force-balanced packings of polydisperse soft spheres (spec §6.1).
+// Compressed, force-balanced packings of polydisperse soft spheres (docs/physics.md, "Protocol").
 //
 // Protocol: radii drawn from the distribution (mean 1), centres placed uniformly
 // at random in a cell at a low volume fraction φ₀, then the cell is compressed

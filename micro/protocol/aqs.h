@@ -6,7 +6,7 @@
 // local energy minimum; at an event the minimum disappears and the minimiser
 // finds the next one. The EHD drag and the friction vanish from the stress as
 // γ̃ → 0 (σ^v ∝ γ̃^{2/3}), so the stationary mean of σ^e is the dynamic yield
-// stress σ_y(φ): the low end of every flow curve (spec model.md §8).
+// stress σ_y(φ): the low end of every flow curve (docs/bridge.md).
 //
 // The minimiser is incremental_minimiser.h with Φ = E (Newton–CG, damped when
 // indefinite, Armijo line search): the energy falls monotonically

@@ -1,5 +1,5 @@
 // Athermal quasi-static shear (AQS) as a run: the γ̃ → 0 case of a sweep, whose
-// stationary mean σ is the dynamic yield stress σ_y (spec model.md §8).
+// stationary mean σ is the dynamic yield stress σ_y (docs/bridge.md).
 //
 // dynamics/aqs.h shears a configuration by a fixed strain. A run needs what a
 // sheared run has (shear_run.h): its stopping rule (min strain, stationary,

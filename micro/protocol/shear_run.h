@@ -1,5 +1,5 @@
 // Steady shear at fixed γ̃ until the stresses are stationary and known to the
-// requested accuracy (spec §6.2).
+// requested accuracy (docs/physics.md, "Protocol").
 //
 // The stress tensors are sampled every `sample_interval` of strain. Every
 // `check_interval` the series is analysed (analysis/steady_state.h): the start-up

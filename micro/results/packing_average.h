@@ -1,5 +1,5 @@
 // Averages over independent packings at one state point (φ, γ̃), the paper's
-// protocol (spec model.md §6.3: five packings per point).
+// protocol (docs/physics.md, "Protocol": five packings per point).
 //
 // For each observable the packing average is the mean of the runs' means. Two
 // standard errors are reported: `within` from the runs' own (blocking) errors,

@@ -2,7 +2,7 @@
 // the Hertz limit, the `table` law and its input errors.
 //
 // Reduced form (contact_law.h): f = E* R_c² F(ε), W(ε) = ∫₀^ε F; the paper's law is
-// F = (4/3) C ε^n with the (C, n) branches of model.md §3:
+// F = (4/3) C ε^n with the (C, n) branches of docs/physics.md, "Elastic force":
 //     ε ≤ 0.1: (1, 3/2);   0.1 < ε ≤ 0.2: (√10, 2);   ε > 0.2: (5√10, 3).
 #include <gtest/gtest.h>
 
@@ -63,7 +63,7 @@ const std::vector<double> kSamples = {1e-6, 3e-4, 0.002, 0.03, 0.07, 0.098, 0.10
 // ----------------------------------------------------------------- seth2011
 
 TEST(ContactLaw, Seth2011MatchesTheSpecBranches) {
-  // F = (4/3) C ε^n with C, n from model.md §3. The engine derives C from
+  // F = (4/3) C ε^n with C, n from docs/physics.md, "Elastic force". The engine derives C from
   // continuity (pow(0.1, −1/2) rather than √10): a few ulp, hence 1e-14.
   const auto seth = law("seth2011");
   for (double eps : kSamples) {
@@ -206,7 +206,7 @@ TEST(ContactLaw, Seth2011IsHertzUpToTenPercentDeformation) {
     EXPECT_GT(seth->force(eps), hertz->force(eps)) << eps;
 }
 
-// model.md §3 assigns ε = 0.1 to the Hertz branch (ε ≤ 0.1) and ε = 0.2 to the
+// docs/physics.md, "Elastic force" assigns ε = 0.1 to the Hertz branch (ε ≤ 0.1) and ε = 0.2 to the
 // n = 2 branch (0.1 < ε ≤ 0.2). F and W are continuous at the joints, so only
 // the stiffness F' tells which branch is used there (the next branch's is 4/3
 // and 3/2 times larger).

@@ -1,6 +1,6 @@
 // Elastohydrodynamic drag and the implicit velocities (micro/model/ehd_drag.h).
 //
-// Spec (model.md §3), reduced units (forces E* R², velocities γ̇ R):
+// Spec (docs/physics.md, "EHD drag"), reduced units (forces E* R², velocities γ̇ R):
 //     f^EHD on α from β = −(γ̃ C u∥ R_c³)^{1/2} ε^{(2n+1)/4} t̂,
 // u∥ = |(I − n n)(u_α − u_β)| with the total velocities (non-affine v plus the
 // affine γ̇ d_y e_x across the pair), (C, n) of the seth2011 branch at ε. The

@@ -1,6 +1,6 @@
 // Steady shear sanity: a short run of the paper's model (N = 300, φ = 0.8,
 // γ̃ = 1e-4, seth2011, EHD on) has the signs the paper reports: σ > 0, a positive
-// viscous part much smaller than the elastic one, and N2 < 0 (model.md §8).
+// viscous part much smaller than the elastic one, and N2 < 0 (docs/physics.md; the paper).
 #include <gtest/gtest.h>
 
 #include "micro_test_support.h"

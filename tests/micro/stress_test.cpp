@@ -1,4 +1,4 @@
-// The virial stress σ^e_ij = −(1/V) Σ_pairs d_i f_j (model.md §5), computed by hand
+// The virial stress σ^e_ij = −(1/V) Σ_pairs d_i f_j (docs/physics.md, "Stress"), computed by hand
 // for two- and three-particle configurations with the Hertz law written out in
 // its dimensional form f = (4/3) E* R_c^{1/2} h^{3/2}, and compared with the
 // engine — including a pair that touches only across the Lees–Edwards boundary.
@@ -53,7 +53,7 @@ TEST(VirialStress, CompressionalPairHasPositiveShearStress) {
   // Two unit spheres overlapping by h = 0.1 along the compressional axis
   // (1, −1, 0)/√2 of u = γ̇ y e_x: d = x_α − x_β = r (1, −1, 0)/√2, f = |f| d/r.
   //     σ = −(1/V) d ⊗ f:  σ_yx = σ_xy = +|f| r/(2V),  σ_xx = σ_yy = −|f| r/(2V),
-  // σ_zz = 0; hence N1 = 0, N2 = −|f| r/(2V), Π = |f| r/(3V) (model.md §5 signs).
+  // σ_zz = 0; hence N1 = 0, N2 = −|f| r/(2V), Π = |f| r/(3V) (docs/physics.md, "Stress": signs).
   const double r = 1.9;
   const Vec3 alpha(10.0, 10.0, 10.0);
   const Vec3 d = r * Vec3(1.0, -1.0, 0.0).normalized();

@@ -1,5 +1,5 @@
 // Structure analysis (analysis/structure.h): the stress–structure identities of
-// model.md §7, isotropy, and exact values on a constructed configuration.
+// docs/structure.md, isotropy, and exact values on a constructed configuration.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -46,7 +46,7 @@ StructureResult one_snapshot(const Sheared& s, const StructureSettings& settings
 TEST(Structure, ForceWeightedMomentsRebuildTheVirialToRoundOff) {
   // Polydisperse (δ = 0.1): the force is not a function of r, yet the
   // force-weighted moments carry each pair's force and distance, so the
-  // formulas of model.md §7 give the virial exactly — up to the order in
+  // formulas of docs/structure.md give the virial exactly — up to the order in
   // which the sums are taken, a few ulp of the largest terms.
   const Sheared s = affinely_sheared_packing(0.1, 3);
   const StructureResult r = one_snapshot(s, {});
