@@ -24,8 +24,8 @@
 #include <functional>
 #include <vector>
 
-#include "micro/protocol/shear_run.h"
 #include "micro/model/contact_system.h"
+#include "micro/protocol/shear_run.h"
 
 namespace softglass::micro {
 

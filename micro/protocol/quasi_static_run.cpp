@@ -131,22 +131,10 @@ QuasiStaticResult run_quasi_static(const Particles& particles, const LeesEdwards
       state.snapshots.push_back({state.box.strain(), state.particles.position});
 
     const double sheared = state.box.strain() - state.start;
-    bool stop = false;
-    if (sheared >= state.next_check - slack) {
-      state.next_check += protocol.check_interval;
-      run.summary = summarise(state.series, protocol.min_stationary_strain);
-      state.worst = run.summary.worst_relative_error();
-      if (meets_stopping_rule(run.summary, protocol)) {
-        run.converged = true;
-        run.stop_reason = converged_stop_reason(run.summary);
-        stop = true;
-      }
-    }
-    if (!stop && sheared >= protocol.max_strain - slack) {
-      run.summary = summarise(state.series, protocol.min_stationary_strain);
-      run.stop_reason = max_strain_stop_reason(run.summary, protocol);
-      stop = true;
-    }
+    const bool check_due = sheared >= state.next_check - slack;
+    if (check_due) state.next_check += protocol.check_interval;
+    const bool stop = stops_after_sample(state.series, protocol, check_due,
+                                         sheared >= protocol.max_strain - slack, run, state.worst);
     if (progress) progress({sheared, protocol.max_strain, state.worst});
     if (stop) break;
     steps_since_save += r.steps;
