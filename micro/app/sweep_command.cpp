@@ -23,8 +23,8 @@
 #include "common/progress.h"
 #include "common/version.h"
 #include "micro/app/run_steps.h"
-#include "micro/sweep/directory_lock.h"
 #include "micro/results/flow_curve_table.h"
+#include "micro/sweep/directory_lock.h"
 
 namespace softglass::micro {
 
@@ -210,6 +210,103 @@ void print_plan(const Sweep& sweep) {
   }
 }
 
+// `--case K` of a batch array: that case alone (and its packing), no lock —
+// other tasks share the folder.
+void run_one_case(const Sweep& sweep, std::size_t index, const Workers& workers, bool quiet) {
+  const SweepPlan& plan = sweep.plan;
+  if (index >= plan.cases.size())
+    throw InputError(
+        fmt::format("--case {}: the sweep has cases 0 … {}", index, plan.cases.size() - 1));
+  const SweepCase& c = plan.cases[index];
+  const SweepPacking& packing = plan.packings[c.packing];
+  if (!std::filesystem::exists(packing.file)) make_packing(sweep, packing, workers, quiet);
+  if (std::filesystem::exists(c.file)) {
+    log(workers, "case {} is done: {}", index, c.file.string());
+    return;
+  }
+  Progress bar("case", 1.0, quiet);
+  run_case(sweep, c, workers, [&](double fraction) { bar.update(fraction); });
+}
+
+// Only one sweep per folder; the ranks of this one agree before going on. The
+// leader takes the lock into `lock`; when it is refused, the leader throws and
+// the others return false.
+bool lock_folder(const SweepPlan& plan, const Workers& workers,
+                 std::optional<DirectoryLock>& lock) {
+  std::string lock_error;
+  if (workers.leader()) {
+    try {
+      lock.emplace(plan.directory);
+    } catch (const InputError& e) {
+      lock_error = e.what();
+    }
+  }
+  if (workers.all(lock_error.empty())) return true;
+  if (workers.leader()) throw InputError(lock_error);
+  return false;
+}
+
+// The packings first: every case of a (φ, seed) starts from its packing.
+void make_packings(const Sweep& sweep, const Workers& workers) {
+  const SweepPlan& plan = sweep.plan;
+  std::vector<std::size_t> pending;
+  std::vector<double> cost;
+  for (std::size_t k = 0; k < plan.packings.size(); ++k) {
+    cost.push_back(static_cast<double>(plan.particles));
+    if (!std::filesystem::exists(plan.packings[k].file)) pending.push_back(k);
+  }
+  bool ok = true;
+  for (std::size_t k : my_share(pending, cost, workers)) {
+    try {
+      make_packing(sweep, plan.packings[k], workers, true);
+    } catch (const std::exception& e) {
+      log(workers, "FAILED   packing {}: {}", plan.packings[k].file.string(), e.what());
+      ok = false;
+    }
+  }
+  if (!workers.all(ok)) throw NumericalError("some packings failed (see above); rerun to retry");
+}
+
+// The pending cases, spread over the workers by cost (longest first); a failed
+// case is logged and left out, the others go on.
+void run_cases(const Sweep& sweep, const Workers& workers, bool quiet) {
+  const SweepPlan& plan = sweep.plan;
+  std::vector<std::size_t> pending;
+  std::vector<double> cost;
+  for (std::size_t k = 0; k < plan.cases.size(); ++k) {
+    cost.push_back(plan.cases[k].cost);
+    if (!std::filesystem::exists(plan.cases[k].file)) pending.push_back(k);
+  }
+  const std::vector<std::size_t> mine = my_share(pending, cost, workers);
+  double total = 0.0, finished = 0.0;
+  for (std::size_t k : mine) total += cost[k];
+  // Only the leader draws: its share stands for the sweep's time left.
+  Progress bar("sweep", total, quiet || !workers.leader());
+  std::size_t failed = 0;
+  for (std::size_t k : mine) {
+    // A case resumed from its checkpoint reports its first progress part-way:
+    // that part was run before, and must not speed up the time left.
+    bool carry = std::filesystem::exists(checkpoint_file(plan.cases[k]));
+    try {
+      run_case(sweep, plan.cases[k], workers, [&](double fraction) {
+        if (carry) bar.carry(fraction * cost[k]);
+        carry = false;
+        bar.update(finished + fraction * cost[k]);
+      });
+    } catch (const std::exception& e) {
+      log(workers, "FAILED   case {} ({}): {}", k, plan.cases[k].file.string(), e.what());
+      ++failed;
+    }
+    finished += cost[k];
+    bar.update(finished);
+  }
+  bar.finish();
+  if (!workers.all(failed == 0) && workers.leader())
+    log(workers, "some cases failed; the table holds the others");
+  if (failed > 0 && !workers.leader())
+    throw NumericalError(fmt::format("{} case(s) failed on rank {}", failed, workers.rank()));
+}
+
 }  // namespace
 
 void sweep_command(const SweepOptions& options, const Workers& workers) {
@@ -223,37 +320,10 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
     if (workers.leader()) print_plan(sweep);
     return;
   }
-  if (options.only_case) {  // one case of a batch array: no lock, other tasks share the folder
-    if (*options.only_case >= plan.cases.size())
-      throw InputError(fmt::format("--case {}: the sweep has cases 0 … {}", *options.only_case,
-                                   plan.cases.size() - 1));
-    const SweepCase& c = plan.cases[*options.only_case];
-    const SweepPacking& packing = plan.packings[c.packing];
-    if (!std::filesystem::exists(packing.file))
-      make_packing(sweep, packing, workers, options.quiet);
-    if (std::filesystem::exists(c.file)) {
-      log(workers, "case {} is done: {}", *options.only_case, c.file.string());
-      return;
-    }
-    Progress bar("case", 1.0, options.quiet);
-    run_case(sweep, c, workers, [&](double fraction) { bar.update(fraction); });
-    return;
-  }
+  if (options.only_case) return run_one_case(sweep, *options.only_case, workers, options.quiet);
 
-  // Only one sweep per folder; the ranks of this one agree before going on.
   std::optional<DirectoryLock> lock;
-  std::string lock_error;
-  if (workers.leader()) {
-    try {
-      lock.emplace(plan.directory);
-    } catch (const InputError& e) {
-      lock_error = e.what();
-    }
-  }
-  if (!workers.all(lock_error.empty())) {
-    if (workers.leader()) throw InputError(lock_error);
-    return;
-  }
+  if (!lock_folder(plan, workers, lock)) return;
   if (!options.gather_only) {
     if (workers.leader()) {
       std::size_t done = 0;
@@ -262,58 +332,8 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
           sweep.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
           plan.directory.string());
     }
-    // The packings first: every case of a (φ, seed) starts from its packing.
-    std::vector<std::size_t> pending;
-    std::vector<double> cost;
-    for (std::size_t k = 0; k < plan.packings.size(); ++k) {
-      cost.push_back(static_cast<double>(plan.particles));
-      if (!std::filesystem::exists(plan.packings[k].file)) pending.push_back(k);
-    }
-    bool ok = true;
-    for (std::size_t k : my_share(pending, cost, workers)) {
-      try {
-        make_packing(sweep, plan.packings[k], workers, true);
-      } catch (const std::exception& e) {
-        log(workers, "FAILED   packing {}: {}", plan.packings[k].file.string(), e.what());
-        ok = false;
-      }
-    }
-    if (!workers.all(ok)) throw NumericalError("some packings failed (see above); rerun to retry");
-
-    pending.clear();
-    cost.clear();
-    for (std::size_t k = 0; k < plan.cases.size(); ++k) {
-      cost.push_back(plan.cases[k].cost);
-      if (!std::filesystem::exists(plan.cases[k].file)) pending.push_back(k);
-    }
-    const std::vector<std::size_t> mine = my_share(pending, cost, workers);
-    double total = 0.0, finished = 0.0;
-    for (std::size_t k : mine) total += cost[k];
-    // Only the leader draws: its share stands for the sweep's time left.
-    Progress bar("sweep", total, options.quiet || !workers.leader());
-    std::size_t failed = 0;
-    for (std::size_t k : mine) {
-      // A case resumed from its checkpoint reports its first progress part-way:
-      // that part was run before, and must not speed up the time left.
-      bool carry = std::filesystem::exists(checkpoint_file(plan.cases[k]));
-      try {
-        run_case(sweep, plan.cases[k], workers, [&](double fraction) {
-          if (carry) bar.carry(fraction * cost[k]);
-          carry = false;
-          bar.update(finished + fraction * cost[k]);
-        });
-      } catch (const std::exception& e) {
-        log(workers, "FAILED   case {} ({}): {}", k, plan.cases[k].file.string(), e.what());
-        ++failed;
-      }
-      finished += cost[k];
-      bar.update(finished);
-    }
-    bar.finish();
-    if (!workers.all(failed == 0) && workers.leader())
-      log(workers, "some cases failed; the table holds the others");
-    if (failed > 0 && !workers.leader())
-      throw NumericalError(fmt::format("{} case(s) failed on rank {}", failed, workers.rank()));
+    make_packings(sweep, workers);
+    run_cases(sweep, workers, options.quiet);
   }
   if (!workers.leader()) return;
   const std::size_t missing = write_tables(sweep, workers);

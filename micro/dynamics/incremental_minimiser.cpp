@@ -193,6 +193,61 @@ int IncrementalMinimiser::newton_direction(std::span<const double> proximal, dou
   return outcome.iterations;
 }
 
+// Armijo backtracking on Φ along direction_ from u, which leaves the trial
+// point (step t) in the trial buffers when it is accepted. The change is the
+// sum of the parts' changes; near the minimum it can fall below their
+// rounding, and then the step is judged by the gradient. A trial beyond the
+// neighbour list's reach is shortened like one that fails the Armijo test, as
+// long as the accepted point has used less than half the reach; past that, the
+// caller's rebuild around the accepted point gains more, and it always leaves a
+// reach for the next step: the system is then back at u (`list_invalid`).
+IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
+    ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag, double h,
+    const std::vector<Vec3>& u, Value& value, Value& trial_value, double& t) {
+  const std::size_t n = u.size();
+  const double reach = system.neighbours().nonaffine_reach(base_strain_);
+  const bool rebuild_pays = system.max_nonaffine_displacement() > 0.5 * reach;
+  const double slope = dot(gradient_, direction_);
+  const double gnorm2 = dot(gradient_, gradient_);
+  t = 1.0;
+  for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
+    for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
+    if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
+      if (!rebuild_pays) continue;
+      evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);  // back to u
+      return LineSearch::list_invalid;
+    }
+    const double change = (trial_value.elastic - value.elastic) +
+                          (trial_value.proximal - value.proximal) +
+                          (trial_value.dissipation - value.dissipation);
+    const double rounding =
+        64.0 * std::numeric_limits<double>::epsilon() *
+        (std::abs(value.elastic) + std::abs(trial_value.elastic) + value.proximal +
+         trial_value.proximal + value.dissipation + trial_value.dissipation);
+    if (change <= kArmijo * t * slope ||
+        (std::abs(change) <= rounding && dot(gradient_trial_, gradient_trial_) < gnorm2))
+      return LineSearch::accepted;
+  }
+  evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);  // leave the system at u
+  return LineSearch::failed;
+}
+
+// The Newton direction, the Hessian model damped (Levenberg–Marquardt μ) while
+// CG meets negative curvature, then shortened so that no particle moves more
+// than kMaxMove.
+void IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
+  int cg = newton_direction(proximal, eta);
+  for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
+    damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
+    invert_diagonal();
+    cg += newton_direction(proximal, eta);
+  }
+  counters_.cg_iterations += static_cast<std::size_t>(cg);
+  const double longest = max_norm(direction_);
+  if (longest > kMaxMove)
+    for (auto& d : direction_) d *= kMaxMove / longest;
+}
+
 IncrementalResult IncrementalMinimiser::minimise(
     ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag, double h,
     std::vector<Vec3>& u, std::vector<double>* energies, int max_iterations) {
@@ -252,60 +307,17 @@ IncrementalResult IncrementalMinimiser::minimise(
     // Levenberg–Marquardt damping μ: raised while CG meets negative curvature
     // (a plastic instability, or a contact's tangential softening), lowered
     // after full Newton steps, so that near a minimum the step is pure Newton.
-    const double eta = std::min(0.1, std::sqrt(gnorm / first_gradient));
-    int cg = newton_direction(proximal, eta);
-    for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
-      damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
-      invert_diagonal();
-      cg += newton_direction(proximal, eta);
-    }
-    counters_.cg_iterations += static_cast<std::size_t>(cg);
-    double longest = max_norm(direction_);
-    if (longest > kMaxMove)
-      for (auto& d : direction_) d *= kMaxMove / longest;
+    damped_newton_direction(proximal, std::min(0.1, std::sqrt(gnorm / first_gradient)));
 
-    // Armijo backtracking on Φ. The change is the sum of the parts' changes;
-    // near the minimum it can fall below their rounding, and then the step is
-    // judged by the gradient.
-    // A trial beyond the neighbour list's reach is shortened like one that
-    // fails the Armijo test, as long as the accepted point has used less than
-    // half the reach; past that, the caller's rebuild around the accepted point
-    // gains more, and it always leaves a reach for the next step.
-    const double reach = system.neighbours().nonaffine_reach(base_strain_);
-    const bool rebuild_pays = system.max_nonaffine_displacement() > 0.5 * reach;
-    const double slope = dot(gradient_, direction_);
-    const double gnorm2 = dot(gradient_, gradient_);
-    bool accepted = false;
     double t = 1.0;
-    for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
-      for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
-      if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
-        if (!rebuild_pays) continue;
-        // Back to the last accepted point, where the list is valid.
-        evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
-        result.list_invalid = true;
-        result.energy_change = value.elastic - start.elastic;
-        result.max_displacement = max_norm(u);
-        return result;
-      }
-      const double change = (trial_value.elastic - value.elastic) +
-                            (trial_value.proximal - value.proximal) +
-                            (trial_value.dissipation - value.dissipation);
-      const double rounding =
-          64.0 * std::numeric_limits<double>::epsilon() *
-          (std::abs(value.elastic) + std::abs(trial_value.elastic) + value.proximal +
-           trial_value.proximal + value.dissipation + trial_value.dissipation);
-      if (change <= kArmijo * t * slope ||
-          (std::abs(change) <= rounding && dot(gradient_trial_, gradient_trial_) < gnorm2)) {
-        accepted = true;
-        break;
-      }
+    const LineSearch searched = line_search(system, proximal, drag, h, u, value, trial_value, t);
+    if (searched == LineSearch::list_invalid) {
+      result.list_invalid = true;
+      result.energy_change = value.elastic - start.elastic;
+      result.max_displacement = max_norm(u);
+      return result;
     }
-    if (!accepted) {
-      // Leave the system at the last accepted point.
-      evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
-      break;
-    }
+    if (searched == LineSearch::failed) break;
     // Majoriser for contacts whose |w| shrinks fast (see the header).
     for (std::size_t k = 0; k < drag.size(); ++k) {
       relief_[k] = w_trial_[k].norm() >= 0.9 * w_[k].norm() ? 0.5 : 0.0;

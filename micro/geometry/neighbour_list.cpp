@@ -58,18 +58,27 @@ std::vector<std::uint32_t> NeighbourList::spatial_order(const LeesEdwardsBox& bo
 void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
                           std::span<const double> radius) {
   const std::size_t n = x.size();
-  max_radius_ = n ? *std::max_element(radius.begin(), radius.end()) : 0.0;
-  const Grid g = grid_for(box, max_radius_);
-  const int nc = g.cells;
-  const double reach = 2.0 * max_radius_ + skin_;
-  const double offset = box.image_offset();
-  const double L = box.side();
   if (n > kMaxParticles) {
     throw InputError(
         fmt::format("{} particles exceed the neighbour list's limit of {}", n, kMaxParticles));
   }
+  max_radius_ = n ? *std::max_element(radius.begin(), radius.end()) : 0.0;
+  const Grid g = grid_for(box, max_radius_);
+  sort_into_cells(g, x);
+  const int threads = n >= 4096 ? omp_get_max_threads() : 1;
+  find_pairs(box, g, x, radius, threads);
+  gather_rows(n);
+  compute_constants(radius, threads);
+  strain_at_build_ = box.strain();
+  offset_at_build_ = box.image_offset();
+  built_ = true;
+  ++builds_;
+}
 
-  // Counting sort of the particles into cells.
+// Counting sort of the particles into the grid's cells.
+void NeighbourList::sort_into_cells(const Grid& g, std::span<const Vec3> x) {
+  const std::size_t n = x.size();
+  const int nc = g.cells;
   const std::size_t ncell = static_cast<std::size_t>(nc) * nc * nc;
   std::vector<std::uint32_t> cell_of(n);
   cell_start_.assign(ncell + 1, 0);
@@ -82,24 +91,50 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   }
   std::partial_sum(cell_start_.begin(), cell_start_.end(), cell_start_.begin());
   cell_members_.resize(n);
-  {
-    std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i)
-      cell_members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
-  }
+  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    cell_members_[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+}
 
+// The pairs (i, j > i) within reach, each thread into its own list, with the
+// image each pair is seen through; counts_[i] the pairs of i.
+void NeighbourList::find_pairs(const LeesEdwardsBox& box, const Grid& g, std::span<const Vec3> x,
+                               std::span<const double> radius, int threads) {
+  const std::size_t n = x.size();
+  const int nc = g.cells;
+  const double reach = 2.0 * max_radius_ + skin_;
+  const double offset = box.image_offset();
+  const double L = box.side();
   counts_.assign(n, 0);
-  const int threads = n >= 4096 ? omp_get_max_threads() : 1;
   thread_pairs_.resize(threads);
 
 #pragma omp parallel num_threads(threads)
   {
     std::vector<std::uint32_t>& pairs = thread_pairs_[omp_get_thread_num()];
     pairs.clear();
+    // The members of cell c that pair with i, appended to `pairs`.
+    const auto scan_cell = [&](std::size_t i, std::size_t c, std::uint32_t& count) {
+      const Vec3 xi = x[i];
+      for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
+        const std::uint32_t j = cell_members_[k];
+        if (j <= i) continue;
+        const double cutoff = radius[i] + radius[j] + skin_;
+        const Vec3 raw = xi - x[j];
+        const Vec3 d = box.minimum_image(raw);
+        if (d.squaredNorm() < cutoff * cutoff) {
+          // raw − d = (n_x L + n_y δ, n_y L, n_z L)
+          const int ny = static_cast<int>(std::lround((raw.y() - d.y()) / L));
+          const int nz = static_cast<int>(std::lround((raw.z() - d.z()) / L));
+          const int nx = static_cast<int>(std::lround((raw.x() - d.x() - ny * offset) / L));
+          const auto code = static_cast<std::uint32_t>((nx + 2) + 5 * (ny + 1) + 15 * (nz + 1));
+          pairs.push_back(j | (code << kIndexBits));
+          ++count;
+        }
+      }
+    };
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 xi = x[i];
-      const double ri = radius[i];
       const int cx = cell_coordinate(xi.x(), g.width, nc);
       const int cy = cell_coordinate(xi.y(), g.width, nc);
       const int cz = cell_coordinate(xi.z(), g.width, nc);
@@ -118,46 +153,36 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
           const int z = periodic(cz + dz, nc);
           for (int xc = x_lo; xc <= x_hi; ++xc) {
             const int xw = ((xc % nc) + nc) % nc;
-            const std::size_t c = (static_cast<std::size_t>(z) * nc + y) * nc + xw;
-            for (std::uint32_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) {
-              const std::uint32_t j = cell_members_[k];
-              if (j <= i) continue;
-              const double cutoff = ri + radius[j] + skin_;
-              const Vec3 raw = xi - x[j];
-              const Vec3 d = box.minimum_image(raw);
-              if (d.squaredNorm() < cutoff * cutoff) {
-                // raw − d = (n_x L + n_y δ, n_y L, n_z L)
-                const int ny = static_cast<int>(std::lround((raw.y() - d.y()) / L));
-                const int nz = static_cast<int>(std::lround((raw.z() - d.z()) / L));
-                const int nx = static_cast<int>(std::lround((raw.x() - d.x() - ny * offset) / L));
-                const auto code =
-                    static_cast<std::uint32_t>((nx + 2) + 5 * (ny + 1) + 15 * (nz + 1));
-                pairs.push_back(j | (code << kIndexBits));
-                ++count;
-              }
-            }
+            scan_cell(i, (static_cast<std::size_t>(z) * nc + y) * nc + xw, count);
           }
         }
       }
       counts_[i] = count;
     }
   }
+}
 
-  // Concatenate the per-thread lists into CSR form. With a static schedule the
-  // threads own consecutive ranges of i, so thread order is index order.
+// The per-thread lists concatenated into CSR form. With a static schedule the
+// threads own consecutive ranges of i, so thread order is index order; the
+// neighbours of each i are then sorted by j, a fixed summation order whatever
+// the grid.
+void NeighbourList::gather_rows(std::size_t n) {
   start_.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) start_[i + 1] = start_[i] + counts_[i];
   neighbours_.clear();
   neighbours_.reserve(start_[n]);
   for (const auto& pairs : thread_pairs_)
     neighbours_.insert(neighbours_.end(), pairs.begin(), pairs.end());
-  // Neighbours of each i in increasing j: a fixed summation order whatever the grid.
   for (std::size_t i = 0; i < n; ++i) {
     std::sort(neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i]),
               neighbours_.begin() + static_cast<std::ptrdiff_t>(start_[i + 1]),
               [](std::uint32_t a, std::uint32_t b) { return index(a) < index(b); });
   }
+}
 
+// R_i + R_j, R_c and 1/R_c of every pair, for the kernels.
+void NeighbourList::compute_constants(std::span<const double> radius, int threads) {
+  const std::size_t n = start_.size() - 1;
   constants_.resize(neighbours_.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::size_t i = 0; i < n; ++i) {
@@ -167,11 +192,6 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
       constants_[p] = {sum, ri * rj / sum, sum / (ri * rj)};
     }
   }
-
-  strain_at_build_ = box.strain();
-  offset_at_build_ = offset;
-  built_ = true;
-  ++builds_;
 }
 
 std::array<Vec3, NeighbourList::kImages> NeighbourList::image_shifts(

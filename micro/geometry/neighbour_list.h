@@ -97,6 +97,12 @@ class NeighbourList {
     double width;
   };
   Grid grid_for(const LeesEdwardsBox& box, double max_radius) const;
+  // The steps of build().
+  void sort_into_cells(const Grid& g, std::span<const Vec3> x);
+  void find_pairs(const LeesEdwardsBox& box, const Grid& g, std::span<const Vec3> x,
+                  std::span<const double> radius, int threads);
+  void gather_rows(std::size_t n);
+  void compute_constants(std::span<const double> radius, int threads);
 
   static constexpr unsigned kIndexBits = 26;
   static constexpr std::uint32_t kIndexMask = (1u << kIndexBits) - 1;

@@ -76,7 +76,7 @@ void declare_coefficients(ParameterHandler& prm, const ContactLawEntry& law, Ent
   }
 }
 
-void declare(ParameterHandler& prm, Entries& e) {
+void declare_particles(ParameterHandler& prm, Entries& e) {
   MicroParameters& p = e.p;
   prm.enter_subsection("particles");
   entry(prm, "number", e.particles, "Number of particles N.", Patterns::Integer(2, 50000000));
@@ -94,7 +94,10 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Double(1.0, 5.0));
   entry(prm, "seed", e.seed, "Seed of every random number of the packing.", Patterns::Integer(0));
   prm.leave_subsection();
+}
 
+void declare_packing(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("packing");
   entry(prm, "input file", e.packing_input,
         "Reuse the relaxed packing of an earlier run file (HDF5) instead of making "
@@ -116,7 +119,10 @@ void declare(ParameterHandler& prm, Entries& e) {
   entry(prm, "max iterations", e.max_relaxation_iterations,
         "FIRE iterations allowed for the final relaxation.", Patterns::Integer(1));
   prm.leave_subsection();
+}
 
+void declare_contact_law(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("contact law");
   entry(prm, "law", p.contact_law.name,
         documented_choice("Elastic contact law f = E* R_c^2 F(eps), eps = h/R_c (docs/physics.md):",
@@ -124,7 +130,10 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Selection(contact_laws().selection()));
   for (const ContactLawEntry& law : contact_laws().entries()) declare_coefficients(prm, law, e);
   prm.leave_subsection();
+}
 
+void declare_shear(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("shear");
   entry(prm, "gamma dot tilde", p.shear_model.gamma_tilde,
         "Dimensionless shear rate gamma_dot eta_s / E* (the paper: 1e-9 ... 1e-4).",
@@ -153,7 +162,10 @@ void declare(ParameterHandler& prm, Entries& e) {
         "of their means.",
         Patterns::Double(1e-6, 1.0));
   prm.leave_subsection();
+}
 
+void declare_drag(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("drag");
   entry(prm, "ehd", p.shear_model.drag.enabled,
         "Include the elastohydrodynamic drag between sliding facets.", Patterns::Bool());
@@ -181,7 +193,10 @@ void declare(ParameterHandler& prm, Entries& e) {
   entry(prm, "max newton iterations", p.shear_model.drag.max_newton_iterations,
         "Newton iterations allowed per velocity solve.", Patterns::Integer(1, 10000));
   prm.leave_subsection();
+}
 
+void declare_integrator(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("integrator");
   entry(prm, "scheme", p.integrator.name,
         documented_choice(fmt::format("Time integrator (docs/integrators.md): auto: euler at "
@@ -203,7 +218,10 @@ void declare(ParameterHandler& prm, Entries& e) {
         "force.",
         Patterns::Double(1e-15, 1e-3));
   prm.leave_subsection();
+}
 
+void declare_structure(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("structure");
   entry(prm, "bin width", p.structure.bin_width, "Radial bin width of g_lm(r), units of R.",
         Patterns::Double(1e-4, 0.5));
@@ -219,12 +237,18 @@ void declare(ParameterHandler& prm, Entries& e) {
   entry(prm, "batches", p.structure.batches, "Batches of snapshots for the error estimates.",
         Patterns::Integer(2, 1000));
   prm.leave_subsection();
+}
 
+void declare_neighbours(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("neighbours");
   entry(prm, "skin", p.packing.skin, "Verlet-list skin, in units of R.",
         Patterns::Double(0.01, 2.0));
   prm.leave_subsection();
+}
 
+void declare_output(ParameterHandler& prm, Entries& e) {
+  MicroParameters& p = e.p;
   prm.enter_subsection("output");
   entry(prm, "file", e.output_file,
         "HDF5 result file (relative to the current directory); the command line "
@@ -232,6 +256,19 @@ void declare(ParameterHandler& prm, Entries& e) {
         Patterns::Anything());
   entry(prm, "overwrite", p.overwrite, "Replace an existing output file.", Patterns::Bool());
   prm.leave_subsection();
+}
+
+// Every entry of a `micro run` file, subsection by subsection.
+void declare(ParameterHandler& prm, Entries& e) {
+  declare_particles(prm, e);
+  declare_packing(prm, e);
+  declare_contact_law(prm, e);
+  declare_shear(prm, e);
+  declare_drag(prm, e);
+  declare_integrator(prm, e);
+  declare_structure(prm, e);
+  declare_neighbours(prm, e);
+  declare_output(prm, e);
 }
 
 std::filesystem::path beside(const std::filesystem::path& prm_file, const std::string& name) {

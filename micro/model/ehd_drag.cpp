@@ -230,25 +230,35 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
     stats.newton_iterations = 1;
     return stats;
   }
+  Residual r = relative_residual(gradient_, v, friction);
+  stats.fixed_point_sweeps = jacobi_sweeps(c, friction, force, v, r);
+  newton(c, friction, force, v, r, stats);
+  return stats;
+}
 
-  // Fixed-point sweeps while each at least halves the residual: one contact pass
-  // each, and when the drag is weaker than the friction (γ̃ ≳ 1e-6) a few suffice
-  // (see the header).
-  const auto relative_residual = [&](const std::vector<Vec3>& gradient, std::span<const Vec3> at) {
-    double residual = 0.0, scale = 1.0;
-    for (std::size_t a = 0; a < n; ++a) {
-      residual = std::max(residual, gradient[a].norm() / friction[a]);
-      scale = std::max(scale, at[a].norm());
-    }
-    return std::pair{residual / scale, scale};
-  };
-  auto [residual, scale] = relative_residual(gradient_, v);
-  while (residual > settings_.tolerance) {
-    // Nonlinear Jacobi: each particle's own stiffness, friction plus ¾ of the
-    // secant stiffness a/√|w| of its contacts' drag (the drag's curvature is ½
-    // of it along the slip and all of it across; ¾ measured best: 4.3 sweeps
-    // per evaluation at γ̃ = 1e-4 against 6.3 with the friction alone).
-    for (std::size_t a = 0; a < n; ++a) {
+EhdDrag::Residual EhdDrag::relative_residual(const std::vector<Vec3>& gradient,
+                                             std::span<const Vec3> at,
+                                             std::span<const double> friction) const {
+  double residual = 0.0, scale = 1.0;
+  for (std::size_t a = 0; a < at.size(); ++a) {
+    residual = std::max(residual, gradient[a].norm() / friction[a]);
+    scale = std::max(scale, at[a].norm());
+  }
+  return {residual / scale, scale};
+}
+
+// Fixed-point sweeps while each at least halves the residual: one contact pass
+// each, and when the drag is weaker than the friction (γ̃ ≳ 1e-6) a few suffice
+// (see the header). Nonlinear Jacobi: each particle's own stiffness, friction
+// plus ¾ of the secant stiffness a/√|w| of its contacts' drag (the drag's
+// curvature is ½ of it along the slip and all of it across; ¾ measured best:
+// 4.3 sweeps per evaluation at γ̃ = 1e-4 against 6.3 with the friction alone),
+// plus the Stokes pair dashpots.
+int EhdDrag::jacobi_sweeps(const ContactList& c, std::span<const double> friction,
+                           std::span<const Vec3> force, std::span<Vec3> v, Residual& r) {
+  int sweeps = 0;
+  while (r.residual > settings_.tolerance) {
+    for (std::size_t a = 0; a < v.size(); ++a) {
       double local = 0.0, pairs = 0.0;
       for (std::size_t e = incidence_start_[a]; e < incidence_start_[a + 1]; ++e) {
         local += secant_[incidence_[e] >> 1];
@@ -257,24 +267,29 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
       trial_[a] = v[a] - gradient_[a] / (reservoir_[a] + 0.75 * local + pairs);
     }
     gradient_at(c, force, trial_, w_trial_, gradient_trial_);
-    const auto [trial_residual, trial_scale] = relative_residual(gradient_trial_, trial_);
-    if (trial_residual > 0.5 * residual) break;
+    const Residual trial = relative_residual(gradient_trial_, trial_, friction);
+    if (trial.residual > 0.5 * r.residual) break;
     std::copy(trial_.begin(), trial_.end(), v.begin());
     w_.swap(w_trial_);
     gradient_.swap(gradient_trial_);
-    residual = trial_residual, scale = trial_scale;
-    ++stats.fixed_point_sweeps;
+    r = trial;
+    ++sweeps;
   }
+  return sweeps;
+}
 
-  // Newton. Curvature of each contact's drag term along ŵ: exact (θ = ½) to
-  // start with (the solve is warm-started), the majoriser (θ = 0) while the
-  // contact's |w| shrinks fast; see the header.
-  relief_.assign(m, 0.0);
+// Newton. Curvature of each contact's drag term along ŵ: exact (θ = ½) to
+// start with (the solve is warm-started), the majoriser (θ = 0) while the
+// contact's |w| shrinks fast; see the header.
+void EhdDrag::newton(const ContactList& c, std::span<const double> friction,
+                     std::span<const Vec3> force, std::span<Vec3> v, Residual r,
+                     VelocitySolveStats& stats) {
+  relief_.assign(c.size(), 0.0);
   double first_norm = 0.0;
   for (int it = 0;; ++it) {
-    if (it > 0) std::tie(residual, scale) = relative_residual(gradient_, v);
-    stats.residual = residual;
-    if (stats.residual <= settings_.tolerance) return stats;
+    if (it > 0) r = relative_residual(gradient_, v, friction);
+    stats.residual = r.residual;
+    if (stats.residual <= settings_.tolerance) return;
     if (it == settings_.max_newton_iterations) {
       throw NumericalError(fmt::format(
           "EHD velocity solve did not converge in {} Newton iterations (residual {:.3g}, "
@@ -287,35 +302,40 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
     const double gnorm = std::sqrt(dot(gradient_, gradient_));
     if (it == 0) first_norm = gnorm;
     stats.cg_iterations +=
-        newton_direction(c, friction, scale, std::min(1e-3, std::sqrt(gnorm / first_norm)));
-
-    // Backtracking line search (Armijo) on the change of Φ along the step,
-    // computed term by term: the friction and force terms exactly, the drag
-    // contact by contact. Φ itself is dominated by −F·v + ½ζ|v|², far larger
-    // than the changes that matter, so comparing values of Φ would lose them.
-    // Near the solution at low γ̃ the decrease can drop below that computation's
-    // rounding (the friction ζ ∝ γ̃ makes the slope g·δ tiny); then the step is
-    // judged by the gradient, which keeps its precision.
-    const double slope = dot(gradient_, step_);
-    double t = 1.0;
-    for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
-      const Change change = change_along_step(c, force, v, t);
-      if (change.value <= kArmijo * t * slope) break;
-      if (std::abs(change.value) <= change.rounding &&
-          dot(gradient_trial_, gradient_trial_) < gnorm * gnorm)
-        break;
-    }
+        newton_direction(c, friction, r.scale, std::min(1e-3, std::sqrt(gnorm / first_norm)));
+    line_search(c, force, v, gnorm);
     // The majoriser for contacts whose |w| shrinks fast, and for every shrinking
     // contact when the iteration made poor progress (a crawl).
-    const double progress = relative_residual(gradient_trial_, trial_).first / residual;
+    const double progress =
+        relative_residual(gradient_trial_, trial_, friction).residual / r.residual;
     const double keep = progress > 0.5 ? 1.0 : 0.9;
-    for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t k = 0; k < c.size(); ++k) {
       const double before = w_[k].norm(), after = w_trial_[k].norm();
       relief_[k] = after >= keep * before ? 0.5 : 0.0;
     }
     std::copy(trial_.begin(), trial_.end(), v.begin());
     w_.swap(w_trial_);
     gradient_.swap(gradient_trial_);
+  }
+}
+
+// Backtracking line search (Armijo) on the change of Φ along the step, computed
+// term by term: the friction and force terms exactly, the drag contact by
+// contact. Φ itself is dominated by −F·v + ½ζ|v|², far larger than the changes
+// that matter, so comparing values of Φ would lose them. Near the solution at
+// low γ̃ the decrease can drop below that computation's rounding (the friction
+// ζ ∝ γ̃ makes the slope g·δ tiny); then the step is judged by the gradient,
+// which keeps its precision. Leaves the trial point in the trial buffers.
+void EhdDrag::line_search(const ContactList& c, std::span<const Vec3> force,
+                          std::span<const Vec3> v, double gnorm) {
+  const double slope = dot(gradient_, step_);
+  double t = 1.0;
+  for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
+    const Change change = change_along_step(c, force, v, t);
+    if (change.value <= kArmijo * t * slope) break;
+    if (std::abs(change.value) <= change.rounding &&
+        dot(gradient_trial_, gradient_trial_) < gnorm * gnorm)
+      break;
   }
 }
 

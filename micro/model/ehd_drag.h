@@ -128,6 +128,21 @@ class EhdDrag {
   };
   Change change_along_step(const ContactList& contacts, std::span<const Vec3> force,
                            std::span<const Vec3> v, double t);
+  /// max_α |g_α|/ζ_α relative to max(1, max|v|), and that scale.
+  struct Residual {
+    double residual, scale;
+  };
+  Residual relative_residual(const std::vector<Vec3>& gradient, std::span<const Vec3> at,
+                             std::span<const double> friction) const;
+  /// The two phases of solve(): nonlinear Jacobi sweeps (returns how many were
+  /// kept), then Newton with a line search.
+  int jacobi_sweeps(const ContactList& contacts, std::span<const double> friction,
+                    std::span<const Vec3> force, std::span<Vec3> v, Residual& r);
+  void newton(const ContactList& contacts, std::span<const double> friction,
+              std::span<const Vec3> force, std::span<Vec3> v, Residual r,
+              VelocitySolveStats& stats);
+  void line_search(const ContactList& contacts, std::span<const Vec3> force,
+                   std::span<const Vec3> v, double gnorm);
   /// Adds per-contact vectors to particles: out_α += Σ_{c∋α} ±y_c.
   void gather(std::span<const Vec3> per_contact, std::span<Vec3> out) const;
   /// Newton direction: H δ = −g by block-Jacobi preconditioned CG to ‖r‖ ≤ η‖g‖.
