@@ -14,9 +14,8 @@
 // does not depend on γ̃. Variable-step BDF2 fits the same minimisation (with
 // the base point extrapolated from x_{n−1}, x_n and a step 2h/3-like weight),
 // but it is not energy-decreasing, and its extrapolation runs through plastic
-// events; since σ is already within 2 % at loose tolerances (measured:
-// docs/integrators.md), order 1 with a robust nonlinear solver is the chosen
-// trade. Runge–Kutta–Chebyshev (stabilised explicit) would still need
+// events; since σ is already accurate at loose tolerances (docs/integrators.md
+// measures it), order 1 with a robust nonlinear solver is the chosen trade. Runge–Kutta–Chebyshev (stabilised explicit) would still need
 // ∝ √(λh) stages per step, a cost per strain growing like γ̃^{-1/2}.
 //
 // Step. From x_n with velocities v_n (the last evaluation): x⁰ = x_n sheared

@@ -66,11 +66,9 @@ struct IntegratorSpec {
   void validate() const;
   /// The concrete scheme and tolerance for a run at `gamma_tilde`. `auto` is
   /// `euler` at γ̃ ≥ kAutoImplicitBelow and `implicit` below; a tolerance of 0
-  /// becomes the scheme's default (kDefaultTolerance). Measured in
-  /// docs/integrators.md: at 1e-5 `euler` is within 0.05 % of a converged
-  /// reference at 0.7 s per strain (N = 256) while `implicit` is 0.9 % low; at
-  /// 1e-6 `implicit` is as accurate (−0.3 ± 0.4 %) and 10× cheaper, and below
-  /// it `euler` is out of reach (its step ∝ γ̃).
+  /// becomes the scheme's default (IntegratorTraits). Why this split:
+  /// docs/integrators.md measures both schemes' error and cost by rate; below
+  /// the split `euler` is out of reach (its step ∝ γ̃).
   IntegratorSpec resolved_for(double gamma_tilde) const;
 };
 

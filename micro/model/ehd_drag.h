@@ -38,9 +38,8 @@
 // by more than 10 % per iteration — and, after an iteration that did not halve
 // the residual (a crawl), while it shrinks at all — and Newton otherwise
 // (approaching from below, Newton cannot overshoot a concave law), which gives
-// quadratic convergence at the end. Measured on 44 unrelaxed configurations
-// with drag up to 5× the friction (docs/numerics.md): 241 Newton iterations in
-// all, at most 12, against 720 and stalls for pure Newton. Both models are positive
+// quadratic convergence at the end (docs/numerics.md measures it against pure
+// Newton, which stalls). Both models are positive
 // definite, so every direction is a descent direction and the line search on Φ
 // makes the method globally convergent. In the model only, |w| is floored where
 // the contact's drag falls below the force tolerance; convergence is judged on

@@ -23,14 +23,11 @@ std::vector<double> decades(int first, int last, int per_decade) {
 const std::vector<double> kPaperVolumeFractions = {0.70, 0.75, 0.80, 0.85, 0.90};
 
 // Cost estimates of the cases, in seconds of one core per 5 strain: each
-// scheme's own (IntegratorTraits, measured on one N = 1000, φ = 0.80 column,
-// docs/sweeps.md); quasi-static ∝ Δγ^-0.75 (N = 250: 3.3× less per strain at
-// Δγ = 1e-3 than at 2e-4). Cost grows like N for the explicit scheme and like
-// N^1.35 for the minimisers (AQS: 7.7 s per strain at N = 250 against 50 s at
-// N = 1000). The estimates order the work, split it over the workers (longest
-// first) and apportion the time left, so a factor 2 is harmless; a wrong
-// scheme (an explicit estimate for an implicit run is 55× too high at 1e-9) is
-// not.
+// scheme's own (IntegratorTraits), quasi-static ∝ Δγ^-0.75; growing like N for
+// the explicit scheme and like N^1.35 for the minimisers (docs/sweeps.md
+// measures all of it). The estimates order the work, split it over the workers
+// (longest first) and apportion the time left, so a factor 2 is harmless; a
+// wrong scheme (an explicit estimate for an implicit run) is not.
 double minimiser_scale(std::size_t particles) {
   return std::pow(static_cast<double>(particles) / 1000.0, 1.35);
 }
