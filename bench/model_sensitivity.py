@@ -67,6 +67,8 @@ VARIANTS = {
     "fr0.05": ({("shear", "mobility factor"): "0.05"}, "literal, f_r = 0.05"),
     "fr0.2": ({("shear", "mobility factor"): "0.2"}, "literal, f_r = 0.2"),
     "fr1": ({("shear", "mobility factor"): "1"}, "literal, f_r = 1"),
+    "fr0.003": ({("shear", "mobility factor"): "0.003"}, "literal, f_r = 0.003"),
+    "fr0.1": ({("shear", "mobility factor"): "0.1"}, "literal, f_r = 0.1"),
     "ehd_off": ({("drag", "ehd"): "false"}, "literal without EHD drag"),
     "hertz": ({("contact law", "law"): "hertz"}, "Hertz at every ε"),
     "hertz_fr1": ({("contact law", "law"): "hertz", ("shear", "mobility factor"): "1"},
@@ -101,12 +103,26 @@ VARIANTS = {
 }
 
 
+def resolve(name):
+    """A variant's entries: a listed name, or names joined by '+' (their
+    entries together, later ones winning), e.g. nominal+neighbours."""
+    parts = name.split("+")
+    unknown = [p for p in parts if p not in VARIANTS]
+    if unknown:
+        return None
+    entries, texts = {}, []
+    for part in parts:
+        entries.update(VARIANTS[part][0])
+        texts.append(VARIANTS[part][1])
+    return entries, "; ".join(texts)
+
+
 def variant_file(path, name, entries, sweep):
     by_section = {}
     for (section, key), value in list(sweep.items()) + list(entries.items()):
         by_section.setdefault(section, []).append((key, value))
     with open(path, "w") as f:
-        f.write(f"# model sensitivity study, variant '{name}': {VARIANTS[name][1]}\n")
+        f.write(f"# model sensitivity study, variant '{name}': {resolve(name)[1]}\n")
         for section, items in by_section.items():
             f.write(f"subsection {section}\n")
             for key, value in items:
@@ -121,7 +137,7 @@ def read_csv(path):
 
 
 def run_variant(args, name):
-    entries, _ = VARIANTS[name]
+    entries, _ = resolve(name)
     folder = os.path.join(args.out, name)
     os.makedirs(folder, exist_ok=True)
     sweep = {("sweep", "preset"): "custom",
@@ -243,11 +259,11 @@ def mobility_sensitivity(args, done):
     that differ from another only in the mobility factor."""
     lines = []
     for name in done:
-        entries = VARIANTS[name][0]
+        entries = resolve(name)[0]
         if ("shear", "mobility factor") not in entries:
             continue
         base = {k: v for k, v in entries.items() if k != ("shear", "mobility factor")}
-        partner = next((n for n in done if VARIANTS[n][0] == base), None)
+        partner = next((n for n in done if resolve(n)[0] == base), None)
         if partner is None:
             continue
         a = sigma_by_point(os.path.join(args.out, name))
@@ -274,7 +290,7 @@ def static_scan(args, names):
     print(" ".join(f"{h:>13}" for h in ("variant", "phi", "G0 [E*]", "G0/Mason", "Pi [E*]",
                                           "<eps>", "Z", "seconds")))
     for name in names:
-        entries = {k: v for k, v in VARIANTS[name][0].items() if k[0] in ("contact law", "particles")}
+        entries = {k: v for k, v in resolve(name)[0].items() if k[0] in ("contact law", "particles")}
         folder = os.path.join(args.out, "static", name)
         os.makedirs(folder, exist_ok=True)
         for phi in phis:
@@ -331,7 +347,7 @@ def main():
     args.phis = [p.strip() for p in args.phis.split(",")]
     args.rates = [r.strip() for r in args.rates.split(",")]
     names = [v.strip() for v in args.variants.split(",")]
-    unknown = [n for n in names if n not in VARIANTS]
+    unknown = [n for n in names if resolve(n) is None]
     if unknown:
         sys.exit(f"unknown variant(s) {', '.join(unknown)}; --list shows them")
     args.out = os.path.abspath(args.out)
