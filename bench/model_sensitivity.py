@@ -13,7 +13,7 @@ bootstrap, and summarised per φ:
   k k' k''   each φ's own universal-law constants (paper 80, 20, 26)
   σe/σv      smallest elastic/viscous ratio at γ̃ ≤ 1e-5 (paper ≥ 100)
   G0/Mason   G0 against compressed emulsions, G′ ≈ 1.7 (γ_i/R) φ (φ − φ_c)
-             with E* = 9.92 γ_i/R (the paper's relation), φ_c = 0.64
+             with E* = 9.92 γ_i/R (the paper's relation), φ_c = 0.635
   σy/Mason   σ_y against τ_y ≈ 0.51 (γ_i/R)(φ − φ_c)² (Mason et al. 1996)
 
 and per variant: k, k', k'' fitted over all φ with their collapse statistic
@@ -23,7 +23,9 @@ not change for f_r < 0.1).
 
 With --static, only the packings are made (`micro pack`, no shear): G0/E*,
 Π/E* and ⟨ε⟩ per φ and variant against compressed emulsions — the check of the
-contact law that does not involve the dynamics (default φ 0.66 … 0.90).
+contact law that does not involve the dynamics (default φ 0.66 … 0.90). Mason
+et al. also found the osmotic pressure Π about equal to G′ over a wide range
+of φ, which Π/G0 shows.
 
 Usage (bench/model_sensitivity.sh wraps it):
   model_sensitivity.py --bin BUILD --out DIR [--variants a,b,...] [--phis ...]
@@ -43,7 +45,7 @@ import time
 # Mason, Bibette & Weitz, PRL 75, 2051 (1995): G′ ≈ 1.7 (γ_i/R) φ (φ − φ_c);
 # Mason, Bibette & Weitz, J. Colloid Interface Sci. 179, 439 (1996):
 # τ_y ≈ 0.51 (γ_i/R)(φ − φ_c)²; E* = 9.92 γ_i/R (Seth et al. 2006, the paper).
-PHI_C = 0.64
+PHI_C = 0.635
 E_STAR_PER_LAPLACE = 9.92
 
 
@@ -288,7 +290,7 @@ def static_scan(args, names):
     print(f"# static packings: N = {args.particles}, {args.packings} packings per phi; "
           f"Mason: G' = 1.7 (gamma_i/R) phi (phi - {PHI_C}), E* = {E_STAR_PER_LAPLACE} gamma_i/R")
     print(" ".join(f"{h:>13}" for h in ("variant", "phi", "G0 [E*]", "G0/Mason", "Pi [E*]",
-                                          "<eps>", "Z", "seconds")))
+                                          "Pi/G0", "<eps>", "Z", "seconds")))
     for name in names:
         entries = {k: v for k, v in resolve(name)[0].items() if k[0] in ("contact law", "particles")}
         folder = os.path.join(args.out, "static", name)
@@ -319,7 +321,8 @@ def static_scan(args, names):
             mean = sum(g0) / len(g0)
             se = (sum((g - mean) ** 2 for g in g0) / max(1, len(g0) - 1) / len(g0)) ** 0.5
             cells = (name, phi, fmt(mean, se), fmt(mean / mason_g0(float(phi))),
-                     fmt(sum(pressure) / len(pressure)), fmt(sum(eps) / len(eps)),
+                     fmt(sum(pressure) / len(pressure)), fmt(sum(pressure) / len(pressure) / mean),
+                     fmt(sum(eps) / len(eps)),
                      fmt(sum(z) / len(z)), f"{seconds:.0f}")
             print(" ".join(f"{c:>13}" for c in cells), flush=True)
 
