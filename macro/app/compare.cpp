@@ -11,7 +11,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "bridge/io/csv_table.h"
+#include "common/csv_table.h"
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/measured_torques.h"
@@ -62,8 +62,8 @@ std::string describe(const std::string& what, const Agreement& a) {
       what, a.points, 100 * a.mean, 100 * a.rms, 100 * a.median_abs, 100 * a.max_abs, a.max_at);
 }
 
-const bridge::RheometerCurve& select_curve(const std::vector<bridge::RheometerCurve>& curves,
-                                           const CompareOptions& o) {
+const RheometerCurve& select_curve(const std::vector<RheometerCurve>& curves,
+                                   const CompareOptions& o) {
   std::vector<std::string> labels;
   for (const auto& c : curves) labels.push_back(c.label);
   if (o.sample.empty()) {
@@ -117,9 +117,9 @@ int compare(const CompareOptions& o) {
   require(o.min_rate >= 0.0 && o.max_rate > o.min_rate,
           fmt::format("--min-rate {} and --max-rate {}: allowed 0 <= min < max", o.min_rate,
                       o.max_rate));
-  const auto curves = bridge::read_rheometer_curves(bridge::CsvTable::read(o.data_file),
-                                                    {o.rate_unit, o.stress_unit});
-  const bridge::RheometerCurve& curve = select_curve(curves, o);
+  const auto curves =
+      read_rheometer_curves(CsvTable::read(o.data_file), {o.rate_unit, o.stress_unit});
+  const RheometerCurve& curve = select_curve(curves, o);
   const MeasuredTorques measured = measured_torques(curve, constants, o.min_rate, o.max_rate);
 
   const std::filesystem::path directory =
@@ -203,7 +203,7 @@ int compare(const CompareOptions& o) {
   for (const std::string& c : measured.conversions) header_lines.push_back("derived: " + c);
 
   AtomicOutput& csv_file = *claimed.files[0];
-  write_results_csv(csv_file, header_lines, table, table_rows, 8);
+  write_results_csv(csv_file, header_lines, {table, table_rows}, 8);
 
   io::OverlayPlot plot{
       .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
@@ -234,7 +234,7 @@ int compare(const CompareOptions& o) {
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
   AtomicOutput& h5_file = *claimed.files[3];
-  write_results_h5(h5_file.temporary_path(), table, table_rows,
+  write_results_h5(h5_file.temporary_path(), {table, table_rows},
                    {.software = header_lines[0],
                     .scene_file = o.scene_file.string(),
                     .description = fmt::format(

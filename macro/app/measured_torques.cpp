@@ -6,11 +6,8 @@
 
 namespace softglass::macro::app {
 
-using bridge::Measured;
-
-MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
-                                 const InstrumentConstants& constants, double min_rate,
-                                 double max_rate) {
+MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentConstants& constants,
+                                 double min_rate, double max_rate) {
   const bool has_omega = curve.has(Measured::angular_velocity);
   const bool has_rate = curve.has(Measured::shear_rate);
   const bool has_torque = curve.has(Measured::torque);

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/io/measured_curves.h"
+#include "common/measured_curves.h"
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
@@ -30,8 +30,7 @@ struct MeasuredTorques {
 
 /// The points of `curve` whose shear rate (reported, or c_γ Ω) lies in
 /// [min_rate, max_rate]. InputError when fewer than 2 points remain.
-MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
-                                 const InstrumentConstants& constants, double min_rate,
-                                 double max_rate);
+MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentConstants& constants,
+                                 double min_rate, double max_rate);
 
 }  // namespace softglass::macro::app

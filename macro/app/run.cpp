@@ -58,16 +58,15 @@ int run(const RunOptions& options) {
   const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
   // The table of results.csv and results.h5: the operating point, then the row.
-  std::vector<Column> table{drive};
-  table.insert(table.end(), columns.begin(), columns.end());
-  std::vector<std::vector<double>> table_rows;
+  UnitTable table{.columns = {drive}, .rows = {}};
+  table.columns.insert(table.columns.end(), columns.begin(), columns.end());
   for (std::size_t k = 0; k < points.size(); ++k) {
-    table_rows.push_back({points[k]});
-    table_rows.back().insert(table_rows.back().end(), rows[k].begin(), rows[k].end());
+    table.rows.push_back({points[k]});
+    table.rows.back().insert(table.rows.back().end(), rows[k].begin(), rows[k].end());
   }
 
   write_results_csv(csv_file, {scene->description(), describe_model(material, settings)}, table,
-                    table_rows, 10);
+                    10);
 
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -108,7 +107,7 @@ int run(const RunOptions& options) {
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
   summary << "\nfull parameter set:\n" << parameters.str();
   summary.close();
-  write_results_h5(h5_file.temporary_path(), table, table_rows,
+  write_results_h5(h5_file.temporary_path(), table,
                    {.software = fmt::format("softglass macro {} ({})", kVersion, kGitRevision),
                     .scene_file = options.scene_file.string(),
                     .description = scene->description(),

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/unit_table.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
 
@@ -21,12 +22,6 @@ class ParameterHandler;
 }
 
 namespace softglass::macro {
-
-/// A CSV column: name and unit, written "name [unit]".
-struct Column {
-  std::string name;
-  std::string unit;
-};
 
 /// How a rotational rheometer reports what it measures (angular velocity Ω,
 /// torque M) as a shear rate and a stress: γ̇ = strain_constant · Ω and
