@@ -17,18 +17,16 @@
 //
 // symmetric positive definite (τ' > 0 for every regularised law), so each
 // Newton step is a weighted anisotropic Laplace problem, solved by a sparse
-// direct factorisation. The step is a descent direction of J; if the full step
-// does not reduce the residual, the step length minimises J along it exactly:
-// φ(α) = J(u + αδ) is convex, so its derivative φ'(α) = R(u + αδ)(δ) increases
-// and its zero is found by regula falsi. Newton then converges from any start.
+// direct factorisation. The step is a descent direction of J, so the line
+// search minimises J along it (LineSearch::energy_slope of
+// newton_continuation.h, which also holds the modified tangent and the
+// continuation in ε).
 //
-// Continuation. The smaller ε, the more η_ε varies (from τ_y/ε in the plug to K
-// γ̇^{n−1} in the flow) and the narrower the region where Newton converges
-// quadratically. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
-// the scene's viscosity scale) and divides ε by 10 per stage down to the target,
-// each stage starting from the previous one's solution. The last two stages
-// (10ε and ε) give the regularisation error estimate: the outputs converge like
-// O(ε) (macro.md), so the error at ε is about their difference / 9.
+// Continuation. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
+// the scene's viscosity scale) and divides ε by 10 per stage down to the
+// target. The last two stages (10ε and ε) give the regularisation error
+// estimate: the outputs converge like O(ε) (macro.md), so the error at ε is
+// about their difference / 9.
 //
 // Augmented Lagrangian (ALG2, Fortin & Glowinski 1983). The unregularised J is
 // not differentiable where γ̇ = 0. Introduce the shear-rate field γ ≈ s∇u at
@@ -81,12 +79,12 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <string>
+#include <limits>
 #include <type_traits>
 
 #include "common/errors.h"
 #include "macro/fe/distributed_system.h"
+#include "macro/fe/newton_continuation.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/io/vtu_output.h"
 #include "macro/material/regularised_law.h"
@@ -96,17 +94,6 @@ namespace softglass::macro::fe {
 using namespace dealii;
 
 namespace {
-
-// A failed continuation stage is retried with the step ε_prev/ε square-rooted
-// while it exceeds this (10 → 3.2 → 1.8 → 1.3: three retries).
-constexpr double kSmallestContinuationStep = 1.2;
-// Regula falsi on φ'(α): stop when |φ'| has dropped to this fraction of φ'(0)
-// (an inexact but sufficient line search), or after this many steps.
-constexpr double kLineSearchReduction = 0.1;
-constexpr int kLineSearchSteps = 12;
-// Modified Newton (solve_newton): τ' ≥ kTangentFloor·η (solver_settings.h)
-// after a step shorter than kFullStep.
-constexpr double kFullStep = 0.5;
 
 // The mesh of a section: distributed in 2D; a 1D section stays serial (p4est
 // has no 1D forests, and a line of a few hundred cells gains nothing).
@@ -151,7 +138,14 @@ class ScalarFlowSolver<dim>::Implementation {
         triangulation_(make_section_mesh<dim>(communicator_)),
         mapping_(mapping_degree),
         fe_(settings.fe_degree),
-        dof_handler_(*triangulation_) {
+        dof_handler_(*triangulation_),
+        newton_(
+            "Newton", LineSearch::energy_slope, system_, zero_constraints_,
+            [this](const RegularisedLaw& regularised, const VectorType& u, bool with_matrix,
+                   double tangent_floor) {
+              assemble_system(regularised, u, with_matrix, tangent_floor);
+            },
+            law, settings) {
     coarse_.copy_triangulation(base_mesh);
   }
 
@@ -167,8 +161,11 @@ class ScalarFlowSolver<dim>::Implementation {
   // --- regularised method --------------------------------------------------
   void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
                        double tangent_floor = 0.0);
-  unsigned solve_newton(const RegularisedLaw& law, bool allow_damping = false);
-  unsigned solve_with_continuation(double target_scale, double start_scale);
+  /// Continuation from ε = start_scale to target_scale from the current u;
+  /// leaves the law at the target in regularised_.
+  unsigned solve_with_continuation(double target_scale, double start_scale) {
+    return newton_.continuation(target_scale, start_scale, solution_, regularised_);
+  }
 
   // --- augmented Lagrangian -------------------------------------------------
   unsigned solve_augmented_lagrangian(double penalty, Outputs* previous_outputs);
@@ -225,6 +222,8 @@ class ScalarFlowSolver<dim>::Implementation {
   // characteristic rate: the warm start of the next point.
   VectorType previous_base_solution_;
   double previous_rate_ = 0.0;
+
+  NewtonContinuation newton_;  // declared last: it refers to the members above
 };
 
 // --- setup ----------------------------------------------------------------
@@ -293,7 +292,7 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
       const Viscosity eta = law.viscosity(rate);
       // n = ∇u/|∇u|; at rest the anisotropic part vanishes (γ̇ dη/dγ̇ = 0).
       const Tensor<1, dim> direction = g > 0.0 ? gradients[q] / g : Tensor<1, dim>();
-      // τ' − η, with τ' raised to tangent_floor·η if it is smaller (see solve_newton).
+      // τ' − η, with τ' raised to tangent_floor·η if it is smaller (newton_continuation.h).
       const double anisotropy = std::max(eta.derivative * rate, (tangent_floor - 1.0) * eta.value);
       const double f = drive_.source * rho(x) * fe_values.JxW(q);
       for (unsigned i = 0; i < n; ++i) {
@@ -319,108 +318,6 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
   }
   if (with_matrix) system_.matrix.compress(VectorOperation::add);
   system_.residual.compress(VectorOperation::add);
-}
-
-template <int dim>
-unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law,
-                                                             bool allow_damping) {
-  VectorType update = system_.vector(), trial = system_.vector();
-  // After a step the line search had to cut short, the next one uses a
-  // modified tangent. Where the material has just yielded, τ' = dτ/dγ̇ is
-  // orders of magnitude below η = τ/γ̇ (n < 1, small ε), so the Newton step
-  // along the flow direction is huge and its region of validity tiny. Raising
-  // τ' to a fraction of η keeps the matrix symmetric positive definite (the
-  // step stays a descent direction of J) and the step moderate; full Newton
-  // resumes, with its quadratic convergence, once steps are accepted whole.
-  // It is the fallback of a failed stage (solve_with_continuation): where pure
-  // Newton converges it is faster.
-  bool damped = false;
-  for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
-    assemble_system(law, solution_, true, damped ? kTangentFloor : 0.0);
-    const double residual_norm = system_.residual.l2_norm();
-    system_.factorise();
-    system_.solve(update, system_.residual);
-    update *= -1.0;
-    zero_constraints_.distribute(update);
-
-    // Full step if it lowers the residual; else the exact line search on J,
-    // on φ'(α) = R(u + αδ)(δ).
-    const double slope0 = system_.residual * update;  // φ'(0) < 0: a descent direction
-    const auto slope_at = [&](double alpha) {
-      trial = solution_;
-      trial.add(alpha, update);
-      assemble_system(law, trial, false);
-      return system_.residual * update;
-    };
-    double alpha = 1.0;
-    const double d_full = slope_at(1.0);
-    if (system_.residual.l2_norm() > residual_norm && slope0 < 0.0 && d_full > 0.0) {
-      double lo = 0.0, hi = 1.0, d_lo = slope0, d_hi = d_full;
-      for (int k = 0; k < kLineSearchSteps; ++k) {
-        alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
-        const double d = slope_at(alpha);
-        if (std::abs(d) <= kLineSearchReduction * std::abs(slope0)) break;
-        (d < 0.0 ? lo : hi) = alpha;
-        (d < 0.0 ? d_lo : d_hi) = d;
-      }
-    }
-    solution_.add(alpha, update);
-    damped = allow_damping && alpha < kFullStep;
-    // SOFTGLASS_MACRO_DEBUG=1 traces every Newton step (convergence problems).
-    if (std::getenv("SOFTGLASS_MACRO_DEBUG"))
-      fmt::print(stderr, "newton eps={:.3g} it={} |R|={:.3e} alpha={:.3g} |du|={:.3e}\n",
-                 law.rate_scale(), iteration, residual_norm, alpha, update.linfty_norm());
-    const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
-    if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
-  }
-  throw NumericalError(fmt::format(
-      "Newton did not converge in {} iterations ({} regularisation, eps = {:.3g} 1/s, {} dofs)",
-      settings_.max_newton_iterations, law.name(), law.rate_scale(), dof_handler_.n_dofs()));
-}
-
-// Newton at ε = start, start/10, ... down to the target; returns the iterations.
-// Leaves the law at the target in regularised_. When a stage fails (large plug
-// regions make Newton's quadratic region narrow at small ε), it is retried
-// with the modified tangent of solve_newton, and then from the last converged
-// solution with the step in ε shrunk to its square root.
-template <int dim>
-unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double target_scale,
-                                                                        double start_scale) {
-  unsigned iterations = 0;
-  double eps = std::max(start_scale, target_scale), converged_eps = 0.0;
-  VectorType converged = solution_;
-  std::string failure;
-  // One Newton solve at the current ε from `start`; false (and the solution
-  // back at `start`) if it does not converge.
-  const auto attempt = [&](const VectorType& start, bool damping) {
-    solution_ = start;
-    try {
-      iterations += solve_newton(*regularised_, damping);
-      return true;
-    } catch (const NumericalError& error) {
-      iterations += settings_.max_newton_iterations;
-      failure = error.what();
-      solution_ = start;
-      return false;
-    }
-  };
-  while (true) {
-    regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    const VectorType start = solution_;
-    if (!attempt(start, false) && !attempt(start, true)) {
-      // Retry halfway (in log ε) from the last converged stage, while the
-      // step is still worth shrinking.
-      if (converged_eps == 0.0 || converged_eps / eps < kSmallestContinuationStep)
-        throw NumericalError(failure);
-      eps = std::sqrt(converged_eps * eps);
-      solution_ = converged;
-      continue;
-    }
-    converged = solution_;
-    converged_eps = eps;
-    if (eps <= target_scale * (1.0 + 1e-12)) return iterations;
-    eps = std::max(eps / kContinuationFactor, target_scale);
-  }
 }
 
 // --- augmented Lagrangian ----------------------------------------------------
@@ -715,7 +612,7 @@ PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
       // that fails, from it again through one stage at 10ε.
       const VectorType transferred = solution_;
       try {
-        result.iterations += solve_newton(*regularised_);
+        result.iterations += newton_.solve(*regularised_, solution_);
       } catch (const NumericalError&) {
         solution_ = transferred;
         result.iterations += solve_with_continuation(target, kContinuationFactor * target);
