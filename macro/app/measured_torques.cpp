@@ -13,6 +13,7 @@ MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentCo
   const bool has_torque = curve.has(Measured::torque);
   const bool has_stress = curve.has(Measured::stress);
   MeasuredTorques m;
+  m.label = curve.label;
   if (!has_omega) {
     m.conversions.push_back(fmt::format("angular velocity = shear rate / {:.6g} 1/rad ({})",
                                         constants.strain_constant, constants.convention));

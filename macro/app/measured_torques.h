@@ -19,6 +19,7 @@
 namespace softglass::macro::app {
 
 struct MeasuredTorques {
+  std::string label;                                // the curve's
   std::vector<double> angular_velocity;             // Ω [rad/s], increasing
   std::vector<double> shear_rate;                   // γ̇ [1/s] as reported (or c_γ Ω)
   std::vector<double> torque;                       // M [N m]

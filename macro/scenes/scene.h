@@ -16,6 +16,7 @@
 #include "common/unit_table.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
+#include "macro/scenes/scene_result.h"
 
 namespace dealii {
 class ParameterHandler;
@@ -40,10 +41,10 @@ class Scene {
   virtual std::string description() const = 0;
   /// The operating-point column (rotation_rate [rad/s] or pressure_gradient [Pa/m]).
   virtual Column drive() const = 0;
-  /// The result columns of a row.
+  /// The result columns of a row: the order of SceneResult::values().
   virtual std::vector<Column> columns() const = 0;
   /// Solves at one operating point (warm-started from the previous one).
-  virtual std::vector<double> solve(double drive) = 0;
+  virtual SceneResult solve(double drive) = 0;
   /// The fields of the last solved point, for ParaView.
   virtual void write_vtu(const std::filesystem::path& file) const = 0;
   /// Rotational rheometers: the instrument's conversions (none for channels,

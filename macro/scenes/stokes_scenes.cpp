@@ -59,22 +59,25 @@ std::vector<Column> report_columns(const Column& value, const std::vector<Column
   return c;
 }
 
-std::vector<double> report_row(const fe::StokesResult& r, double value, double discretisation,
-                               double regularisation, const std::vector<double>& own) {
-  std::vector<double> row = {value, discretisation, regularisation};
-  row.insert(row.end(), own.begin(), own.end());
-  row.insert(row.end(), {r.value.yielded_fraction, double(r.cells), double(r.dofs),
-                         double(r.iterations), r.wall_time});
-  return row;
+SceneResult report(const fe::StokesResult& r, const Estimate& main,
+                   const std::vector<double>& own) {
+  return {
+      .quantity = MainQuantity::own,
+      .main = main,
+      .own = own,
+      .yielded_fraction = r.value.yielded_fraction,
+      .cost = {
+          .cells = r.cells, .dofs = r.dofs, .iterations = r.iterations, .wall_time = r.wall_time}};
 }
 
-// The same for a quantity of the outputs: its error estimates are its change
-// over the last refinement and (value at 10ε − value at ε)/9 on the first mesh.
-std::vector<double> report_row(const fe::StokesResult& r,
-                               const std::function<double(const fe::StokesOutputs&)>& quantity,
-                               const std::vector<double>& own) {
-  return report_row(r, quantity(r.value), std::abs(quantity(r.value) - quantity(r.coarse)),
-                    std::abs(quantity(r.first_mesh) - quantity(r.at_ten_epsilon)) / 9.0, own);
+// A quantity of the outputs: its error estimates are its change over the last
+// refinement and (value at 10ε − value at ε)/9 on the first mesh.
+Estimate estimate(const fe::StokesResult& r,
+                  const std::function<double(const fe::StokesOutputs&)>& quantity) {
+  return {
+      .value = quantity(r.value),
+      .discretisation_error = std::abs(quantity(r.value) - quantity(r.coarse)),
+      .regularisation_error = std::abs(quantity(r.first_mesh) - quantity(r.at_ten_epsilon)) / 9.0};
 }
 
 double mean_pressure(const fe::StokesOutputs& o) {
@@ -97,7 +100,7 @@ class Cavity final : public Scene {
   std::vector<Column> columns() const override {
     return report_columns({"min_centreline_u", "m/s"}, {{"y_at_min_over_side", "1"}});
   }
-  std::vector<double> solve(double lid) override {
+  SceneResult solve(double lid) override {
     // No slip on walls (ids 0, 1, 2) after the lid (3), so the top corners
     // belong to the walls.
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
@@ -108,10 +111,7 @@ class Cavity final : public Scene {
     // The minimum on each mesh: its change over the last refinement and
     // (at 10ε − at ε)/9 on the first mesh are its error estimates.
     const auto u_min = [this](const fe::StokesOutputs& o) { return centreline_minimum(o).first; };
-    const auto [value, y_min] = centreline_minimum(r.value);
-    return report_row(r, value, std::abs(value - u_min(r.coarse)),
-                      std::abs(u_min(r.first_mesh) - u_min(r.at_ten_epsilon)) / 9.0,
-                      {y_min / side_});
+    return report(r, estimate(r, u_min), {centreline_minimum(r.value).second / side_});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -162,7 +162,7 @@ class Obstacle final : public Scene {
     return report_columns({"pressure_drop", "Pa"},
                           {{"drag_per_depth", "N/m"}, {"lift_per_depth", "N/m"}});
   }
-  std::vector<double> solve(double speed) override {
+  SceneResult solve(double speed) override {
     const double H = height_;
     // Parabolic inflow with mean speed U: 6U y(H − y)/H².
     const auto inflow = [speed, H](const Point<2>& p) {
@@ -174,7 +174,7 @@ class Obstacle final : public Scene {
                                 .characteristic_rate = 6.0 * speed / H,
                                 .force_boundary = 2,
                                 .pressure_boundary = 0});
-    return report_row(r, mean_pressure, {r.value.force[0], r.value.force[1]});
+    return report(r, estimate(r, mean_pressure), {r.value.force[0], r.value.force[1]});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -222,7 +222,7 @@ class Cylinder final : public Scene {
   // F = ∫ τ:D dA / U, which converges at twice the rate of the surface
   // traction ∫ σn ds (like the torques of the rotational scenes). The traction
   // is reported beside it: their difference is a check of both.
-  std::vector<double> solve(double speed) override {
+  SceneResult solve(double speed) override {
     const auto uniform = [speed](const Point<2>&) { return Tensor<1, 2>({speed, 0.0}); };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto r = solver_.run(
@@ -230,7 +230,8 @@ class Cylinder final : public Scene {
          .characteristic_rate = speed / diameter_,
          .force_boundary = 4});
     const auto power_drag = [speed](const fe::StokesOutputs& o) { return o.dissipation / speed; };
-    return report_row(r, power_drag, {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
+    return report(r, estimate(r, power_drag),
+                  {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -267,7 +268,7 @@ class Contraction final : public Scene {
   std::vector<Column> columns() const override {
     return report_columns({"pressure_drop", "Pa"}, {{"flow_rate_per_depth", "m^2/s"}});
   }
-  std::vector<double> solve(double speed) override {
+  SceneResult solve(double speed) override {
     const double H = ratio_ * h_;
     const auto inflow = [speed, H](const Point<2>& p) {
       return Tensor<1, 2>({6.0 * speed * p[1] * (H - p[1]) / (H * H), 0.0});
@@ -278,7 +279,7 @@ class Contraction final : public Scene {
                                 .straight_outflow = {1},
                                 .characteristic_rate = 6.0 * ratio_ * speed / h_,
                                 .pressure_boundary = 0});
-    return report_row(r, mean_pressure, {speed * H});
+    return report(r, estimate(r, mean_pressure), {speed * H});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
