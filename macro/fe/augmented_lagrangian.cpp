@@ -22,8 +22,7 @@ template <int dim>
 AugmentedLagrangian<dim>::AugmentedLagrangian(const SectionDiscretisation<dim>& section,
                                               DistributedSystem& system,
                                               const AffineConstraints<double>& constraints,
-                                              const HerschelBulkley& law,
-                                              const SolverSettings& settings)
+                                              const ShearLaw& law, const SolverSettings& settings)
     : section_(section),
       system_(system),
       constraints_(constraints),

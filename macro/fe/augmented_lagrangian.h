@@ -15,7 +15,7 @@
 //      whose matrix never changes (factorised once per mesh);
 //   2. γ: pointwise, with the trial stress χ = λ + r s∇u: γ = 0 where
 //      |χ| ≤ τ_y (rigid), else γ = g χ/|χ| with τ_y + K gⁿ + r g = |χ|
-//      (HerschelBulkley::proximal_rate);
+//      (ShearLaw::proximal_rate; Herschel–Bulkley's closed form or root);
 //   3. λ ← λ + r (s∇u − γ).
 // The rigid set {γ = 0} is then exactly the set where the stress is below the
 // yield stress: no regularisation. The price is slow convergence (the
@@ -60,10 +60,10 @@ template <int dim>
 class AugmentedLagrangian {
  public:
   /// The penalty r is settings.al_relative_penalty times the scene's
-  /// viscosity scale η(γ̇_c).
+  /// viscosity scale η(γ̇_c). `law` must outlive the method.
   AugmentedLagrangian(const SectionDiscretisation<dim>& section, DistributedSystem& system,
-                      const dealii::AffineConstraints<double>& constraints,
-                      const HerschelBulkley& law, const SolverSettings& settings);
+                      const dealii::AffineConstraints<double>& constraints, const ShearLaw& law,
+                      const SolverSettings& settings);
 
   /// Iterates on the current mesh from u until the relative constraint
   /// residual reaches settings.al_tolerance; returns the iterations,
@@ -91,7 +91,7 @@ class AugmentedLagrangian {
   SectionDiscretisation<dim> section_;
   DistributedSystem& system_;
   const dealii::AffineConstraints<double>& constraints_;
-  HerschelBulkley law_;
+  const ShearLaw& law_;
   SolverSettings settings_;
   double penalty_ = 0.0;
   std::optional<dealii::FEValues<dim>> fe_values_;  // of the current solve's mesh

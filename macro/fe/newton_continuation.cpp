@@ -30,7 +30,7 @@ constexpr double kFullStep = 0.5;
 NewtonContinuation::NewtonContinuation(
     std::string problem, LineSearch line_search, DistributedSystem& system,
     const dealii::AffineConstraints<double>& homogeneous_constraints, NewtonAssembler assemble,
-    const HerschelBulkley& law, const SolverSettings& settings)
+    const ShearLaw& law, const SolverSettings& settings)
     : problem_(std::move(problem)),
       line_search_(line_search),
       system_(system),

@@ -68,11 +68,11 @@ using NewtonAssembler = std::function<void(const RegularisedLaw& law, const Vect
 class NewtonContinuation {
  public:
   /// `problem` names the problem in messages ("Newton", "Stokes Newton").
-  /// `law` is regularised with settings.regularisation at each ε.
+  /// `law` (which must outlive the policy) is regularised with
+  /// settings.regularisation at each ε.
   NewtonContinuation(std::string problem, LineSearch line_search, DistributedSystem& system,
                      const dealii::AffineConstraints<double>& homogeneous_constraints,
-                     NewtonAssembler assemble, const HerschelBulkley& law,
-                     const SolverSettings& settings);
+                     NewtonAssembler assemble, const ShearLaw& law, const SolverSettings& settings);
 
   /// Newton from u at one law; NumericalError if it does not converge. With
   /// allow_damping, a step shorter than 1/2 is followed by the modified tangent.
@@ -106,7 +106,7 @@ class NewtonContinuation {
   DistributedSystem& system_;
   const dealii::AffineConstraints<double>& homogeneous_constraints_;
   NewtonAssembler assemble_;
-  HerschelBulkley law_;
+  const ShearLaw& law_;
   std::string regularisation_;
   double tolerance_;
   unsigned max_iterations_;

@@ -118,10 +118,10 @@ template <int dim>
 class ScalarFlowSolver<dim>::Implementation {
  public:
   Implementation(const Triangulation<dim>& base_mesh, unsigned mapping_degree,
-                 const SectionWeights& weights, const HerschelBulkley& law,
+                 const SectionWeights& weights, std::shared_ptr<const ShearLaw> law,
                  const SolverSettings& settings)
       : weights_(weights),
-        law_(law),
+        law_(std::move(law)),
         settings_(settings),
         communicator_(dim == 1 ? MPI_COMM_SELF : settings.mesh_communicator),
         system_(communicator_, MatrixKind::positive_definite),
@@ -135,9 +135,9 @@ class ScalarFlowSolver<dim>::Implementation {
                    double tangent_floor) {
               assemble_system(regularised, u, with_matrix, tangent_floor);
             },
-            law, settings),
+            *law_, settings),
         augmented_lagrangian_({mapping_, fe_, dof_handler_, weights_, communicator_}, system_,
-                              constraints_, law, settings) {
+                              constraints_, *law_, settings) {
     coarse_.copy_triangulation(base_mesh);
   }
 
@@ -178,7 +178,7 @@ class ScalarFlowSolver<dim>::Implementation {
   /// The stress of the current solution at a shear rate: the regularised law
   /// while regularising, the rate field of ALG2 otherwise.
   double stress(double rate) const {
-    return regularised_ ? regularised_->stress(rate) : law_.stress(rate);
+    return regularised_ ? regularised_->stress(rate) : law_->stress(rate);
   }
 
   double rho(const Point<dim>& x) const { return weights_.rho(x[0]); }
@@ -194,11 +194,11 @@ class ScalarFlowSolver<dim>::Implementation {
   LocalState local_state(const Point<dim>& x, const Tensor<1, dim>& gradient, std::size_t k) const {
     const double rate = regularised_ ? s(x) * gradient.norm() : augmented_lagrangian_.rate(k);
     const double tau = stress(rate);
-    return {rate, tau, regularised_ ? tau > law_.yield_stress : rate > 0.0};
+    return {rate, tau, regularised_ ? tau > law_->yield_stress() : rate > 0.0};
   }
 
   SectionWeights weights_;
-  HerschelBulkley law_;
+  std::shared_ptr<const ShearLaw> law_;
   SolverSettings settings_;
   Drive drive_;
   MPI_Comm communicator_;
@@ -495,7 +495,7 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
       (local_state(fe_values.quadrature_point(q), gradients[q], k).yielded ? above : below) = true;
       ++k;
     }
-    if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
+    if (above && below && law_->yield_stress() > 0.0) cell->set_refine_flag();
   }
 
   refine_and_transfer(*triangulation_, dof_handler_, field, solution_,
@@ -580,8 +580,10 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
 template <int dim>
 ScalarFlowSolver<dim>::ScalarFlowSolver(const Triangulation<dim>& base_mesh,
                                         unsigned mapping_degree, const SectionWeights& weights,
-                                        const HerschelBulkley& law, const SolverSettings& settings)
-    : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, law, settings)) {}
+                                        std::shared_ptr<const ShearLaw> law,
+                                        const SolverSettings& settings)
+    : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, std::move(law),
+                                             settings)) {}
 
 template <int dim>
 ScalarFlowSolver<dim>::~ScalarFlowSolver() = default;

@@ -79,9 +79,9 @@ class BoundaryVelocity : public Function<2> {
 
 class StokesFlowSolver::Implementation {
  public:
-  Implementation(const Triangulation<2>& base, const HerschelBulkley& law,
+  Implementation(const Triangulation<2>& base, std::shared_ptr<const ShearLaw> law,
                  const SolverSettings& settings)
-      : law_(law),
+      : law_(std::move(law)),
         settings_(settings),
         communicator_(settings.mesh_communicator),
         system_(communicator_, MatrixKind::symmetric_indefinite),
@@ -95,7 +95,7 @@ class StokesFlowSolver::Implementation {
                    double tangent_floor) {
               assemble_system(regularised, u, with_matrix, tangent_floor);
             },
-            law, settings) {
+            *law_, settings) {
     coarse_.copy_triangulation(base);
   }
 
@@ -110,7 +110,7 @@ class StokesFlowSolver::Implementation {
   StokesOutputs evaluate() const;
   void refine_mesh(bool uniform);
 
-  HerschelBulkley law_;
+  std::shared_ptr<const ShearLaw> law_;
   SolverSettings settings_;
   MPI_Comm communicator_;
   DistributedSystem system_;  // matrix, factorisation, residual of the current mesh
@@ -258,7 +258,7 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate() const {
       const double tau = regularised_->stress(rate);
       dissipation += tau * rate * fe_values.JxW(q);
       area += fe_values.JxW(q);
-      if (tau > law_.yield_stress) yielded += fe_values.JxW(q);
+      if (tau > law_->yield_stress()) yielded += fe_values.JxW(q);
     }
     for (const unsigned f : cell->face_indices()) {
       if (!cell->face(f)->at_boundary()) continue;
@@ -318,9 +318,9 @@ void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
       bool above = false, below = false;
       for (const unsigned q : fe_values.quadrature_point_indices()) {
         const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
-        (regularised_->stress(rate) > law_.yield_stress ? above : below) = true;
+        (regularised_->stress(rate) > law_->yield_stress() ? above : below) = true;
       }
-      if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
+      if (above && below && law_->yield_stress() > 0.0) cell->set_refine_flag();
     }
   }
   refine_and_transfer(triangulation_, dof_handler_, field, solution_,
@@ -407,7 +407,7 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
       const double g = std::sqrt(2.0 * (strain[q] * strain[q])), t = regularised_->stress(g);
       rate(c) += g / quadrature.size();
       tau(c) += t / quadrature.size();
-      yielded(c) += t > law_.yield_stress ? 1.0 / quadrature.size() : 0.0;
+      yielded(c) += t > law_->yield_stress() ? 1.0 / quadrature.size() : 0.0;
     }
   }
   std::vector<std::string> names{"velocity", "velocity", "pressure"};
@@ -425,9 +425,10 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
   io::write_vtu(data_out, file, communicator_);
 }
 
-StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const HerschelBulkley& law,
+StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh,
+                                   std::shared_ptr<const ShearLaw> law,
                                    const SolverSettings& settings)
-    : impl_(std::make_unique<Implementation>(base_mesh, law, settings)) {}
+    : impl_(std::make_unique<Implementation>(base_mesh, std::move(law), settings)) {}
 
 StokesFlowSolver::~StokesFlowSolver() = default;
 

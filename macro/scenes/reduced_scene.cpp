@@ -9,7 +9,8 @@ class ReducedScene final : public Scene {
  public:
   ReducedScene(const dealii::Triangulation<dim>& mesh, ReducedSceneSpec<dim> spec,
                const HerschelBulkley& law, const fe::SolverSettings& settings)
-      : spec_(std::move(spec)), solver_(mesh, spec_.mapping_degree, spec_.weights, law, settings) {}
+      : spec_(std::move(spec)),
+        solver_(mesh, spec_.mapping_degree, spec_.weights, shear_law(law), settings) {}
 
   std::string description() const override { return spec_.description; }
 

@@ -91,7 +91,9 @@ class Cavity final : public Scene {
  public:
   Cavity(double side, unsigned cells, const HerschelBulkley& law,
          const fe::SolverSettings& settings)
-      : side_(side), centreline_(centreline(side)), solver_(mesh(side, cells), law, settings) {}
+      : side_(side),
+        centreline_(centreline(side)),
+        solver_(mesh(side, cells), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format("lid-driven cavity, side {} m: Stokes (u, p), Taylor-Hood Q2-Q1", side_);
@@ -149,7 +151,9 @@ class Cavity final : public Scene {
 class Obstacle final : public Scene {
  public:
   Obstacle(double diameter, const HerschelBulkley& law, const fe::SolverSettings& settings)
-      : diameter_(diameter), height_(4.1 * diameter), solver_(mesh(diameter), law, settings) {}
+      : diameter_(diameter),
+        height_(4.1 * diameter),
+        solver_(mesh(diameter), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format(
@@ -204,7 +208,7 @@ class Cylinder final : public Scene {
       : diameter_(diameter),
         box_(box),
         viscosity_(law.consistency),
-        solver_(mesh(diameter, box), law, settings) {}
+        solver_(mesh(diameter, box), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format(
@@ -256,7 +260,7 @@ class Contraction final : public Scene {
  public:
   Contraction(double height, unsigned ratio, const HerschelBulkley& law,
               const fe::SolverSettings& settings)
-      : h_(height), ratio_(ratio), solver_(mesh(height, ratio), law, settings) {}
+      : h_(height), ratio_(ratio), solver_(mesh(height, ratio), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format(
