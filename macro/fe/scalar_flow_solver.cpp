@@ -25,7 +25,7 @@
 // Continuation. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
 // the scene's viscosity scale) and divides ε by 10 per stage down to the
 // target. The last two stages (10ε and ε) give the regularisation error
-// estimate: the outputs converge like O(ε) (macro.md), so the error at ε is
+// estimate: the outputs converge like O(ε) (docs/macro.md), so the error at ε is
 // about their difference / 9.
 //
 // Augmented Lagrangian. The alternative to regularising: ALG2 on the

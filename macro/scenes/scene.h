@@ -1,4 +1,4 @@
-// A scene: one geometry of macro.md with its reduced formulation, solved at a
+// A scene: one geometry of docs/macro.md with its reduced formulation, solved at a
 // list of operating points (rotation rates or pressure gradients), each giving
 // one row of the results table.
 //

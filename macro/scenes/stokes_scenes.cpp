@@ -1,7 +1,7 @@
 // The scenes that need the full Stokes problem (fe/stokes_flow_solver.h).
 //
 // cavity:   the lid-driven square cavity of side L, lid speed U (the drive):
-//           the Bingham benchmark of macro.md (Bi = τ_y L/(μU)). Reports the
+//           the Bingham benchmark of docs/macro.md (Bi = τ_y L/(μU)). Reports the
 //           minimum of u_x on the vertical centreline and where it is.
 // obstacle: a channel of height 0.41 D/0.1 with a cylinder of diameter D
 //           (deal.II's channel_with_cylinder, the DFG benchmark's geometry,
@@ -14,7 +14,7 @@
 //           yielded fraction (dead zones in the corners).
 // cylinder: a cylinder of diameter D in a square box of side `box` D whose
 //           walls move at U (the drive): the unbounded-flow benchmark of
-//           macro.md (Tokpavi et al. 2008) as the box grows. Reports the drag
+//           docs/macro.md (Tokpavi et al. 2008) as the box grows. Reports the drag
 //           per unit depth and C_D = F/(μU) with μ = K (Bingham).
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/grid_generator.h>
