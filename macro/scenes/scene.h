@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/registry.h"
 #include "common/unit_table.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
@@ -52,8 +53,25 @@ class Scene {
   virtual std::optional<InstrumentConstants> instrument() const { return std::nullopt; }
 };
 
-/// Names accepted by `set scene`.
-std::vector<std::string> scene_names();
+/// What a scene is made from: the scene file (its subsection is the scene's
+/// name), the material, the solver settings, and the folder relative file
+/// names (meshes) are taken from.
+struct SceneSpec {
+  dealii::ParameterHandler& prm;
+  const Material& material;
+  const fe::SolverSettings& settings;
+  const std::filesystem::path& directory;
+};
+
+/// A registered scene (common/registry.h): name, summary, factory, and the
+/// declaration of its subsection (its entries are deal.II parameters with
+/// their own patterns, so it declares no registry coefficients).
+struct SceneEntry : ComponentEntry<Scene, SceneSpec> {
+  void (*declare)(dealii::ParameterHandler& prm) = nullptr;
+};
+
+/// Every scene (registered_scenes.h); `set scene` accepts the registry's names.
+const Registry<SceneEntry>& scenes();
 
 /// Declares `scene` and the subsection of every scene.
 void declare_scenes(dealii::ParameterHandler& prm);

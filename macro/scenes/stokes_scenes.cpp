@@ -317,19 +317,28 @@ class Contraction final : public Scene {
 
 }  // namespace
 
-void declare_stokes_scenes(ParameterHandler& prm) {
+void declare_cavity(ParameterHandler& prm) {
   prm.enter_subsection("cavity");
   prm.declare_entry("side", "1", Patterns::Double(), "L [m], > 0");
   prm.declare_entry("cells", "16", Patterns::Integer(2, 1000), "cells per side (coarse mesh)");
   prm.leave_subsection();
+}
+
+void declare_obstacle(ParameterHandler& prm) {
   prm.enter_subsection("obstacle");
   prm.declare_entry("diameter", "0.01", Patterns::Double(),
                     "D [m], > 0: channel 2.2 D/0.1 long and 0.41 D/0.1 high");
   prm.leave_subsection();
+}
+
+void declare_contraction(ParameterHandler& prm) {
   prm.enter_subsection("contraction");
   prm.declare_entry("height", "0.005", Patterns::Double(), "h [m], the downstream height, > 0");
   prm.declare_entry("ratio", "4", Patterns::Integer(2, 20), "upstream height / h");
   prm.leave_subsection();
+}
+
+void declare_cylinder(ParameterHandler& prm) {
   prm.enter_subsection("cylinder");
   prm.declare_entry("diameter", "0.01", Patterns::Double(), "D [m], > 0");
   prm.declare_entry("box", "40", Patterns::Double(), "side of the square box in diameters, > 4");
@@ -369,6 +378,38 @@ std::unique_ptr<Scene> make_obstacle(ParameterHandler& prm, const Material& mate
   const double d = entries::positive(prm, "obstacle", "diameter", "m");
   prm.leave_subsection();
   return std::make_unique<Obstacle>(d, material.shear, settings);
+}
+
+SceneEntry cavity_scene() {
+  return {{"cavity",
+           "lid-driven square cavity (Stokes)",
+           {},
+           [](const SceneSpec& s) { return make_cavity(s.prm, s.material, s.settings); }},
+          declare_cavity};
+}
+
+SceneEntry obstacle_scene() {
+  return {{"obstacle",
+           "channel flow past a cylinder (Stokes, DFG geometry)",
+           {},
+           [](const SceneSpec& s) { return make_obstacle(s.prm, s.material, s.settings); }},
+          declare_obstacle};
+}
+
+SceneEntry contraction_scene() {
+  return {{"contraction",
+           "planar abrupt contraction (Stokes)",
+           {},
+           [](const SceneSpec& s) { return make_contraction(s.prm, s.material, s.settings); }},
+          declare_contraction};
+}
+
+SceneEntry cylinder_scene() {
+  return {{"cylinder",
+           "a cylinder moving through a large box (Stokes)",
+           {},
+           [](const SceneSpec& s) { return make_cylinder(s.prm, s.material, s.settings); }},
+          declare_cylinder};
 }
 
 }  // namespace softglass::macro
