@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "bridge/io/measured_curves.h"
 #include "bridge/rescale/rescale.h"
+#include "common/measured_curves.h"
 
 namespace softglass::bridge {
 

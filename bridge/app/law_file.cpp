@@ -8,6 +8,7 @@
 #include <set>
 #include <vector>
 
+#include "common/deal_ii_message.h"
 #include "common/errors.h"
 
 namespace softglass::bridge {
@@ -16,22 +17,6 @@ namespace {
 
 using dealii::ParameterHandler;
 namespace Patterns = dealii::Patterns;
-
-// deal.II's exception text carries source locations and a stack trace; keep
-// the user's part, on one line.
-std::string clean_message(const std::string& what) {
-  const auto info = what.find("Additional information:");
-  std::string text = info == std::string::npos ? what : what.substr(info + 23);
-  text = text.substr(0, text.find("Stacktrace:"));
-  std::string out;
-  for (char c : text) {
-    const bool blank = c == '\n' || c == ' ' || c == '\t';
-    if (blank && (out.empty() || out.back() == ' ')) continue;
-    out += blank ? ' ' : c;
-  }
-  if (!out.empty() && out.back() == ' ') out.pop_back();
-  return out;
-}
 
 // ParameterHandler names entries by mangled paths ("law.universal.k_20error":
 // sections joined by '.', every character other than a letter or digit written
@@ -140,7 +125,7 @@ Law read_law_file(const std::filesystem::path& file) {
     // Mandatory entries are checked below, to name them as the user writes them.
     prm.parse_input(source, "", false, false);
   } catch (const std::exception& error) {
-    throw InputError(fmt::format("law file '{}': {}", source, clean_message(error.what())));
+    throw InputError(fmt::format("law file '{}': {}", source, deal_ii_message(error.what())));
   }
   const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
   if (!missing.empty()) {

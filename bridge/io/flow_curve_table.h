@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/io/csv_table.h"
+#include "common/csv_table.h"
 
 namespace softglass::bridge {
 
@@ -58,7 +58,9 @@ inline bool may_be_negative(Quantity q) {
 }
 /// f_m may be 0: the minimum of g_{2,-2} can lie beyond contact of two mean
 /// spheres (r_m > 2R at low rates and φ), where no force acts.
-inline bool may_be_zero(Quantity q) { return q == Quantity::force; }
+inline bool may_be_zero(Quantity q) {
+  return q == Quantity::force;
+}
 
 /// One state point of the table, averaged over its packings.
 struct StatePoint {

@@ -36,8 +36,8 @@
 
 #include "bridge/fit/herschel_bulkley.h"
 #include "bridge/io/flow_curve_table.h"
-#include "bridge/io/measured_curves.h"
 #include "bridge/law/law.h"
+#include "common/measured_curves.h"
 
 namespace softglass::bridge {
 

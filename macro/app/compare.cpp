@@ -11,7 +11,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "bridge/io/csv_table.h"
+#include "common/csv_table.h"
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/measured_torques.h"
@@ -62,8 +62,8 @@ std::string describe(const std::string& what, const Agreement& a) {
       what, a.points, 100 * a.mean, 100 * a.rms, 100 * a.median_abs, 100 * a.max_abs, a.max_at);
 }
 
-const bridge::RheometerCurve& select_curve(const std::vector<bridge::RheometerCurve>& curves,
-                                           const CompareOptions& o) {
+const RheometerCurve& select_curve(const std::vector<RheometerCurve>& curves,
+                                   const CompareOptions& o) {
   std::vector<std::string> labels;
   for (const auto& c : curves) labels.push_back(c.label);
   if (o.sample.empty()) {
@@ -98,14 +98,159 @@ InstrumentConstants instrument_constants(const Scene& scene, const std::string& 
   return c;
 }
 
-std::size_t column_index(const std::vector<Column>& columns, const std::string& name) {
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    if (columns[c].name == name) return c;
-  return columns.size();
+// The measured points of the chosen curve within the rate window, as torques.
+MeasuredTorques read_measured(const CompareOptions& o, const InstrumentConstants& constants) {
+  require(o.min_rate >= 0.0 && o.max_rate > o.min_rate,
+          fmt::format("--min-rate {} and --max-rate {}: allowed 0 <= min < max", o.min_rate,
+                      o.max_rate));
+  const auto curves =
+      read_rheometer_curves(CsvTable::read(o.data_file), {o.rate_unit, o.stress_unit});
+  return measured_torques(select_curve(curves, o), constants, o.min_rate, o.max_rate);
+}
+
+// The predictions at the measured points, side by side with the measurements.
+struct Comparison {
+  const MeasuredTorques& measured;
+  std::vector<double> torque{}, normal_force{};  // predicted; normal force if compared
+  std::vector<SceneResult> results{};
+  bool compares_force = false;
+};
+
+Comparison compare_points(const MeasuredTorques& measured, std::vector<SceneResult> results) {
+  Comparison c{.measured = measured, .results = std::move(results)};
+  c.compares_force =
+      measured.normal_force && !c.results.empty() && c.results.front().normal_force.has_value();
+  for (const SceneResult& r : c.results) {
+    c.torque.push_back(r.torque().value);
+    if (c.compares_force) c.normal_force.push_back(*r.normal_force);
+  }
+  return c;
+}
+
+// One line per compared quantity (and why the normal force is not compared).
+std::vector<std::string> agreement_report(const Comparison& c) {
+  const MeasuredTorques& m = c.measured;
+  std::vector<std::string> report{
+      describe("torque", agreement(m.angular_velocity, m.torque, c.torque))};
+  if (c.compares_force) {
+    report.push_back(
+        describe("normal force", agreement(m.angular_velocity, *m.normal_force, c.normal_force)));
+  } else if (m.normal_force) {
+    report.push_back(
+        "normal force: measured but not predicted by this scene and material (no N1 law, or a "
+        "Couette cell, where the axial force is not a material function): not compared");
+  }
+  return report;
+}
+
+// The table of comparison.csv and comparison.h5, point by point.
+UnitTable comparison_table(const Comparison& c, const InstrumentConstants& constants) {
+  const MeasuredTorques& m = c.measured;
+  UnitTable table{.columns = {{"angular_velocity", "rad/s"},
+                              {"shear_rate", "1/s"},
+                              {"measured_torque", "N m"},
+                              {"predicted_torque", "N m"},
+                              {"relative_error", "1"},
+                              {"predicted_torque_error_estimate", "N m"},
+                              {"measured_stress", "Pa"},
+                              {"predicted_stress", "Pa"},
+                              {"yielded_fraction", "1"}},
+                  .rows = {}};
+  if (c.compares_force) {
+    table.columns.insert(table.columns.end(), {{"measured_normal_force", "N"},
+                                               {"predicted_normal_force", "N"},
+                                               {"normal_force_relative_error", "1"}});
+  }
+  for (std::size_t i = 0; i < c.results.size(); ++i) {
+    const Estimate& torque = c.results[i].torque();
+    std::vector<double>& v = table.rows.emplace_back(std::vector<double>{
+        m.angular_velocity[i], m.shear_rate[i], m.torque[i], torque.value,
+        torque.value / m.torque[i] - 1.0,
+        std::abs(torque.discretisation_error) + std::abs(torque.regularisation_error), m.stress[i],
+        constants.stress_constant * torque.value, c.results[i].yielded_fraction});
+    if (c.compares_force) {
+      v.insert(v.end(), {(*m.normal_force)[i], c.normal_force[i],
+                         c.normal_force[i] / (*m.normal_force)[i] - 1.0});
+    }
+  }
+  return table;
+}
+
+// Predicted against measured torque (and normal force) over Ω; false if
+// gnuplot is missing or failed.
+bool write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
+                AtomicOutput& png_file) {
+  const MeasuredTorques& m = c.measured;
+  io::OverlayPlot plot{
+      .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
+                           label == o.data_file.stem().string() ? "" : ", " + label,
+                           o.scene_file.filename().string()),
+      .abscissa = "angular velocity {/Symbol W} [rad/s]",
+      .x = m.angular_velocity,
+      .panels = {{"torque [N m]", m.torque, c.torque}}};
+  if (c.compares_force)
+    plot.panels.push_back({"normal force [N]", *m.normal_force, c.normal_force});
+  const bool plotted = io::write_overlay_png(plot, png_file.temporary_path());
+  if (plotted) png_file.commit();
+  return plotted;
+}
+
+void write_summary(AtomicOutput& summary_file, const std::vector<std::string>& header_lines,
+                   const std::vector<std::string>& report, double wall, unsigned ranks_per_point,
+                   bool plotted) {
+  std::ofstream summary(summary_file.temporary_path());
+  for (const std::string& line : header_lines) summary << line << "\n";
+  for (const std::string& line : report) summary << line << "\n";
+  summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
+                         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD), ranks_per_point);
+  if (!plotted) summary << "no plot: gnuplot is not installed or failed\n";
+  summary.close();
+  if (!summary)
+    throw NumericalError(fmt::format("cannot write {}", summary_file.final_path().string()));
+}
+
+std::filesystem::path default_directory(const std::filesystem::path& data_file,
+                                        const std::filesystem::path& scene_file) {
+  return fmt::format("{}_vs_{}", data_file.stem().string(), scene_file.stem().string());
+}
+
+// The comment lines of comparison.csv, the head of summary.txt: what was
+// compared with what, and every quantity derived rather than measured.
+std::vector<std::string> provenance(const CompareOptions& o, const std::string& scene,
+                                    const MeasuredTorques& measured, const std::string& model) {
+  std::vector<std::string> lines{
+      fmt::format("softglass macro compare {} ({})", kVersion, kGitRevision),
+      fmt::format("scene: {} ({})", o.scene_file.string(), scene),
+      fmt::format("data: {}, curve '{}', {} points compared, {} outside the rate window",
+                  o.data_file.string(), measured.label, measured.angular_velocity.size(),
+                  measured.left_out),
+      model};
+  for (const std::string& c : measured.conversions) lines.push_back("derived: " + c);
+  return lines;
+}
+
+// The point-by-point table and the report on standard output.
+void print_comparison(const Comparison& c, const std::vector<std::string>& report,
+                      const std::filesystem::path& directory, bool plotted) {
+  const MeasuredTorques& m = c.measured;
+  std::cout << fmt::format("{:>14} {:>12} {:>14} {:>14} {:>8}\n", "Omega [rad/s]", "rate [1/s]",
+                           "measured [N m]", "predicted", "error");
+  for (std::size_t i = 0; i < c.torque.size(); ++i) {
+    std::cout << fmt::format("{:>14.4e} {:>12.4g} {:>14.4e} {:>14.4e} {:>+7.1f}%\n",
+                             m.angular_velocity[i], m.shear_rate[i], m.torque[i], c.torque[i],
+                             100.0 * (c.torque[i] / m.torque[i] - 1.0));
+  }
+  for (const std::string& line : report) std::cout << line << "\n";
+  std::cout << fmt::format("results: {}{}\n", (directory / "comparison.csv").string(),
+                           plotted ? ", " + (directory / "comparison.png").string()
+                                   : " (no plot: gnuplot is not installed)");
 }
 
 }  // namespace
 
+// Reads the scene and the measured curve, solves the scene at the measured
+// angular velocities (increasing: each solve warm-starts from the previous
+// one) and writes comparison.csv, .h5, .png and summary.txt.
 int compare(const CompareOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
@@ -113,19 +258,10 @@ int compare(const CompareOptions& o) {
   const std::string scene_name = prm.get("scene");
   std::unique_ptr<Scene> scene = make_scene(prm, material, settings, o.scene_file.parent_path());
   const InstrumentConstants constants = instrument_constants(*scene, scene_name, o);
-
-  require(o.min_rate >= 0.0 && o.max_rate > o.min_rate,
-          fmt::format("--min-rate {} and --max-rate {}: allowed 0 <= min < max", o.min_rate,
-                      o.max_rate));
-  const auto curves = bridge::read_rheometer_curves(bridge::CsvTable::read(o.data_file),
-                                                    {o.rate_unit, o.stress_unit});
-  const bridge::RheometerCurve& curve = select_curve(curves, o);
-  const MeasuredTorques measured = measured_torques(curve, constants, o.min_rate, o.max_rate);
+  const MeasuredTorques measured = read_measured(o, constants);
 
   const std::filesystem::path directory =
-      o.output.empty() ? std::filesystem::path(fmt::format("{}_vs_{}", o.data_file.stem().string(),
-                                                           o.scene_file.stem().string()))
-                       : o.output;
+      o.output.empty() ? default_directory(o.data_file, o.scene_file) : o.output;
   ClaimedOutputs claimed = claim_outputs(
       directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"}, o.force);
   if (claimed.refused) return kExitOutputExists;
@@ -136,10 +272,7 @@ int compare(const CompareOptions& o) {
     settings.mesh_communicator = groups.mesh_communicator();
     scene = make_scene(prm, material, settings, o.scene_file.parent_path());
   }
-
-  // The scene at the measured angular velocities (increasing: each solve
-  // warm-starts from the previous one).
-  const std::vector<std::vector<double>> rows = solve_operating_points(
+  std::vector<SceneResult> results = solve_operating_points(
       *scene, measured.angular_velocity, groups,
       {.directory = directory,
        .vtu = "none",
@@ -147,94 +280,20 @@ int compare(const CompareOptions& o) {
        .quiet = o.quiet});
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0) return kExitOk;
 
-  const std::vector<Column> columns = scene->columns();
-  const std::size_t torque = column_index(columns, "torque");
-  const std::size_t disc = column_index(columns, "torque_discretisation_error");
-  const std::size_t reg = column_index(columns, "torque_regularisation_error");
-  const std::size_t yielded = column_index(columns, "yielded_fraction");
-  const std::size_t force = column_index(columns, "normal_force");
-  const bool compare_force = measured.normal_force && force < columns.size();
-  const std::size_t n = rows.size();
-  std::vector<double> predicted(n), predicted_force(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    predicted[i] = rows[i][torque];
-    if (compare_force) predicted_force[i] = rows[i][force];
-  }
-  const Agreement torques = agreement(measured.angular_velocity, measured.torque, predicted);
-  std::vector<std::string> report{describe("torque", torques)};
-  if (compare_force) {
-    report.push_back(describe("normal force", agreement(measured.angular_velocity,
-                                                        *measured.normal_force, predicted_force)));
-  } else if (measured.normal_force) {
-    report.push_back(
-        "normal force: measured but not predicted by this scene and material (no N1 law, or a "
-        "Couette cell, where the axial force is not a material function): not compared");
-  }
+  const Comparison comparison = compare_points(measured, std::move(results));
+  const std::vector<std::string> report = agreement_report(comparison);
+  const UnitTable table = comparison_table(comparison, constants);
+  const std::vector<std::string> header_lines =
+      provenance(o, scene->description(), measured, describe_model(material, settings));
 
-  // The table, point by point.
-  std::vector<Column> table{
-      {"angular_velocity", "rad/s"}, {"shear_rate", "1/s"},
-      {"measured_torque", "N m"},    {"predicted_torque", "N m"},
-      {"relative_error", "1"},       {"predicted_torque_error_estimate", "N m"},
-      {"measured_stress", "Pa"},     {"predicted_stress", "Pa"},
-      {"yielded_fraction", "1"}};
-  if (compare_force) {
-    table.insert(table.end(), {{"measured_normal_force", "N"},
-                               {"predicted_normal_force", "N"},
-                               {"normal_force_relative_error", "1"}});
-  }
-  std::vector<std::vector<double>> table_rows;
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<double>& v = table_rows.emplace_back(std::vector<double>{
-        measured.angular_velocity[i], measured.shear_rate[i], measured.torque[i], predicted[i],
-        predicted[i] / measured.torque[i] - 1.0, std::abs(rows[i][disc]) + std::abs(rows[i][reg]),
-        measured.stress[i], constants.stress_constant * predicted[i], rows[i][yielded]});
-    if (compare_force) {
-      v.insert(v.end(), {(*measured.normal_force)[i], predicted_force[i],
-                         predicted_force[i] / (*measured.normal_force)[i] - 1.0});
-    }
-  }
-  std::vector<std::string> header_lines{
-      fmt::format("softglass macro compare {} ({})", kVersion, kGitRevision),
-      fmt::format("scene: {} ({})", o.scene_file.string(), scene->description()),
-      fmt::format("data: {}, curve '{}', {} points compared, {} outside the rate window",
-                  o.data_file.string(), curve.label, n, measured.left_out),
-      describe_model(material, settings)};
-  for (const std::string& c : measured.conversions) header_lines.push_back("derived: " + c);
-
-  AtomicOutput& csv_file = *claimed.files[0];
-  write_results_csv(csv_file, header_lines, table, table_rows, 8);
-
-  io::OverlayPlot plot{
-      .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
-                           curve.label == o.data_file.stem().string() ? "" : ", " + curve.label,
-                           o.scene_file.filename().string()),
-      .abscissa = "angular velocity {/Symbol W} [rad/s]",
-      .x = measured.angular_velocity,
-      .panels = {{"torque [N m]", measured.torque, predicted}}};
-  if (compare_force)
-    plot.panels.push_back({"normal force [N]", *measured.normal_force, predicted_force});
-  AtomicOutput& png_file = *claimed.files[2];
-  const bool plotted = io::write_overlay_png(plot, png_file.temporary_path());
-  if (plotted) png_file.commit();
-
+  write_results_csv(*claimed.files[0], header_lines, table, 8);
+  const bool plotted = write_plot(comparison, o, measured.label, *claimed.files[2]);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  AtomicOutput& summary_file = *claimed.files[1];
-  std::ofstream summary(summary_file.temporary_path());
-  for (const std::string& line : header_lines) summary << line << "\n";
-  for (const std::string& line : report) summary << line << "\n";
-  summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
-                         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
-                         groups.ranks_per_point());
-  if (!plotted) summary << "no plot: gnuplot is not installed or failed\n";
-  summary.close();
-  if (!summary)
-    throw NumericalError(fmt::format("cannot write {}", summary_file.final_path().string()));
+  write_summary(*claimed.files[1], header_lines, report, wall, groups.ranks_per_point(), plotted);
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
-  AtomicOutput& h5_file = *claimed.files[3];
-  write_results_h5(h5_file.temporary_path(), table, table_rows,
+  write_results_h5(claimed.files[3]->temporary_path(), table,
                    {.software = header_lines[0],
                     .scene_file = o.scene_file.string(),
                     .description = fmt::format(
@@ -244,24 +303,9 @@ int compare(const CompareOptions& o) {
                     .wall_time = wall,
                     .mpi_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
                     .ranks_per_point = groups.ranks_per_point()});
-  csv_file.commit();
-  summary_file.commit();
-  h5_file.commit();
+  for (const std::size_t f : {0, 1, 3}) claimed.files[f]->commit();
 
-  if (!o.quiet) {
-    std::cout << fmt::format("{:>14} {:>12} {:>14} {:>14} {:>8}\n", "Omega [rad/s]", "rate [1/s]",
-                             "measured [N m]", "predicted", "error");
-    for (std::size_t i = 0; i < n; ++i) {
-      std::cout << fmt::format("{:>14.4e} {:>12.4g} {:>14.4e} {:>14.4e} {:>+7.1f}%\n",
-                               measured.angular_velocity[i], measured.shear_rate[i],
-                               measured.torque[i], predicted[i],
-                               100.0 * (predicted[i] / measured.torque[i] - 1.0));
-    }
-    for (const std::string& line : report) std::cout << line << "\n";
-    std::cout << fmt::format("results: {}{}\n", (directory / "comparison.csv").string(),
-                             plotted ? ", " + (directory / "comparison.png").string()
-                                     : " (no plot: gnuplot is not installed)");
-  }
+  if (!o.quiet) print_comparison(comparison, report, directory, plotted);
   if (!plotted)
     std::cerr << "macro: warning: no plot written (gnuplot is not installed or failed)\n";
   return kExitOk;

@@ -21,19 +21,12 @@
 #include "macro/app/compare.h"
 #include "macro/app/run.h"
 
-int main(int argc, char** argv) {
-  using namespace softglass;
-  // MPI (a no-op without mpirun): sweeps are split over groups of ranks, each
-  // group sharing its points' meshes (operating_points.h).
-  prefer_lean_mpi_singleton();
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  CLI::App app{
-      "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
-      "channels, pipes and ducts (deal.II finite elements)",
-      "macro"};
-  app.set_version_flag("--version", fmt::format("softglass macro {} ({})", kVersion, kGitRevision));
-  app.require_subcommand(1);
-  macro::app::RunOptions options;
+namespace {
+
+using softglass::positive;
+
+// `macro run`: its options into `options`.
+void add_run_command(CLI::App& app, softglass::macro::app::RunOptions& options) {
   CLI::App* run =
       app.add_subcommand("run", "solve a scene file over its sweep of operating points");
   run->add_option("scene", options.scene_file, "scene file (.prm)")->required();
@@ -49,7 +42,10 @@ int main(int argc, char** argv) {
       ->check(positive);
   run->add_flag("-f,--force", options.force, "overwrite existing results");
   run->add_flag("-q,--quiet", options.quiet, "no progress display");
-  macro::app::CompareOptions compare_options;
+}
+
+// `macro compare`: its options into `compare_options`.
+void add_compare_command(CLI::App& app, softglass::macro::app::CompareOptions& compare_options) {
   CLI::App* compare = app.add_subcommand(
       "compare",
       "predict the torques (and normal forces) of a measured rheometer curve with a scene file "
@@ -92,6 +88,26 @@ int main(int argc, char** argv) {
       ->check(positive);
   compare->add_flag("-f,--force", compare_options.force, "overwrite existing results");
   compare->add_flag("-q,--quiet", compare_options.quiet, "no progress display and no table");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace softglass;
+  // MPI (a no-op without mpirun): sweeps are split over groups of ranks, each
+  // group sharing its points' meshes (operating_points.h).
+  prefer_lean_mpi_singleton();
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  CLI::App app{
+      "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
+      "channels, pipes and ducts (deal.II finite elements)",
+      "macro"};
+  app.set_version_flag("--version", fmt::format("softglass macro {} ({})", kVersion, kGitRevision));
+  app.require_subcommand(1);
+  macro::app::RunOptions options;
+  add_run_command(app, options);
+  macro::app::CompareOptions compare_options;
+  add_compare_command(app, compare_options);
   app.add_subcommand("template", "print a documented scene file with every entry");
 
   // Exceptions from deal.II's own checks should not print their backtraces.

@@ -6,16 +6,14 @@
 
 namespace softglass::macro::app {
 
-using bridge::Measured;
-
-MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
-                                 const InstrumentConstants& constants, double min_rate,
-                                 double max_rate) {
+MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentConstants& constants,
+                                 double min_rate, double max_rate) {
   const bool has_omega = curve.has(Measured::angular_velocity);
   const bool has_rate = curve.has(Measured::shear_rate);
   const bool has_torque = curve.has(Measured::torque);
   const bool has_stress = curve.has(Measured::stress);
   MeasuredTorques m;
+  m.label = curve.label;
   if (!has_omega) {
     m.conversions.push_back(fmt::format("angular velocity = shear rate / {:.6g} 1/rad ({})",
                                         constants.strain_constant, constants.convention));

@@ -13,12 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "bridge/io/measured_curves.h"
+#include "common/measured_curves.h"
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
 
 struct MeasuredTorques {
+  std::string label;                                // the curve's
   std::vector<double> angular_velocity;             // Ω [rad/s], increasing
   std::vector<double> shear_rate;                   // γ̇ [1/s] as reported (or c_γ Ω)
   std::vector<double> torque;                       // M [N m]
@@ -30,8 +31,7 @@ struct MeasuredTorques {
 
 /// The points of `curve` whose shear rate (reported, or c_γ Ω) lies in
 /// [min_rate, max_rate]. InputError when fewer than 2 points remain.
-MeasuredTorques measured_torques(const bridge::RheometerCurve& curve,
-                                 const InstrumentConstants& constants, double min_rate,
-                                 double max_rate);
+MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentConstants& constants,
+                                 double min_rate, double max_rate);
 
 }  // namespace softglass::macro::app

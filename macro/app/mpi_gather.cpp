@@ -26,15 +26,18 @@ std::vector<T> gather_flat(MPI_Comm comm, const std::vector<T>& mine, MPI_Dataty
 }  // namespace
 
 std::vector<std::vector<double>> gather_rows(MPI_Comm comm,
-                                             const std::vector<std::vector<double>>& rows,
-                                             std::size_t width) {
+                                             const std::vector<std::vector<double>>& rows) {
+  // Each row preceded by its length.
   std::vector<double> flat;
-  for (const auto& row : rows) flat.insert(flat.end(), row.begin(), row.end());
+  for (const auto& row : rows) {
+    flat.push_back(double(row.size()));
+    flat.insert(flat.end(), row.begin(), row.end());
+  }
   std::vector<int> counts;
   const std::vector<double> all = gather_flat(comm, flat, MPI_DOUBLE, counts);
   std::vector<std::vector<double>> result;
-  for (std::size_t k = 0; k + width <= all.size(); k += width)
-    result.emplace_back(all.begin() + k, all.begin() + k + width);
+  for (std::size_t k = 0; k < all.size(); k += 1 + std::size_t(all[k]))
+    result.emplace_back(all.begin() + k + 1, all.begin() + k + 1 + std::size_t(all[k]));
   return result;
 }
 

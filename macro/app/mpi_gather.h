@@ -11,11 +11,10 @@
 
 namespace softglass::macro::app {
 
-/// Every rank's rows (each `width` values), concatenated in rank order on rank
-/// 0; empty elsewhere.
+/// Every rank's rows (of any lengths), concatenated in rank order on rank 0;
+/// empty elsewhere.
 std::vector<std::vector<double>> gather_rows(MPI_Comm comm,
-                                             const std::vector<std::vector<double>>& rows,
-                                             std::size_t width);
+                                             const std::vector<std::vector<double>>& rows);
 
 /// Every rank's text, in rank order on rank 0; empty elsewhere.
 std::vector<std::string> gather_text(MPI_Comm comm, const std::string& text);

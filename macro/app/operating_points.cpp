@@ -56,10 +56,9 @@ void write_fields(const Scene& scene, const std::filesystem::path& file, const R
 
 }  // namespace
 
-std::vector<std::vector<double>> solve_operating_points(Scene& scene,
-                                                        const std::vector<double>& points,
-                                                        const RankGroups& groups,
-                                                        const SweepDisplay& display) {
+std::vector<SceneResult> solve_operating_points(Scene& scene, const std::vector<double>& points,
+                                                const RankGroups& groups,
+                                                const SweepDisplay& display) {
   const MPI_Comm world = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(world) == 0;
   const Column drive = scene.drive();
@@ -74,8 +73,8 @@ std::vector<std::vector<double>> solve_operating_points(Scene& scene,
   std::string failure;  // a rank that fails still joins the gather below
   for (std::size_t k = first; k < last && failure.empty(); ++k) {
     try {
-      std::vector<double> row = scene.solve(points[k]);
-      if (groups.leader()) mine.push_back(std::move(row));
+      const SceneResult result = scene.solve(points[k]);
+      if (groups.leader()) mine.push_back(result.pack());
       if (display.vtu == "all" || (display.vtu == "last" && k + 1 == points.size()))
         write_fields(scene, display.directory / fmt::format("solution_{:03d}.vtu", k), groups);
     } catch (const std::exception& error) {
@@ -84,10 +83,12 @@ std::vector<std::vector<double>> solve_operating_points(Scene& scene,
     progress.update(double(k + 1 - first), fmt::format("{} = {:.4g}", drive.name, points[k]));
   }
   progress.finish();
-  auto rows = gather_rows(world, mine, scene.columns().size());
+  const auto rows = gather_rows(world, mine);
   for (const std::string& f : gather_text(world, failure))
     if (!f.empty()) throw NumericalError(f);
-  return rows;
+  std::vector<SceneResult> results;
+  for (const auto& row : rows) results.push_back(SceneResult::unpack(row));
+  return results;
 }
 
 ClaimedOutputs claim_outputs(const std::filesystem::path& directory,

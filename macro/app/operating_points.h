@@ -53,13 +53,12 @@ class RankGroups {
   bool leader_ = true;
 };
 
-/// Every point's row on rank 0 (empty on the other ranks). A point that fails
-/// on any rank → NumericalError on rank 0 naming the point. The scene must
-/// have been made with groups.mesh_communicator().
-std::vector<std::vector<double>> solve_operating_points(Scene& scene,
-                                                        const std::vector<double>& points,
-                                                        const RankGroups& groups,
-                                                        const SweepDisplay& display);
+/// Every point's result on rank 0 (empty on the other ranks). A point that
+/// fails on any rank → NumericalError on rank 0 naming the point. The scene
+/// must have been made with groups.mesh_communicator().
+std::vector<SceneResult> solve_operating_points(Scene& scene, const std::vector<double>& points,
+                                                const RankGroups& groups,
+                                                const SweepDisplay& display);
 
 /// Rank 0 claims the result files in `directory` (created if needed) before
 /// any work, so that a refusal costs nothing: OutputExistsError on rank 0, and

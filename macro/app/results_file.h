@@ -1,7 +1,7 @@
 // The table files of a `macro` run — results.csv/.h5 of `macro run`,
-// comparison.csv/.h5 of `macro compare` (product.md: one HDF5 file per run,
-// CSV with units in every header). The HDF5 file holds the CSV's table, one
-// dataset per column, and the run's provenance:
+// comparison.csv/.h5 of `macro compare` (docs/output.md: one HDF5 file per
+// run, CSV with units in every header). The HDF5 file holds the CSV's table,
+// one dataset per column (common/unit_table.h), and the run's provenance:
 //
 //   /                  attributes software, scene_file, wall_time [s],
 //                      mpi_ranks, ranks_per_point, operating_points
@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "common/atomic_output.h"
-#include "macro/scenes/scene.h"
+#include "common/unit_table.h"
 
 namespace softglass::macro::app {
 
@@ -30,15 +30,14 @@ struct RunProvenance {
   unsigned mpi_ranks = 1, ranks_per_point = 1;
 };
 
-/// Writes the temporary file of `out`: each of `comments` as a `# ` line, the
-/// header "name [unit]" per column, then `rows` with `digits` significant
-/// digits; NumericalError naming the final path if it cannot be written.
+/// Writes the temporary file of `out` (common/unit_table.h's CSV form, numbers
+/// with `digits` significant digits); NumericalError naming the final path if
+/// it cannot be written.
 void write_results_csv(const AtomicOutput& out, const std::vector<std::string>& comments,
-                       const std::vector<Column>& columns,
-                       const std::vector<std::vector<double>>& rows, int digits);
+                       const UnitTable& table, int digits);
 
-/// Writes `path` (a new file): column c of `rows` under the name of `columns[c]`.
-void write_results_h5(const std::filesystem::path& path, const std::vector<Column>& columns,
-                      const std::vector<std::vector<double>>& rows, const RunProvenance& run);
+/// Writes `path` (a new file): the provenance, and the table under /results.
+void write_results_h5(const std::filesystem::path& path, const UnitTable& table,
+                      const RunProvenance& run);
 
 }  // namespace softglass::macro::app

@@ -19,6 +19,66 @@
 
 namespace softglass::macro::app {
 
+namespace {
+
+// The table of results.csv and results.h5: the operating point, then the row.
+UnitTable results_table(const Scene& scene, const std::vector<double>& points,
+                        const std::vector<SceneResult>& results) {
+  UnitTable table{.columns = {scene.drive()}, .rows = {}};
+  const std::vector<Column> columns = scene.columns();
+  table.columns.insert(table.columns.end(), columns.begin(), columns.end());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    table.rows.push_back({points[k]});
+    const std::vector<double> values = results[k].values();
+    table.rows.back().insert(table.rows.back().end(), values.begin(), values.end());
+  }
+  return table;
+}
+
+// The largest relative error estimates of the main quantity over the sweep.
+// Points where nothing yields (below the yield point) are left out: there the
+// regularised material only creeps at rates ~ε and the exact output is zero,
+// so a relative error means nothing; they are counted instead.
+std::string error_summary(const std::string& quantity, const std::vector<SceneResult>& results) {
+  std::size_t unyielded = 0;
+  double disc = 0.0, reg = 0.0;
+  for (const SceneResult& r : results) {
+    if (r.yielded_fraction == 0.0) {
+      ++unyielded;
+      continue;
+    }
+    if (r.main.value == 0.0) continue;
+    disc = std::max(disc, std::abs(r.main.discretisation_error / r.main.value));
+    reg = std::max(reg, std::abs(r.main.regularisation_error / r.main.value));
+  }
+  std::string text = fmt::format(
+      "largest estimated relative {} error: discretisation {:.2e}, regularisation {:.2e}\n",
+      quantity, disc, reg);
+  if (unyielded > 0) {
+    text += fmt::format(
+        "{} operating point(s) below the yield point: nothing yields, the output is creep "
+        "of order eps (zero for the exact law)\n",
+        unyielded);
+  }
+  return text;
+}
+
+// summary.txt: the scene, the sweep's cost, the largest error estimates and
+// the full parameter set.
+void write_summary(const AtomicOutput& file, const std::filesystem::path& scene_file,
+                   const Scene& scene, const std::vector<SceneResult>& results,
+                   const std::string& sweep, const std::string& parameters) {
+  std::ofstream summary(file.temporary_path());
+  summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
+  summary << "scene file: " << scene_file.string() << "\n";
+  summary << scene.description() << "\n";
+  summary << sweep;
+  summary << error_summary(scene.columns()[0].name, results);
+  summary << "\nfull parameter set:\n" << parameters;
+}
+
+}  // namespace
+
 int run(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
@@ -43,9 +103,7 @@ int run(const RunOptions& options) {
   ClaimedOutputs claimed =
       claim_outputs(directory, {"results.csv", "summary.txt", "results.h5"}, options.force);
   if (claimed.refused) return kExitOutputExists;
-  const Column drive = scene->drive();
-  const std::vector<Column> columns = scene->columns();
-  const auto rows = solve_operating_points(
+  const auto results = solve_operating_points(
       *scene, points, groups,
       {.directory = directory,
        .vtu = vtu,
@@ -57,58 +115,19 @@ int run(const RunOptions& options) {
   AtomicOutput& h5_file = *claimed.files[2];
   const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
-  // The table of results.csv and results.h5: the operating point, then the row.
-  std::vector<Column> table{drive};
-  table.insert(table.end(), columns.begin(), columns.end());
-  std::vector<std::vector<double>> table_rows;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    table_rows.push_back({points[k]});
-    table_rows.back().insert(table_rows.back().end(), rows[k].begin(), rows[k].end());
-  }
-
+  const UnitTable table = results_table(*scene, points, results);
   write_results_csv(csv_file, {scene->description(), describe_model(material, settings)}, table,
-                    table_rows, 10);
-
+                    10);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::ofstream summary(summary_file.temporary_path());
-  summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
-  summary << "scene file: " << options.scene_file.string() << "\n";
-  summary << scene->description() << "\n";
-  summary << fmt::format(
-      "operating points: {} on {} MPI rank(s), {} per point's mesh; wall time {:.3f} s\n",
-      points.size(), ranks, groups.ranks_per_point(), wall);
-  // The largest relative error estimates over the sweep (primary output).
-  // Points where nothing yields (below the yield point) are left out: there
-  // the regularised material only creeps at rates ~ε and the exact output is
-  // zero, so a relative error means nothing; they are counted instead.
-  std::size_t yielded_column = columns.size(), unyielded = 0;
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    if (columns[c].name == "yielded_fraction") yielded_column = c;
-  double disc = 0.0, reg = 0.0;
-  for (const auto& row : rows) {
-    if (yielded_column < row.size() && row[yielded_column] == 0.0) {
-      ++unyielded;
-      continue;
-    }
-    if (row[0] == 0.0) continue;
-    disc = std::max(disc, std::abs(row[1] / row[0]));
-    reg = std::max(reg, std::abs(row[2] / row[0]));
-  }
-  summary << fmt::format(
-      "largest estimated relative {} error: discretisation {:.2e}, regularisation {:.2e}\n",
-      columns[0].name, disc, reg);
-  if (unyielded > 0) {
-    summary << fmt::format(
-        "{} operating point(s) below the yield point: nothing yields, the output is creep "
-        "of order eps (zero for the exact law)\n",
-        unyielded);
-  }
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
-  summary << "\nfull parameter set:\n" << parameters.str();
-  summary.close();
-  write_results_h5(h5_file.temporary_path(), table, table_rows,
+  write_summary(summary_file, options.scene_file, *scene, results,
+                fmt::format("operating points: {} on {} MPI rank(s), {} per point's mesh; wall "
+                            "time {:.3f} s\n",
+                            points.size(), ranks, groups.ranks_per_point(), wall),
+                parameters.str());
+  write_results_h5(h5_file.temporary_path(), table,
                    {.software = fmt::format("softglass macro {} ({})", kVersion, kGitRevision),
                     .scene_file = options.scene_file.string(),
                     .description = scene->description(),

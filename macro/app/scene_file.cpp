@@ -8,9 +8,9 @@
 #include <regex>
 #include <sstream>
 
+#include "common/deal_ii_message.h"
 #include "common/errors.h"
 #include "macro/fe/solver_settings.h"
-#include "macro/io/deal_ii_errors.h"
 #include "macro/material/material_parameters.h"
 #include "macro/scenes/scene.h"
 
@@ -91,7 +91,7 @@ void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
   try {
     prm.parse_input(input, source, "", false);
   } catch (const dealii::ExceptionBase& error) {
-    throw InputError(io::one_line(error));
+    throw InputError(deal_ii_message(error.what()));
   }
 }
 

@@ -17,29 +17,20 @@
 //
 // symmetric positive definite (τ' > 0 for every regularised law), so each
 // Newton step is a weighted anisotropic Laplace problem, solved by a sparse
-// direct factorisation. The step is a descent direction of J; if the full step
-// does not reduce the residual, the step length minimises J along it exactly:
-// φ(α) = J(u + αδ) is convex, so its derivative φ'(α) = R(u + αδ)(δ) increases
-// and its zero is found by regula falsi. Newton then converges from any start.
+// direct factorisation. The step is a descent direction of J, so the line
+// search minimises J along it (LineSearch::energy_slope of
+// newton_continuation.h, which also holds the modified tangent and the
+// continuation in ε).
 //
-// Continuation. The smaller ε, the more η_ε varies (from τ_y/ε in the plug to K
-// γ̇^{n−1} in the flow) and the narrower the region where Newton converges
-// quadratically. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
-// the scene's viscosity scale) and divides ε by 10 per stage down to the target,
-// each stage starting from the previous one's solution. The last two stages
-// (10ε and ε) give the regularisation error estimate: the outputs converge like
-// O(ε) (macro.md), so the error at ε is about their difference / 9.
+// Continuation. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
+// the scene's viscosity scale) and divides ε by 10 per stage down to the
+// target. The last two stages (10ε and ε) give the regularisation error
+// estimate: the outputs converge like O(ε) (docs/macro.md), so the error at ε is
+// about their difference / 9.
 //
-// Augmented Lagrangian (ALG2, Fortin & Glowinski 1983). The unregularised J is
-// not differentiable where γ̇ = 0. Introduce the shear-rate field γ ≈ s∇u at
-// the quadrature points and a multiplier λ (the stress), and alternate
-//   1. u: r ∫ ρ s² ∇u·∇v = ∫ ρ f v − ∫ ρ s (λ − r γ)·∇v  (one matrix, factorised once);
-//   2. γ: pointwise, with χ = λ + r s∇u: γ = 0 where |χ| ≤ τ_y (rigid), else
-//         γ = g χ/|χ| with τ_y + K gⁿ + r g = |χ| (HerschelBulkley::proximal_rate);
-//   3. λ ← λ + r (s∇u − γ).
-// The rigid set {γ = 0} is then exactly the set where the stress is below the
-// yield stress: no regularisation. The price is slow convergence (the residual
-// falls roughly like 1/iterations), measured by the constraint residual.
+// Augmented Lagrangian. The alternative to regularising: ALG2 on the
+// unregularised law (augmented_lagrangian.h), started from a coarsely
+// regularised solution.
 //
 // Adaptivity. After each solve the Kelly indicator (the jump of the normal
 // derivative across faces) ranks the cells; the top fraction is refined, and so
@@ -81,12 +72,13 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <string>
+#include <limits>
 #include <type_traits>
 
 #include "common/errors.h"
+#include "macro/fe/augmented_lagrangian.h"
 #include "macro/fe/distributed_system.h"
+#include "macro/fe/newton_continuation.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/io/vtu_output.h"
 #include "macro/material/regularised_law.h"
@@ -96,17 +88,6 @@ namespace softglass::macro::fe {
 using namespace dealii;
 
 namespace {
-
-// A failed continuation stage is retried with the step ε_prev/ε square-rooted
-// while it exceeds this (10 → 3.2 → 1.8 → 1.3: three retries).
-constexpr double kSmallestContinuationStep = 1.2;
-// Regula falsi on φ'(α): stop when |φ'| has dropped to this fraction of φ'(0)
-// (an inexact but sufficient line search), or after this many steps.
-constexpr double kLineSearchReduction = 0.1;
-constexpr int kLineSearchSteps = 12;
-// Modified Newton (solve_newton): τ' ≥ kTangentFloor·η (solver_settings.h)
-// after a step shorter than kFullStep.
-constexpr double kFullStep = 0.5;
 
 // The mesh of a section: distributed in 2D; a 1D section stays serial (p4est
 // has no 1D forests, and a line of a few hundred cells gains nothing).
@@ -123,10 +104,6 @@ std::unique_ptr<SectionMesh<dim>> make_section_mesh(MPI_Comm communicator) {
   }
 }
 
-double power(double r, int k) {
-  return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k));
-}
-
 Outputs difference(const Outputs& a, const Outputs& b, double divisor) {
   return {.flow = std::abs(a.flow - b.flow) / divisor,
           .dissipation = std::abs(a.dissipation - b.dissipation) / divisor,
@@ -141,17 +118,26 @@ template <int dim>
 class ScalarFlowSolver<dim>::Implementation {
  public:
   Implementation(const Triangulation<dim>& base_mesh, unsigned mapping_degree,
-                 const SectionWeights& weights, const HerschelBulkley& law,
+                 const SectionWeights& weights, std::shared_ptr<const ShearLaw> law,
                  const SolverSettings& settings)
       : weights_(weights),
-        law_(law),
+        law_(std::move(law)),
         settings_(settings),
         communicator_(dim == 1 ? MPI_COMM_SELF : settings.mesh_communicator),
         system_(communicator_, MatrixKind::positive_definite),
         triangulation_(make_section_mesh<dim>(communicator_)),
         mapping_(mapping_degree),
         fe_(settings.fe_degree),
-        dof_handler_(*triangulation_) {
+        dof_handler_(*triangulation_),
+        newton_(
+            "Newton", LineSearch::energy_slope, system_, zero_constraints_,
+            [this](const RegularisedLaw& regularised, const VectorType& u, bool with_matrix,
+                   double tangent_floor) {
+              assemble_system(regularised, u, with_matrix, tangent_floor);
+            },
+            *law_, settings),
+        augmented_lagrangian_({mapping_, fe_, dof_handler_, weights_, communicator_}, system_,
+                              constraints_, *law_, settings) {
     coarse_.copy_triangulation(base_mesh);
   }
 
@@ -160,18 +146,30 @@ class ScalarFlowSolver<dim>::Implementation {
 
  private:
   // --- setup -------------------------------------------------------------
+  bool setup_base_mesh();
   VectorType setup_system();
   void make_constraints();
   void impose_boundary_values();
 
+  // --- the nonlinear solve, by the chosen method -----------------------------
+  unsigned solve(bool warm, const BoundaryFunctional& boundary, Outputs& before);
+  unsigned solve_after_refinement();
+  Outputs regularisation_error(const Outputs& value, const Outputs& before) const;
+
   // --- regularised method --------------------------------------------------
   void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
                        double tangent_floor = 0.0);
-  unsigned solve_newton(const RegularisedLaw& law, bool allow_damping = false);
-  unsigned solve_with_continuation(double target_scale, double start_scale);
+  /// Continuation from ε = start_scale to target_scale from the current u;
+  /// leaves the law at the target in regularised_.
+  unsigned solve_with_continuation(double target_scale, double start_scale) {
+    return newton_.continuation(target_scale, start_scale, solution_, regularised_);
+  }
+
+  unsigned solve_regularised(bool warm, const BoundaryFunctional& boundary, Outputs& before);
+  unsigned solve_regularised_after_refinement();
 
   // --- augmented Lagrangian -------------------------------------------------
-  unsigned solve_augmented_lagrangian(double penalty, Outputs* previous_outputs);
+  unsigned solve_augmented_lagrangian(const std::function<void()>& record = {});
 
   // --- outputs and adaptivity --------------------------------------------
   Outputs evaluate(const BoundaryFunctional& boundary) const;
@@ -180,11 +178,11 @@ class ScalarFlowSolver<dim>::Implementation {
   /// The stress of the current solution at a shear rate: the regularised law
   /// while regularising, the rate field of ALG2 otherwise.
   double stress(double rate) const {
-    return regularised_ ? regularised_->stress(rate) : law_.stress(rate);
+    return regularised_ ? regularised_->stress(rate) : law_->stress(rate);
   }
 
-  double rho(const Point<dim>& x) const { return power(x[0], weights_.radial_weight); }
-  double s(const Point<dim>& x) const { return power(x[0], weights_.rate_radius_power); }
+  double rho(const Point<dim>& x) const { return weights_.rho(x[0]); }
+  double s(const Point<dim>& x) const { return weights_.s(x[0]); }
 
   /// Shear rate, stress and whether the material yields at quadrature point x
   /// (number k over this rank's cells): from the gradient while regularising;
@@ -194,13 +192,13 @@ class ScalarFlowSolver<dim>::Implementation {
     bool yielded;
   };
   LocalState local_state(const Point<dim>& x, const Tensor<1, dim>& gradient, std::size_t k) const {
-    const double rate = regularised_ ? s(x) * gradient.norm() : al_rate_[k];
+    const double rate = regularised_ ? s(x) * gradient.norm() : augmented_lagrangian_.rate(k);
     const double tau = stress(rate);
-    return {rate, tau, regularised_ ? tau > law_.yield_stress : rate > 0.0};
+    return {rate, tau, regularised_ ? tau > law_->yield_stress() : rate > 0.0};
   }
 
   SectionWeights weights_;
-  HerschelBulkley law_;
+  std::shared_ptr<const ShearLaw> law_;
   SolverSettings settings_;
   Drive drive_;
   MPI_Comm communicator_;
@@ -215,16 +213,17 @@ class ScalarFlowSolver<dim>::Implementation {
   AffineConstraints<double> zero_constraints_;  // hanging nodes + homogeneous Dirichlet
   VectorType solution_;                         // owned entries only
 
-  // The regularised law of the last solve (null for ALG2), and for ALG2 the
-  // rate |γ| per quadrature point of this rank's cells, cell by cell.
+  // The regularised law of the last solve (null after ALG2).
   std::unique_ptr<RegularisedLaw> regularised_;
-  std::vector<double> al_rate_;
-  unsigned al_record_iteration_ = 0, al_iterations_ = 0;
 
   // The previous operating point's solution on the (refined) base mesh, and its
   // characteristic rate: the warm start of the next point.
   VectorType previous_base_solution_;
   double previous_rate_ = 0.0;
+
+  // The two methods; declared last: they refer to the members above.
+  NewtonContinuation newton_;
+  AugmentedLagrangian<dim> augmented_lagrangian_;
 };
 
 // --- setup ----------------------------------------------------------------
@@ -237,6 +236,25 @@ VectorType ScalarFlowSolver<dim>::Implementation::setup_system() {
   system_.set_dofs(dof_handler_);
   make_constraints();
   return system_.make_matrix(dof_handler_, zero_constraints_);
+}
+
+// The same base mesh (and, distributed, the same partition) at every point,
+// so that the previous point's solution is a valid start: if there is one,
+// u starts as its profile, rescaled by the ratio of shear rates (true: warm).
+template <int dim>
+bool ScalarFlowSolver<dim>::Implementation::setup_base_mesh() {
+  triangulation_->clear();
+  triangulation_->copy_triangulation(coarse_);
+  triangulation_->refine_global(settings_.global_refinements);
+  solution_ = setup_system();
+  const bool warm =
+      previous_rate_ > 0.0 && previous_base_solution_.locally_owned_elements() == system_.owned;
+  if (warm) {
+    solution_ = previous_base_solution_;
+    solution_ *= drive_.characteristic_rate / previous_rate_;
+  }
+  impose_boundary_values();
+  return warm;
 }
 
 template <int dim>
@@ -293,7 +311,7 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
       const Viscosity eta = law.viscosity(rate);
       // n = ∇u/|∇u|; at rest the anisotropic part vanishes (γ̇ dη/dγ̇ = 0).
       const Tensor<1, dim> direction = g > 0.0 ? gradients[q] / g : Tensor<1, dim>();
-      // τ' − η, with τ' raised to tangent_floor·η if it is smaller (see solve_newton).
+      // τ' − η, with τ' raised to tangent_floor·η if it is smaller (newton_continuation.h).
       const double anisotropy = std::max(eta.derivative * rate, (tangent_floor - 1.0) * eta.value);
       const double f = drive_.source * rho(x) * fe_values.JxW(q);
       for (unsigned i = 0; i < n; ++i) {
@@ -321,234 +339,79 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
   system_.residual.compress(VectorOperation::add);
 }
 
-template <int dim>
-unsigned ScalarFlowSolver<dim>::Implementation::solve_newton(const RegularisedLaw& law,
-                                                             bool allow_damping) {
-  VectorType update = system_.vector(), trial = system_.vector();
-  // After a step the line search had to cut short, the next one uses a
-  // modified tangent. Where the material has just yielded, τ' = dτ/dγ̇ is
-  // orders of magnitude below η = τ/γ̇ (n < 1, small ε), so the Newton step
-  // along the flow direction is huge and its region of validity tiny. Raising
-  // τ' to a fraction of η keeps the matrix symmetric positive definite (the
-  // step stays a descent direction of J) and the step moderate; full Newton
-  // resumes, with its quadratic convergence, once steps are accepted whole.
-  // It is the fallback of a failed stage (solve_with_continuation): where pure
-  // Newton converges it is faster.
-  bool damped = false;
-  for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
-    assemble_system(law, solution_, true, damped ? kTangentFloor : 0.0);
-    const double residual_norm = system_.residual.l2_norm();
-    system_.factorise();
-    system_.solve(update, system_.residual);
-    update *= -1.0;
-    zero_constraints_.distribute(update);
+// --- the nonlinear solve, by the chosen method ------------------------------
 
-    // Full step if it lowers the residual; else the exact line search on J,
-    // on φ'(α) = R(u + αδ)(δ).
-    const double slope0 = system_.residual * update;  // φ'(0) < 0: a descent direction
-    const auto slope_at = [&](double alpha) {
-      trial = solution_;
-      trial.add(alpha, update);
-      assemble_system(law, trial, false);
-      return system_.residual * update;
-    };
-    double alpha = 1.0;
-    const double d_full = slope_at(1.0);
-    if (system_.residual.l2_norm() > residual_norm && slope0 < 0.0 && d_full > 0.0) {
-      double lo = 0.0, hi = 1.0, d_lo = slope0, d_hi = d_full;
-      for (int k = 0; k < kLineSearchSteps; ++k) {
-        alpha = lo - d_lo * (hi - lo) / (d_hi - d_lo);
-        const double d = slope_at(alpha);
-        if (std::abs(d) <= kLineSearchReduction * std::abs(slope0)) break;
-        (d < 0.0 ? lo : hi) = alpha;
-        (d < 0.0 ? d_lo : d_hi) = d;
-      }
-    }
-    solution_.add(alpha, update);
-    damped = allow_damping && alpha < kFullStep;
-    // SOFTGLASS_MACRO_DEBUG=1 traces every Newton step (convergence problems).
-    if (std::getenv("SOFTGLASS_MACRO_DEBUG"))
-      fmt::print(stderr, "newton eps={:.3g} it={} |R|={:.3e} alpha={:.3g} |du|={:.3e}\n",
-                 law.rate_scale(), iteration, residual_norm, alpha, update.linfty_norm());
-    const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
-    if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
-  }
-  throw NumericalError(fmt::format(
-      "Newton did not converge in {} iterations ({} regularisation, eps = {:.3g} 1/s, {} dofs)",
-      settings_.max_newton_iterations, law.name(), law.rate_scale(), dof_handler_.n_dofs()));
+// On the base mesh; `before` gets the outputs the regularisation error is
+// estimated from.
+template <int dim>
+unsigned ScalarFlowSolver<dim>::Implementation::solve(bool warm, const BoundaryFunctional& boundary,
+                                                      Outputs& before) {
+  if (settings_.method == Method::regularised) return solve_regularised(warm, boundary, before);
+  // ALG2 starts from a coarsely regularised solution (ε = γ̇_c/100) when cold.
+  const double rate_c = drive_.characteristic_rate;
+  const unsigned iterations = warm ? 0 : solve_with_continuation(1e-2 * rate_c, rate_c);
+  return iterations + solve_augmented_lagrangian([&] { before = evaluate({}); });
 }
 
-// Newton at ε = start, start/10, ... down to the target; returns the iterations.
-// Leaves the law at the target in regularised_. When a stage fails (large plug
-// regions make Newton's quadratic region narrow at small ε), it is retried
-// with the modified tangent of solve_newton, and then from the last converged
-// solution with the step in ε shrunk to its square root.
 template <int dim>
-unsigned ScalarFlowSolver<dim>::Implementation::solve_with_continuation(double target_scale,
-                                                                        double start_scale) {
+unsigned ScalarFlowSolver<dim>::Implementation::solve_after_refinement() {
+  return settings_.method == Method::regularised ? solve_regularised_after_refinement()
+                                                 : solve_augmented_lagrangian();
+}
+
+// Regularised: the O(ε) law, error ≈ (value at 10ε − value)/9. ALG2: the 1/k
+// law of its iterations (augmented_lagrangian.h).
+template <int dim>
+Outputs ScalarFlowSolver<dim>::Implementation::regularisation_error(const Outputs& value,
+                                                                    const Outputs& before) const {
+  return difference(value, before,
+                    settings_.method == Method::regularised
+                        ? kContinuationFactor - 1.0
+                        : augmented_lagrangian_.error_divisor());
+}
+
+// Cold start: continuation from ε = γ̇_c down to 10ε. Warm start: straight to
+// 10ε, falling back to the full continuation if Newton fails. Then ε.
+template <int dim>
+unsigned ScalarFlowSolver<dim>::Implementation::solve_regularised(
+    bool warm, const BoundaryFunctional& boundary, Outputs& before) {
+  const double rate_c = drive_.characteristic_rate;
+  const double target = settings_.relative_rate_scale * rate_c;
+  const double coarse = kContinuationFactor * target;
   unsigned iterations = 0;
-  double eps = std::max(start_scale, target_scale), converged_eps = 0.0;
-  VectorType converged = solution_;
-  std::string failure;
-  // One Newton solve at the current ε from `start`; false (and the solution
-  // back at `start`) if it does not converge.
-  const auto attempt = [&](const VectorType& start, bool damping) {
-    solution_ = start;
-    try {
-      iterations += solve_newton(*regularised_, damping);
-      return true;
-    } catch (const NumericalError& error) {
-      iterations += settings_.max_newton_iterations;
-      failure = error.what();
-      solution_ = start;
-      return false;
-    }
-  };
-  while (true) {
-    regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    const VectorType start = solution_;
-    if (!attempt(start, false) && !attempt(start, true)) {
-      // Retry halfway (in log ε) from the last converged stage, while the
-      // step is still worth shrinking.
-      if (converged_eps == 0.0 || converged_eps / eps < kSmallestContinuationStep)
-        throw NumericalError(failure);
-      eps = std::sqrt(converged_eps * eps);
-      solution_ = converged;
-      continue;
-    }
-    converged = solution_;
-    converged_eps = eps;
-    if (eps <= target_scale * (1.0 + 1e-12)) return iterations;
-    eps = std::max(eps / kContinuationFactor, target_scale);
+  try {
+    iterations += solve_with_continuation(coarse, warm ? coarse : rate_c);
+  } catch (const NumericalError&) {
+    if (!warm) throw;
+    solution_ = 0.0;
+    impose_boundary_values();
+    iterations += solve_with_continuation(coarse, rate_c);
+  }
+  before = evaluate(boundary);
+  return iterations + solve_with_continuation(target, target);
+}
+
+// On the refined mesh Newton starts from the interpolated solution; if that
+// fails, from it again through one stage at 10ε.
+template <int dim>
+unsigned ScalarFlowSolver<dim>::Implementation::solve_regularised_after_refinement() {
+  const VectorType transferred = solution_;
+  try {
+    return newton_.solve(*regularised_, solution_);
+  } catch (const NumericalError&) {
+    solution_ = transferred;
+    const double target = settings_.relative_rate_scale * drive_.characteristic_rate;
+    return solve_with_continuation(target, kContinuationFactor * target);
   }
 }
 
-// --- augmented Lagrangian ----------------------------------------------------
-
+// ALG2 from the current u; the regularised law u solves (if any) starts its
+// multiplier, and evaluate() reads ALG2's rate field from then on.
 template <int dim>
 unsigned ScalarFlowSolver<dim>::Implementation::solve_augmented_lagrangian(
-    double penalty, Outputs* previous_outputs) {
+    const std::function<void()>& record) {
   const std::unique_ptr<RegularisedLaw> start_law = std::move(regularised_);
-  const QGauss<dim> quadrature(fe_.degree + 1);
-  FEValues<dim> fe_values(
-      mapping_, fe_, quadrature,
-      update_values | update_gradients | update_quadrature_points | update_JxW_values);
-  const unsigned n = fe_.n_dofs_per_cell(), nq = quadrature.size();
-  const auto cells = owned_cells(dof_handler_);
-  const std::size_t points = std::distance(cells.begin(), cells.end()) * nq;
-  std::vector<Tensor<1, dim>> rate(points), multiplier(points), gradients(nq);
-  al_rate_.assign(points, 0.0);
-  std::vector<types::global_dof_index> dofs(n);
-  FullMatrix<double> cell_matrix(n, n);
-  Vector<double> cell_rhs(n);
-  VectorType rhs = system_.vector();
-
-  // The u-step matrix r∫ρs²∇φ_i·∇φ_j is the same at every iteration: factorise
-  // it once. The Dirichlet data enter its right-hand side through the
-  // inhomogeneous constraints, so the local matrices are needed for that too.
-  const auto assemble = [&](bool with_matrix) {
-    rhs = 0.0;
-    if (with_matrix) system_.matrix = 0.0;
-    std::size_t k = 0;
-    for (const auto& cell : owned_cells(dof_handler_)) {
-      fe_values.reinit(cell);
-      cell_matrix = 0.0;
-      cell_rhs = 0.0;
-      for (const unsigned q : fe_values.quadrature_point_indices()) {
-        const Point<dim>& x = fe_values.quadrature_point(q);
-        const double sq = s(x), jxw = rho(x) * fe_values.JxW(q);
-        const Tensor<1, dim> load = sq * (multiplier[k + q] - penalty * rate[k + q]);
-        for (unsigned i = 0; i < n; ++i) {
-          cell_rhs(i) +=
-              (drive_.source * fe_values.shape_value(i, q) - load * fe_values.shape_grad(i, q)) *
-              jxw;
-          for (unsigned j = 0; j < n; ++j)
-            cell_matrix(i, j) +=
-                penalty * sq * sq * (fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q)) * jxw;
-        }
-      }
-      cell->get_dof_indices(dofs);
-      if (with_matrix) {
-        constraints_.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_.matrix, rhs);
-      } else {
-        constraints_.distribute_local_to_global(cell_rhs, dofs, rhs, cell_matrix);
-      }
-      k += nq;
-    }
-    if (with_matrix) system_.matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
-  };
-  // Start from the current u (a regularised solution, when there is one):
-  // γ = s∇u and λ = its regularised stress, so ALG2 only corrects the plug.
-  {
-    const VectorType& field = system_.readable(solution_);
-    std::size_t k = 0;
-    for (const auto& cell : owned_cells(dof_handler_)) {
-      fe_values.reinit(cell);
-      fe_values.get_function_gradients(field, gradients);
-      for (const unsigned q : fe_values.quadrature_point_indices()) {
-        rate[k] = s(fe_values.quadrature_point(q)) * gradients[q];
-        if (start_law) multiplier[k] = start_law->viscosity(rate[k].norm()).value * rate[k];
-        ++k;
-      }
-    }
-  }
-  regularised_.reset();
-  assemble(true);
-  system_.factorise();
-
-  const BoundaryFunctional none;
-  unsigned iteration = 0;
-  unsigned next_record = 1;
-  for (iteration = 1; iteration <= settings_.al_max_iterations; ++iteration) {
-    if (iteration > 1) assemble(false);
-    system_.solve(solution_, rhs);
-    constraints_.distribute(solution_);
-
-    // Local steps 2 and 3, and the constraint residual ‖s∇u − γ‖ against ‖γ‖.
-    const VectorType& field = system_.readable(solution_);
-    double mismatch = 0.0, norm = 0.0, volume = 0.0;
-    std::size_t k = 0;
-    for (const auto& cell : owned_cells(dof_handler_)) {
-      fe_values.reinit(cell);
-      fe_values.get_function_gradients(field, gradients);
-      for (const unsigned q : fe_values.quadrature_point_indices()) {
-        const Point<dim>& x = fe_values.quadrature_point(q);
-        const Tensor<1, dim> strain = s(x) * gradients[q];
-        const Tensor<1, dim> chi = multiplier[k] + penalty * strain;
-        const double chi_norm = chi.norm();
-        const double g = law_.proximal_rate(chi_norm, penalty);
-        rate[k] = g > 0.0 ? (g / chi_norm) * chi : Tensor<1, dim>();
-        al_rate_[k] = g;
-        multiplier[k] += penalty * (strain - rate[k]);
-        const double w = rho(x) * fe_values.JxW(q);
-        mismatch += (strain - rate[k]).norm_square() * w;
-        norm += rate[k].norm_square() * w;
-        volume += w;
-        ++k;
-      }
-    }
-    mismatch = Utilities::MPI::sum(mismatch, communicator_);
-    norm = Utilities::MPI::sum(norm, communicator_);
-    volume = Utilities::MPI::sum(volume, communicator_);
-    // Relative to the rate field, or to the scene's rate scale where the
-    // material barely flows (a plug filling the section has γ = 0).
-    const double scale = drive_.characteristic_rate * drive_.characteristic_rate * volume;
-    const double relative = std::sqrt(mismatch / std::max(norm, scale));
-    if (relative <= settings_.al_tolerance) break;
-    // Outputs about a tenth of the iterations back, for the error estimate.
-    if (previous_outputs && iteration >= next_record) {
-      *previous_outputs = evaluate(none);
-      al_record_iteration_ = iteration;
-      next_record = iteration + std::max(1u, iteration / 10);
-    }
-  }
-  al_iterations_ = iteration;
-  if (iteration > settings_.al_max_iterations) {
-    throw NumericalError(fmt::format("augmented Lagrangian did not reach {} in {} iterations",
-                                     settings_.al_tolerance, settings_.al_max_iterations));
-  }
-  return iteration;
+  return augmented_lagrangian_.solve(solution_, drive_, start_law.get(), record);
 }
 
 // --- outputs and adaptivity ----------------------------------------------------
@@ -632,7 +495,7 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
       (local_state(fe_values.quadrature_point(q), gradients[q], k).yielded ? above : below) = true;
       ++k;
     }
-    if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
+    if (above && below && law_->yield_stress() > 0.0) cell->set_refine_flag();
   }
 
   refine_and_transfer(*triangulation_, dof_handler_, field, solution_,
@@ -640,87 +503,26 @@ void ScalarFlowSolver<dim>::Implementation::refine_mesh() {
   impose_boundary_values();
 }
 
+// One operating point, in the manner of the deal.II tutorials: the base mesh,
+// a first solve, then cycles of refinement and solves on the refined mesh.
 template <int dim>
 PointResult ScalarFlowSolver<dim>::Implementation::run(const Drive& drive,
                                                        const BoundaryFunctional& boundary) {
   const auto start = std::chrono::steady_clock::now();
   drive_ = drive;
-  // The same base mesh (and, distributed, the same partition) at every point,
-  // so that the previous point's solution is a valid start.
-  triangulation_->clear();
-  triangulation_->copy_triangulation(coarse_);
-  triangulation_->refine_global(settings_.global_refinements);
-  solution_ = setup_system();
+  const bool warm = setup_base_mesh();
   PointResult result;
-
-  const double rate_c = drive.characteristic_rate;
-  const double target = settings_.relative_rate_scale * rate_c;
-  const bool warm =
-      previous_rate_ > 0.0 && previous_base_solution_.locally_owned_elements() == system_.owned;
-  if (warm) {
-    // The profile of the previous point, rescaled by the ratio of shear rates.
-    solution_ = previous_base_solution_;
-    solution_ *= rate_c / previous_rate_;
-  }
-  impose_boundary_values();
-
   Outputs before;  // at 10ε (regularised) or earlier in the ALG2 iterations
-  const auto solve_first = [&]() {
-    if (settings_.method == Method::augmented_lagrangian) {
-      // ALG2's penalty: the viscosity scale η(γ̇_c) of the scene.
-      const double penalty = settings_.al_relative_penalty * law_.viscosity(rate_c);
-      if (!warm) result.iterations += solve_with_continuation(1e-2 * rate_c, rate_c);
-      result.iterations += solve_augmented_lagrangian(penalty, &before);
-      return;
-    }
-    // Cold start: continuation from ε = γ̇_c down to 10ε. Warm start: straight
-    // to 10ε, falling back to the full continuation if Newton fails.
-    const double coarse = kContinuationFactor * target;
-    try {
-      result.iterations +=
-          warm ? solve_with_continuation(coarse, coarse) : solve_with_continuation(coarse, rate_c);
-    } catch (const NumericalError&) {
-      if (!warm) throw;
-      solution_ = 0.0;
-      impose_boundary_values();
-      result.iterations += solve_with_continuation(coarse, rate_c);
-    }
-    before = evaluate(boundary);
-    result.iterations += solve_with_continuation(target, target);
-  };
-  solve_first();
+  result.iterations += solve(warm, boundary, before);
   previous_base_solution_ = solution_;
-  previous_rate_ = rate_c;
+  previous_rate_ = drive.characteristic_rate;
   Outputs value = evaluate(boundary);
-  // Regularised: the O(ε) law, error ≈ (value at 10ε − value)/9. ALG2: its
-  // outputs converge like 1/k in the iteration k (Rheolef's experience, macro.md),
-  // so the error after K iterations is about the change since iteration k
-  // times k/(K − k).
-  const double al_factor =
-      al_iterations_ > al_record_iteration_
-          ? double(al_iterations_ - al_record_iteration_) / std::max(1u, al_record_iteration_)
-          : 1.0;
-  result.regularisation_error = settings_.method == Method::regularised
-                                    ? difference(value, before, kContinuationFactor - 1.0)
-                                    : difference(value, before, al_factor);
+  result.regularisation_error = regularisation_error(value, before);
 
   for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
     refine_mesh();
     const Outputs coarse_value = value;
-    if (settings_.method == Method::augmented_lagrangian) {
-      const double penalty = settings_.al_relative_penalty * law_.viscosity(rate_c);
-      result.iterations += solve_augmented_lagrangian(penalty, nullptr);
-    } else {
-      // On the refined mesh Newton starts from the interpolated solution; if
-      // that fails, from it again through one stage at 10ε.
-      const VectorType transferred = solution_;
-      try {
-        result.iterations += solve_newton(*regularised_);
-      } catch (const NumericalError&) {
-        solution_ = transferred;
-        result.iterations += solve_with_continuation(target, kContinuationFactor * target);
-      }
-    }
+    result.iterations += solve_after_refinement();
     value = evaluate(boundary);
     result.discretisation_error = difference(value, coarse_value, 1.0);
   }
@@ -778,8 +580,10 @@ void ScalarFlowSolver<dim>::Implementation::output_results(
 template <int dim>
 ScalarFlowSolver<dim>::ScalarFlowSolver(const Triangulation<dim>& base_mesh,
                                         unsigned mapping_degree, const SectionWeights& weights,
-                                        const HerschelBulkley& law, const SolverSettings& settings)
-    : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, law, settings)) {}
+                                        std::shared_ptr<const ShearLaw> law,
+                                        const SolverSettings& settings)
+    : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, std::move(law),
+                                             settings)) {}
 
 template <int dim>
 ScalarFlowSolver<dim>::~ScalarFlowSolver() = default;

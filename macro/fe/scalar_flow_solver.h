@@ -21,7 +21,7 @@
 
 #include "macro/fe/scalar_problem.h"
 #include "macro/fe/solver_settings.h"
-#include "macro/material/herschel_bulkley.h"
+#include "macro/material/shear_law.h"
 
 namespace softglass::macro::fe {
 
@@ -58,7 +58,7 @@ class ScalarFlowSolver {
   /// `base_mesh` is copied; every operating point starts from it (refined
   /// settings.global_refinements times) and adapts its own copy.
   ScalarFlowSolver(const dealii::Triangulation<dim>& base_mesh, unsigned mapping_degree,
-                   const SectionWeights& weights, const HerschelBulkley& law,
+                   const SectionWeights& weights, std::shared_ptr<const ShearLaw> law,
                    const SolverSettings& settings);
   ~ScalarFlowSolver();
 

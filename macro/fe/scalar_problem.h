@@ -31,6 +31,8 @@
 
 #include <deal.II/base/types.h>
 
+#include <cmath>
+
 #include <map>
 #include <string>
 
@@ -44,6 +46,13 @@ struct SectionWeights {
   /// The outputs are integrals over the whole body: 2 for a half channel
   /// (symmetry), 2π for a full revolution, 2πL per length L...
   double measure_factor = 1.0;
+
+  /// ρ and s at a point whose first coordinate is r.
+  double rho(double r) const { return power(r, radial_weight); }
+  double s(double r) const { return power(r, rate_radius_power); }
+
+ private:
+  static double power(double r, int k) { return k == 0 ? 1.0 : (k == 1 ? r : std::pow(r, k)); }
 };
 
 /// The driving of one operating point.

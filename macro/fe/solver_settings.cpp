@@ -55,8 +55,7 @@ void declare_solver_settings(dealii::ParameterHandler& prm) {
   prm.declare_entry("method", "regularised", Selection("regularised|augmented-lagrangian"),
                     "regularised (Newton, continuation in eps) | augmented-lagrangian (ALG2, exact "
                     "yield surfaces, slower)");
-  prm.declare_entry("regularisation", "papanastasiou",
-                    Selection("papanastasiou|bercovier-engelman"),
+  prm.declare_entry("regularisation", "papanastasiou", Selection(regularisations().selection()),
                     "the regularised viscosity of the regularised method");
   // Overrides: empty keeps the preset's value.
   prm.declare_entry("relative rate scale", "", Anything(),

@@ -7,11 +7,12 @@
 //             + 4 η'(γ̇)/γ̇ (D:D(δu))(D:D(v)) − ∫ δp ∇·v − ∫ q ∇·δu,
 //
 // a symmetric saddle-point matrix, factorised by MUMPS (direct_solver.h; the
-// problems here have ≲ 10⁵ unknowns). τ' is floored at 0.1η after a step the line search cut
-// (as in the scalar solver), which keeps the velocity block positive definite
-// when the material has just yielded. The step length halves until the
-// residual decreases. When every boundary carries a velocity the pressure is
-// fixed up to a constant: one pressure unknown is pinned to zero.
+// problems here have ≲ 10⁵ unknowns). Newton, its line search (the step halves
+// until the residual decreases: there is no energy to minimise in (u, p)), the
+// modified tangent after a short step and the continuation in ε are the
+// policy of newton_continuation.h, shared with the scalar solver. When every
+// boundary carries a velocity the pressure is fixed up to a constant: one
+// pressure unknown is pinned to zero.
 //
 // Parallel, as the scalar solver: the mesh is distributed (p4est) over the
 // ranks of settings.mesh_communicator, the matrix and vectors are Trilinos',
@@ -47,6 +48,7 @@
 
 #include "common/errors.h"
 #include "macro/fe/distributed_system.h"
+#include "macro/fe/newton_continuation.h"
 #include "macro/fe/refine_and_transfer.h"
 #include "macro/io/vtu_output.h"
 #include "macro/material/regularised_law.h"
@@ -56,8 +58,6 @@ namespace softglass::macro::fe {
 using namespace dealii;
 
 namespace {
-
-constexpr int kHalvings = 12;
 
 // The boundary velocity as a deal.II function of the 3 components (u, v, p).
 class BoundaryVelocity : public Function<2> {
@@ -79,16 +79,23 @@ class BoundaryVelocity : public Function<2> {
 
 class StokesFlowSolver::Implementation {
  public:
-  Implementation(const Triangulation<2>& base, const HerschelBulkley& law,
+  Implementation(const Triangulation<2>& base, std::shared_ptr<const ShearLaw> law,
                  const SolverSettings& settings)
-      : law_(law),
+      : law_(std::move(law)),
         settings_(settings),
         communicator_(settings.mesh_communicator),
         system_(communicator_, MatrixKind::symmetric_indefinite),
         triangulation_(communicator_),
         mapping_(2),
         fe_(FE_Q<2>(2), 2, FE_Q<2>(1), 1),
-        dof_handler_(triangulation_) {
+        dof_handler_(triangulation_),
+        newton_(
+            "Stokes Newton", LineSearch::residual_halving, system_, zero_constraints_,
+            [this](const RegularisedLaw& regularised, const VectorType& u, bool with_matrix,
+                   double tangent_floor) {
+              assemble_system(regularised, u, with_matrix, tangent_floor);
+            },
+            *law_, settings) {
     coarse_.copy_triangulation(base);
   }
 
@@ -99,14 +106,11 @@ class StokesFlowSolver::Implementation {
  private:
   VectorType setup_system();
   void assemble_system(const RegularisedLaw& law, const VectorType& u, bool with_matrix,
-                       bool damped);
-  unsigned solve_newton(const RegularisedLaw& law, bool allow_damping);
-  unsigned solve_with_continuation(double target, double start);
+                       double tangent_floor);
   StokesOutputs evaluate() const;
   void refine_mesh(bool uniform);
-  unsigned newton_damped_on_failure(const RegularisedLaw& law);
 
-  HerschelBulkley law_;
+  std::shared_ptr<const ShearLaw> law_;
   SolverSettings settings_;
   MPI_Comm communicator_;
   DistributedSystem system_;  // matrix, factorisation, residual of the current mesh
@@ -121,6 +125,7 @@ class StokesFlowSolver::Implementation {
   std::unique_ptr<RegularisedLaw> regularised_;
   VectorType previous_coarse_;
   double previous_rate_ = 0.0;
+  NewtonContinuation newton_;  // declared last: it refers to the members above
 };
 
 VectorType StokesFlowSolver::Implementation::setup_system() {
@@ -166,7 +171,7 @@ VectorType StokesFlowSolver::Implementation::setup_system() {
 
 void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law,
                                                        const VectorType& u, bool with_matrix,
-                                                       bool damped) {
+                                                       double tangent_floor) {
   if (with_matrix) system_.matrix = 0.0;
   system_.residual = 0.0;
   const VectorType& field = system_.readable(u);
@@ -191,11 +196,10 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
     for (const unsigned q : fe_values.quadrature_point_indices()) {
       const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
       const Viscosity eta = law.viscosity(rate);
-      const double floor = damped ? kTangentFloor : 0.0;
       // 4η'/γ̇ (D:D(δu))(D:D(v)) = 2(τ' − η) (N:D(δu))(N:D(v)), τ' floored.
       const double anisotropy =
-          rate > 0.0 ? 2.0 * std::max(eta.derivative * rate, (floor - 1.0) * eta.value) * 2.0 /
-                           (rate * rate)
+          rate > 0.0 ? 2.0 * std::max(eta.derivative * rate, (tangent_floor - 1.0) * eta.value) *
+                           2.0 / (rate * rate)
                      : 0.0;
       const double jxw = fe_values.JxW(q);
       for (unsigned k = 0; k < n; ++k) {
@@ -229,45 +233,6 @@ void StokesFlowSolver::Implementation::assemble_system(const RegularisedLaw& law
   system_.residual.compress(VectorOperation::add);
 }
 
-unsigned StokesFlowSolver::Implementation::solve_newton(const RegularisedLaw& law,
-                                                        bool allow_damping) {
-  VectorType update = system_.vector(), trial = system_.vector();
-  bool damped = false;
-  for (unsigned iteration = 1; iteration <= settings_.max_newton_iterations; ++iteration) {
-    assemble_system(law, solution_, true, damped);
-    const double r0 = system_.residual.l2_norm();
-    system_.factorise();
-    system_.solve(update, system_.residual);
-    update *= -1.0;
-    zero_constraints_.distribute(update);
-    double alpha = 1.0;
-    for (int k = 0; k < kHalvings; ++k, alpha *= 0.5) {
-      trial = solution_;
-      trial.add(alpha, update);
-      assemble_system(law, trial, false, false);
-      if (system_.residual.l2_norm() < r0) break;
-    }
-    solution_.add(alpha, update);
-    damped = allow_damping && alpha < 0.5;
-    const double scale = std::max(solution_.linfty_norm(), std::numeric_limits<double>::min());
-    if (alpha * update.linfty_norm() <= settings_.newton_tolerance * scale) return iteration;
-  }
-  throw NumericalError(
-      fmt::format("Stokes Newton did not converge in {} iterations (eps = {:.3g} 1/s, {} dofs)",
-                  settings_.max_newton_iterations, law.rate_scale(), dof_handler_.n_dofs()));
-}
-
-unsigned StokesFlowSolver::Implementation::solve_with_continuation(double target, double start) {
-  unsigned iterations = 0;
-  double eps = std::max(start, target);
-  while (true) {
-    regularised_ = make_regularised_law(settings_.regularisation, law_, eps);
-    iterations += newton_damped_on_failure(*regularised_);
-    if (eps <= target * (1.0 + 1e-12)) return iterations;
-    eps = std::max(eps / kContinuationFactor, target);
-  }
-}
-
 StokesOutputs StokesFlowSolver::Implementation::evaluate() const {
   const types::boundary_id force_id = drive_.force_boundary, pressure_id = drive_.pressure_boundary;
   const VectorType& field = system_.readable(solution_);
@@ -293,7 +258,7 @@ StokesOutputs StokesFlowSolver::Implementation::evaluate() const {
       const double tau = regularised_->stress(rate);
       dissipation += tau * rate * fe_values.JxW(q);
       area += fe_values.JxW(q);
-      if (tau > law_.yield_stress) yielded += fe_values.JxW(q);
+      if (tau > law_->yield_stress()) yielded += fe_values.JxW(q);
     }
     for (const unsigned f : cell->face_indices()) {
       if (!cell->face(f)->at_boundary()) continue;
@@ -353,26 +318,14 @@ void StokesFlowSolver::Implementation::refine_mesh(bool uniform) {
       bool above = false, below = false;
       for (const unsigned q : fe_values.quadrature_point_indices()) {
         const double rate = std::sqrt(2.0 * (strain[q] * strain[q]));
-        (regularised_->stress(rate) > law_.yield_stress ? above : below) = true;
+        (regularised_->stress(rate) > law_->yield_stress() ? above : below) = true;
       }
-      if (above && below && law_.yield_stress > 0.0) cell->set_refine_flag();
+      if (above && below && law_->yield_stress() > 0.0) cell->set_refine_flag();
     }
   }
   refine_and_transfer(triangulation_, dof_handler_, field, solution_,
                       [this] { return setup_system(); });
   constraints_.distribute(solution_);
-}
-
-// Plain Newton from the current solution; if it fails, damped Newton from the
-// same start (the failed attempt's iterations are counted as the maximum).
-unsigned StokesFlowSolver::Implementation::newton_damped_on_failure(const RegularisedLaw& law) {
-  const VectorType start = solution_;
-  try {
-    return solve_newton(law, false);
-  } catch (const NumericalError&) {
-    solution_ = start;
-    return settings_.max_newton_iterations + solve_newton(law, true);
-  }
 }
 
 StokesResult StokesFlowSolver::Implementation::run(const StokesDrive& drive) {
@@ -395,10 +348,11 @@ StokesResult StokesFlowSolver::Implementation::run(const StokesDrive& drive) {
   }
   constraints_.distribute(solution_);
   // Nested iteration: the continuation on the coarse mesh down to 10ε and ε.
-  result.iterations += solve_with_continuation(kContinuationFactor * target,
-                                               warm ? kContinuationFactor * target : rate_c);
+  result.iterations +=
+      newton_.continuation(kContinuationFactor * target,
+                           warm ? kContinuationFactor * target : rate_c, solution_, regularised_);
   result.at_ten_epsilon = evaluate();
-  result.iterations += solve_with_continuation(target, target);
+  result.iterations += newton_.continuation(target, target, solution_, regularised_);
   result.first_mesh = evaluate();
   previous_coarse_ = solution_;
   previous_rate_ = rate_c;
@@ -408,11 +362,11 @@ StokesResult StokesFlowSolver::Implementation::run(const StokesDrive& drive) {
   // over the last refinement.
   result.coarse = result.first_mesh;
   refine_mesh(true);
-  result.iterations += newton_damped_on_failure(*regularised_);
+  result.iterations += newton_.solve_damped_on_failure(*regularised_, solution_);
   for (unsigned cycle = 0; cycle < settings_.adaptive_cycles; ++cycle) {
     result.coarse = evaluate();
     refine_mesh(false);
-    result.iterations += newton_damped_on_failure(*regularised_);
+    result.iterations += newton_.solve_damped_on_failure(*regularised_, solution_);
   }
   result.value = evaluate();
   result.cells = triangulation_.n_global_active_cells();
@@ -453,7 +407,7 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
       const double g = std::sqrt(2.0 * (strain[q] * strain[q])), t = regularised_->stress(g);
       rate(c) += g / quadrature.size();
       tau(c) += t / quadrature.size();
-      yielded(c) += t > law_.yield_stress ? 1.0 / quadrature.size() : 0.0;
+      yielded(c) += t > law_->yield_stress() ? 1.0 / quadrature.size() : 0.0;
     }
   }
   std::vector<std::string> names{"velocity", "velocity", "pressure"};
@@ -471,9 +425,10 @@ void StokesFlowSolver::Implementation::output_results(const std::filesystem::pat
   io::write_vtu(data_out, file, communicator_);
 }
 
-StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh, const HerschelBulkley& law,
+StokesFlowSolver::StokesFlowSolver(const Triangulation<2>& base_mesh,
+                                   std::shared_ptr<const ShearLaw> law,
                                    const SolverSettings& settings)
-    : impl_(std::make_unique<Implementation>(base_mesh, law, settings)) {}
+    : impl_(std::make_unique<Implementation>(base_mesh, std::move(law), settings)) {}
 
 StokesFlowSolver::~StokesFlowSolver() = default;
 

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "macro/fe/solver_settings.h"
-#include "macro/material/herschel_bulkley.h"
+#include "macro/material/shear_law.h"
 
 namespace softglass::macro::fe {
 
@@ -74,7 +74,7 @@ struct StokesResult {
 
 class StokesFlowSolver {
  public:
-  StokesFlowSolver(const dealii::Triangulation<2>& base_mesh, const HerschelBulkley& law,
+  StokesFlowSolver(const dealii::Triangulation<2>& base_mesh, std::shared_ptr<const ShearLaw> law,
                    const SolverSettings& settings);
   ~StokesFlowSolver();
 

@@ -14,24 +14,27 @@ namespace {
 
 class BercovierEngelman final : public RegularisedLaw {
  public:
-  BercovierEngelman(const HerschelBulkley& law, double rate_scale)
-      : RegularisedLaw(law, rate_scale) {}
+  BercovierEngelman(const ShearLaw& law, double rate_scale) : RegularisedLaw(law, rate_scale) {}
 
   std::string name() const override { return "bercovier-engelman"; }
 
  protected:
   Viscosity yield_term(double rate) const override {
     const double s = rate * rate + rate_scale() * rate_scale();
-    const double value = law().yield_stress / std::sqrt(s);
+    const double value = law().yield_stress() / std::sqrt(s);
     return {.value = value, .derivative = -value * rate / s};
   }
 };
 
+std::unique_ptr<RegularisedLaw> make(const RegularisationSpec& spec) {
+  return std::make_unique<BercovierEngelman>(spec.law, spec.rate_scale);
+}
+
 }  // namespace
 
-std::unique_ptr<RegularisedLaw> make_bercovier_engelman(const HerschelBulkley& law,
-                                                        double rate_scale) {
-  return std::make_unique<BercovierEngelman>(law, rate_scale);
+RegularisationEntry bercovier_engelman_regularisation() {
+  return {
+      "bercovier-engelman", "tau_y / sqrt(rate^2 + eps^2) (Bercovier & Engelman 1980)", {}, make};
 }
 
 }  // namespace softglass::macro

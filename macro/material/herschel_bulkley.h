@@ -18,9 +18,16 @@
 // single-valued pieces: the stress of a flowing material τ(γ̇), γ̇ > 0, and the
 // rate at a given stress γ̇(τ), τ ≥ 0 (the inverse flow curve, zero below τ_y),
 // which every exact solution of a rheometer or channel integrates.
+//
+// The finite-element solvers see it through the interface of shear_law.h
+// (shear_law() below); the closed forms of exact/ use it directly.
 #pragma once
 
+#include <memory>
+
 namespace softglass::macro {
+
+class ShearLaw;
 
 struct HerschelBulkley {
   double yield_stress = 0.0;  ///< τ_y [Pa], ≥ 0
@@ -51,6 +58,9 @@ struct HerschelBulkley {
   /// accuracy numerics::kRootTolerance). r = 0 gives the inverse flow curve γ̇(χ).
   double proximal_rate(double trial_stress, double penalty) const;
 };
+
+/// The law as the finite-element solvers see it (shear_law.h).
+std::shared_ptr<const ShearLaw> shear_law(const HerschelBulkley& law);
 
 /// τ = τ_y + μ_p γ̇.
 HerschelBulkley bingham(double yield_stress, double plastic_viscosity);

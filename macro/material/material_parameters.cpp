@@ -9,8 +9,8 @@
 #include <sstream>
 #include <vector>
 
+#include "common/deal_ii_message.h"
 #include "common/errors.h"
-#include "macro/io/deal_ii_errors.h"
 
 namespace softglass::macro {
 
@@ -95,8 +95,8 @@ Material read_material(dealii::ParameterHandler& prm) {
       if (name == fmt::format("{}.{}", kSubsection, required)) missing.push_back(required);
     }
   }
-  require(missing.empty(), fmt::format("material: required entries not set: '{}'",
-                                       fmt::join(missing, "', '")));
+  require(missing.empty(),
+          fmt::format("material: required entries not set: '{}'", fmt::join(missing, "', '")));
   Material material;
   prm.enter_subsection(kSubsection);
   try {
@@ -109,7 +109,7 @@ Material read_material(dealii::ParameterHandler& prm) {
   } catch (const dealii::ExceptionBase& error) {
     // A value the pattern accepts but the conversion cannot represent (1e-400).
     prm.leave_subsection();
-    throw InputError(fmt::format("material: {}", io::one_line(error)));
+    throw InputError(fmt::format("material: {}", deal_ii_message(error.what())));
   }
   prm.leave_subsection();
   validate(material);
@@ -123,7 +123,7 @@ Material parse_material(const std::string& text, const std::string& source) {
   try {
     prm.parse_input(input, source, "", false);
   } catch (const dealii::ExceptionBase& error) {
-    throw InputError(io::one_line(error));
+    throw InputError(deal_ii_message(error.what()));
   }
   return read_material(prm);
 }

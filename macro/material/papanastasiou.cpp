@@ -22,7 +22,9 @@ namespace {
 constexpr double kSeriesBelow = 0.5;
 constexpr int kSeriesTerms = 18;
 
-double g(double x) { return x == 0.0 ? 1.0 : -std::expm1(-x) / x; }
+double g(double x) {
+  return x == 0.0 ? 1.0 : -std::expm1(-x) / x;
+}
 
 double g_prime(double x) {
   if (x >= kSeriesBelow) return (std::expm1(-x) + x * std::exp(-x)) / (x * x);
@@ -38,21 +40,25 @@ double g_prime(double x) {
 
 class Papanastasiou final : public RegularisedLaw {
  public:
-  Papanastasiou(const HerschelBulkley& law, double rate_scale) : RegularisedLaw(law, rate_scale) {}
+  Papanastasiou(const ShearLaw& law, double rate_scale) : RegularisedLaw(law, rate_scale) {}
 
   std::string name() const override { return "papanastasiou"; }
 
  protected:
   Viscosity yield_term(double rate) const override {
-    const double m = 1.0 / rate_scale(), x = m * rate, tau_y = law().yield_stress;
+    const double m = 1.0 / rate_scale(), x = m * rate, tau_y = law().yield_stress();
     return {.value = tau_y * m * g(x), .derivative = tau_y * m * m * g_prime(x)};
   }
 };
 
+std::unique_ptr<RegularisedLaw> make(const RegularisationSpec& spec) {
+  return std::make_unique<Papanastasiou>(spec.law, spec.rate_scale);
+}
+
 }  // namespace
 
-std::unique_ptr<RegularisedLaw> make_papanastasiou(const HerschelBulkley& law, double rate_scale) {
-  return std::make_unique<Papanastasiou>(law, rate_scale);
+RegularisationEntry papanastasiou_regularisation() {
+  return {"papanastasiou", "tau_y (1 - exp(-rate/eps))/rate (Papanastasiou 1987)", {}, make};
 }
 
 }  // namespace softglass::macro

@@ -1,4 +1,5 @@
-// Regularised Herschel–Bulkley viscosities, for the regularised solvers.
+// Regularised viscosities, for the regularised solvers: the yield term of a
+// constitutive law (shear_law.h) made smooth, one regularisation per file.
 //
 // The viscosity η(γ̇) = τ_y/γ̇ + K γ̇^{n−1} is infinite wherever the material is
 // rigid, so the flow problem −∇·(2η(γ̇)D) + ∇p = f cannot be solved as it
@@ -14,9 +15,9 @@
 //     papanastasiou        τ_y (1 − e^{−mγ̇})/γ̇,   m = 1/ε     (Papanastasiou 1987)
 //     bercovier-engelman   τ_y / √(γ̇² + ε²)                  (Bercovier & Engelman 1980)
 //
-// — plus one power-law term shared by both. K γ̇^{n−1} is unbounded at rest for
-// n < 1 (and vanishes there for n > 1, leaving the problem singular), so it is
-// regularised with the same ε; for n = 1 the term is exactly K. At γ̇ = 0:
+// — plus the law's own viscous part regularised at the same ε
+// (ShearLaw::regularised_flow_viscosity; Herschel–Bulkley's power-law term
+// K (γ̇² + ε²)^{(n−1)/2}, exactly K for n = 1). At γ̇ = 0:
 // η_ε = τ_y m + K ε^{n−1} (Papanastasiou), τ_y/ε + K ε^{n−1} (Bercovier–Engelman).
 //
 // Accuracy. At fixed γ̇ > 0 the Bercovier–Engelman error is O(ε²)
@@ -33,22 +34,20 @@
 //       ∂τ/∂D = 2[η (𝕀 − N⊗N) + τ' N⊗N],  N = √2 D/γ̇ (N:N = 1).
 // Both are positive definite. At γ̇ = 0 the direction n is undefined, but there
 // γ̇ dη/dγ̇ = 0 and τ' = η, so the tangent is η I (2η𝕀): take n = 0 (N = 0).
+//
+// The regularisations are registered (common/registry.h) in
+// registered_regularisations.h, one line each; the parameter files' allowed
+// values of `regularisation` are the registry's names.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <string_view>
-#include <vector>
 
-#include "macro/material/herschel_bulkley.h"
+#include "common/registry.h"
+#include "macro/material/shear_law.h"
 
 namespace softglass::macro {
-
-/// η and dη/dγ̇ at one shear rate.
-struct Viscosity {
-  double value = 0.0;       ///< η [Pa s]
-  double derivative = 0.0;  ///< dη/dγ̇ [Pa s²]
-};
 
 class RegularisedLaw {
  public:
@@ -71,27 +70,36 @@ class RegularisedLaw {
   double rate(double stress) const;
 
   /// The law being regularised.
-  const HerschelBulkley& law() const { return law_; }
+  const ShearLaw& law() const { return law_; }
   /// ε [1/s]: the rate below which the material creeps instead of resting.
   double rate_scale() const { return rate_scale_; }
 
  protected:
-  RegularisedLaw(const HerschelBulkley& law, double rate_scale);
+  /// `law` must outlive the regularised law.
+  RegularisedLaw(const ShearLaw& law, double rate_scale);
 
   /// The regularised yield term η_y,ε(γ̇) ≈ τ_y/γ̇ and its derivative.
   virtual Viscosity yield_term(double rate) const = 0;
 
  private:
-  HerschelBulkley law_;
+  const ShearLaw& law_;
   double rate_scale_;
 };
 
-/// The regularisation called `name` of `law` with rate scale ε = `rate_scale`
-/// (for Papanastasiou m = 1/ε). InputError for an unknown name or ε not > 0.
-std::unique_ptr<RegularisedLaw> make_regularised_law(std::string_view name,
-                                                     const HerschelBulkley& law, double rate_scale);
+/// What a regularisation is made from: the law and ε [1/s].
+struct RegularisationSpec {
+  const ShearLaw& law;
+  double rate_scale;
+};
+using RegularisationEntry = ComponentEntry<RegularisedLaw, RegularisationSpec>;
 
-/// Names accepted by make_regularised_law.
-std::vector<std::string> regularisation_names();
+/// Every regularisation (registered_regularisations.h).
+const Registry<RegularisationEntry>& regularisations();
+
+/// The regularisation called `name` of `law` (which must outlive it) with rate
+/// scale ε = `rate_scale` (for Papanastasiou m = 1/ε). InputError for an
+/// unknown name or ε not > 0.
+std::unique_ptr<RegularisedLaw> make_regularised_law(std::string_view name, const ShearLaw& law,
+                                                     double rate_scale);
 
 }  // namespace softglass::macro

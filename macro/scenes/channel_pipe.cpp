@@ -22,11 +22,14 @@ namespace softglass::macro {
 using dealii::ParameterHandler;
 namespace Patterns = dealii::Patterns;
 
-void declare_channel_and_pipe(ParameterHandler& prm) {
+void declare_channel(ParameterHandler& prm) {
   prm.enter_subsection("channel");
   prm.declare_entry("half height", "0.005", Patterns::Double(), "H [m], > 0: walls at y = +-H");
   prm.declare_entry("cells", "8", Patterns::Integer(1, 10000), "cells across the half channel");
   prm.leave_subsection();
+}
+
+void declare_pipe(ParameterHandler& prm) {
   prm.enter_subsection("pipe");
   prm.declare_entry("radius", "0.005", Patterns::Double(), "R [m], > 0");
   prm.declare_entry("cells", "8", Patterns::Integer(1, 10000), "cells along the radius");
@@ -83,6 +86,22 @@ std::unique_ptr<Scene> make_pipe(ParameterHandler& prm, const Material& material
     return exact::flow_rate(law, exact::Pipe{.radius = R, .pressure_gradient = G});
   };
   return make_reduced_scene(mesh, std::move(spec), law, settings);
+}
+
+SceneEntry channel_scene() {
+  return {{"channel",
+           "pressure-driven flow between two plane walls",
+           {},
+           [](const SceneSpec& s) { return make_channel(s.prm, s.material, s.settings); }},
+          declare_channel};
+}
+
+SceneEntry pipe_scene() {
+  return {{"pipe",
+           "pressure-driven flow along a circular pipe",
+           {},
+           [](const SceneSpec& s) { return make_pipe(s.prm, s.material, s.settings); }},
+          declare_pipe};
 }
 
 }  // namespace softglass::macro

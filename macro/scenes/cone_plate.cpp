@@ -116,4 +116,12 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 
+SceneEntry cone_plate_scene() {
+  return {{"cone-plate",
+           "cone and plate: the truncated cone turns above the fixed plate",
+           {},
+           [](const SceneSpec& s) { return make_cone_plate(s.prm, s.material, s.settings); }},
+          declare_cone_plate};
+}
+
 }  // namespace softglass::macro

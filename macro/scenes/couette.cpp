@@ -99,4 +99,12 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 
+SceneEntry couette_scene() {
+  return {{"couette",
+           "Couette cell: the bob turns inside the fixed cup",
+           {},
+           [](const SceneSpec& s) { return make_couette(s.prm, s.material, s.settings); }},
+          declare_couette};
+}
+
 }  // namespace softglass::macro

@@ -84,4 +84,13 @@ std::unique_ptr<Scene> make_duct(ParameterHandler& prm, const Material& material
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 
+SceneEntry duct_scene() {
+  return {
+      {"duct",
+       "pressure-driven flow along a duct of any section",
+       {},
+       [](const SceneSpec& s) { return make_duct(s.prm, s.material, s.settings, s.directory); }},
+      declare_duct};
+}
+
 }  // namespace softglass::macro

@@ -54,14 +54,23 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Materia
   const NormalStressLaw n1 = material.first_normal_stress_difference;
   const NormalStressLaw n2 = material.second_normal_stress_difference;
   if (!n1.vanishes() || !n2.vanishes()) {
-    spec.normal_force = {.id = 2,
-                         .integrand = [n1, n2](double rate) { return 0.5 * (n1(rate) - n2(rate)); }};
+    spec.normal_force = {
+        .id = 2, .integrand = [n1, n2](double rate) { return 0.5 * (n1(rate) - n2(rate)); }};
   }
   // The rim rate ΩR/h and the Newtonian (apparent) rim stress 2M/(πR³).
-  spec.instrument = InstrumentConstants{.strain_constant = R / h,
-                                        .stress_constant = 2.0 / (std::numbers::pi * R * R * R),
-                                        .convention = "plates: rim rate Omega R/h, apparent rim stress 2M/(pi R^3)"};
+  spec.instrument = InstrumentConstants{
+      .strain_constant = R / h,
+      .stress_constant = 2.0 / (std::numbers::pi * R * R * R),
+      .convention = "plates: rim rate Omega R/h, apparent rim stress 2M/(pi R^3)"};
   return make_reduced_scene(mesh, std::move(spec), law, settings);
+}
+
+SceneEntry parallel_plates_scene() {
+  return {{"parallel-plates",
+           "parallel plates: the upper plate turns above the fixed one",
+           {},
+           [](const SceneSpec& s) { return make_parallel_plates(s.prm, s.material, s.settings); }},
+          declare_parallel_plates};
 }
 
 }  // namespace softglass::macro

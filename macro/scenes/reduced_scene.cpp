@@ -1,8 +1,5 @@
 #include "macro/scenes/reduced_scene.h"
 
-#include <cmath>
-#include <limits>
-
 namespace softglass::macro {
 
 namespace {
@@ -12,7 +9,8 @@ class ReducedScene final : public Scene {
  public:
   ReducedScene(const dealii::Triangulation<dim>& mesh, ReducedSceneSpec<dim> spec,
                const HerschelBulkley& law, const fe::SolverSettings& settings)
-      : spec_(std::move(spec)), solver_(mesh, spec_.mapping_degree, spec_.weights, law, settings) {}
+      : spec_(std::move(spec)),
+        solver_(mesh, spec_.mapping_degree, spec_.weights, shear_law(law), settings) {}
 
   std::string description() const override { return spec_.description; }
 
@@ -43,28 +41,28 @@ class ReducedScene final : public Scene {
     return c;
   }
 
-  std::vector<double> solve(double drive) override {
+  SceneResult solve(double drive) override {
     const fe::PointResult r = solver_.run(spec_.drive(drive), spec_.normal_force);
     const bool rotation = spec_.kind == DriveKind::rotation;
     // Torque from the dissipation: T Ω = ∫ τ γ̇ dV (the discrete reaction of
     // the rotor with the test function ω_h/Ω, which is 1 there and 0 on the
     // stator); flow rate c∫ρu directly.
-    const auto primary = [&](const fe::Outputs& o) {
+    const auto main = [&](const fe::Outputs& o) {
       return rotation ? o.dissipation / drive : o.flow;
     };
-    const double value = primary(r.value);
-    std::vector<double> row{value, primary(r.discretisation_error),
-                            primary(r.regularisation_error)};
-    if (spec_.reference) {
-      const double ideal = spec_.reference(drive);
-      row.push_back(ideal);
-      row.push_back(ideal != 0.0 ? value / ideal - 1.0 : std::numeric_limits<double>::quiet_NaN());
-    }
-    if (rotation && spec_.normal_force.integrand) row.push_back(r.value.boundary);
-    if (!rotation) row.push_back(r.value.max_value);
-    row.insert(row.end(), {r.value.yielded_fraction, double(r.cells), double(r.dofs),
-                           double(r.iterations), r.wall_time});
-    return row;
+    SceneResult result{.quantity = rotation ? MainQuantity::torque : MainQuantity::flow_rate,
+                       .main = {.value = main(r.value),
+                                .discretisation_error = main(r.discretisation_error),
+                                .regularisation_error = main(r.regularisation_error)},
+                       .yielded_fraction = r.value.yielded_fraction,
+                       .cost = {.cells = r.cells,
+                                .dofs = r.dofs,
+                                .iterations = r.iterations,
+                                .wall_time = r.wall_time}};
+    if (spec_.reference) result.ideal_geometry = spec_.reference(drive);
+    if (rotation && spec_.normal_force.integrand) result.normal_force = r.value.boundary;
+    if (!rotation) result.max_velocity = r.value.max_value;
+    return result;
   }
 
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }

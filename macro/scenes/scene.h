@@ -1,4 +1,4 @@
-// A scene: one geometry of macro.md with its reduced formulation, solved at a
+// A scene: one geometry of docs/macro.md with its reduced formulation, solved at a
 // list of operating points (rotation rates or pressure gradients), each giving
 // one row of the results table.
 //
@@ -13,20 +13,17 @@
 #include <string>
 #include <vector>
 
+#include "common/registry.h"
+#include "common/unit_table.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
+#include "macro/scenes/scene_result.h"
 
 namespace dealii {
 class ParameterHandler;
 }
 
 namespace softglass::macro {
-
-/// A CSV column: name and unit, written "name [unit]".
-struct Column {
-  std::string name;
-  std::string unit;
-};
 
 /// How a rotational rheometer reports what it measures (angular velocity Ω,
 /// torque M) as a shear rate and a stress: γ̇ = strain_constant · Ω and
@@ -45,10 +42,10 @@ class Scene {
   virtual std::string description() const = 0;
   /// The operating-point column (rotation_rate [rad/s] or pressure_gradient [Pa/m]).
   virtual Column drive() const = 0;
-  /// The result columns of a row.
+  /// The result columns of a row: the order of SceneResult::values().
   virtual std::vector<Column> columns() const = 0;
   /// Solves at one operating point (warm-started from the previous one).
-  virtual std::vector<double> solve(double drive) = 0;
+  virtual SceneResult solve(double drive) = 0;
   /// The fields of the last solved point, for ParaView.
   virtual void write_vtu(const std::filesystem::path& file) const = 0;
   /// Rotational rheometers: the instrument's conversions (none for channels,
@@ -56,8 +53,25 @@ class Scene {
   virtual std::optional<InstrumentConstants> instrument() const { return std::nullopt; }
 };
 
-/// Names accepted by `set scene`.
-std::vector<std::string> scene_names();
+/// What a scene is made from: the scene file (its subsection is the scene's
+/// name), the material, the solver settings, and the folder relative file
+/// names (meshes) are taken from.
+struct SceneSpec {
+  dealii::ParameterHandler& prm;
+  const Material& material;
+  const fe::SolverSettings& settings;
+  const std::filesystem::path& directory;
+};
+
+/// A registered scene (common/registry.h): name, summary, factory, and the
+/// declaration of its subsection (its entries are deal.II parameters with
+/// their own patterns, so it declares no registry coefficients).
+struct SceneEntry : ComponentEntry<Scene, SceneSpec> {
+  void (*declare)(dealii::ParameterHandler& prm) = nullptr;
+};
+
+/// Every scene (registered_scenes.h); `set scene` accepts the registry's names.
+const Registry<SceneEntry>& scenes();
 
 /// Declares `scene` and the subsection of every scene.
 void declare_scenes(dealii::ParameterHandler& prm);

@@ -1,7 +1,7 @@
 // The scenes that need the full Stokes problem (fe/stokes_flow_solver.h).
 //
 // cavity:   the lid-driven square cavity of side L, lid speed U (the drive):
-//           the Bingham benchmark of macro.md (Bi = τ_y L/(μU)). Reports the
+//           the Bingham benchmark of docs/macro.md (Bi = τ_y L/(μU)). Reports the
 //           minimum of u_x on the vertical centreline and where it is.
 // obstacle: a channel of height 0.41 D/0.1 with a cylinder of diameter D
 //           (deal.II's channel_with_cylinder, the DFG benchmark's geometry,
@@ -14,7 +14,7 @@
 //           yielded fraction (dead zones in the corners).
 // cylinder: a cylinder of diameter D in a square box of side `box` D whose
 //           walls move at U (the drive): the unbounded-flow benchmark of
-//           macro.md (Tokpavi et al. 2008) as the box grows. Reports the drag
+//           docs/macro.md (Tokpavi et al. 2008) as the box grows. Reports the drag
 //           per unit depth and C_D = F/(μU) with μ = K (Bingham).
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/grid_generator.h>
@@ -59,22 +59,25 @@ std::vector<Column> report_columns(const Column& value, const std::vector<Column
   return c;
 }
 
-std::vector<double> report_row(const fe::StokesResult& r, double value, double discretisation,
-                               double regularisation, const std::vector<double>& own) {
-  std::vector<double> row = {value, discretisation, regularisation};
-  row.insert(row.end(), own.begin(), own.end());
-  row.insert(row.end(), {r.value.yielded_fraction, double(r.cells), double(r.dofs),
-                         double(r.iterations), r.wall_time});
-  return row;
+SceneResult report(const fe::StokesResult& r, const Estimate& main,
+                   const std::vector<double>& own) {
+  return {
+      .quantity = MainQuantity::own,
+      .main = main,
+      .own = own,
+      .yielded_fraction = r.value.yielded_fraction,
+      .cost = {
+          .cells = r.cells, .dofs = r.dofs, .iterations = r.iterations, .wall_time = r.wall_time}};
 }
 
-// The same for a quantity of the outputs: its error estimates are its change
-// over the last refinement and (value at 10ε − value at ε)/9 on the first mesh.
-std::vector<double> report_row(const fe::StokesResult& r,
-                               const std::function<double(const fe::StokesOutputs&)>& quantity,
-                               const std::vector<double>& own) {
-  return report_row(r, quantity(r.value), std::abs(quantity(r.value) - quantity(r.coarse)),
-                    std::abs(quantity(r.first_mesh) - quantity(r.at_ten_epsilon)) / 9.0, own);
+// A quantity of the outputs: its error estimates are its change over the last
+// refinement and (value at 10ε − value at ε)/9 on the first mesh.
+Estimate estimate(const fe::StokesResult& r,
+                  const std::function<double(const fe::StokesOutputs&)>& quantity) {
+  return {
+      .value = quantity(r.value),
+      .discretisation_error = std::abs(quantity(r.value) - quantity(r.coarse)),
+      .regularisation_error = std::abs(quantity(r.first_mesh) - quantity(r.at_ten_epsilon)) / 9.0};
 }
 
 double mean_pressure(const fe::StokesOutputs& o) {
@@ -88,7 +91,9 @@ class Cavity final : public Scene {
  public:
   Cavity(double side, unsigned cells, const HerschelBulkley& law,
          const fe::SolverSettings& settings)
-      : side_(side), centreline_(centreline(side)), solver_(mesh(side, cells), law, settings) {}
+      : side_(side),
+        centreline_(centreline(side)),
+        solver_(mesh(side, cells), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format("lid-driven cavity, side {} m: Stokes (u, p), Taylor-Hood Q2-Q1", side_);
@@ -97,7 +102,7 @@ class Cavity final : public Scene {
   std::vector<Column> columns() const override {
     return report_columns({"min_centreline_u", "m/s"}, {{"y_at_min_over_side", "1"}});
   }
-  std::vector<double> solve(double lid) override {
+  SceneResult solve(double lid) override {
     // No slip on walls (ids 0, 1, 2) after the lid (3), so the top corners
     // belong to the walls.
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
@@ -108,10 +113,7 @@ class Cavity final : public Scene {
     // The minimum on each mesh: its change over the last refinement and
     // (at 10ε − at ε)/9 on the first mesh are its error estimates.
     const auto u_min = [this](const fe::StokesOutputs& o) { return centreline_minimum(o).first; };
-    const auto [value, y_min] = centreline_minimum(r.value);
-    return report_row(r, value, std::abs(value - u_min(r.coarse)),
-                      std::abs(u_min(r.first_mesh) - u_min(r.at_ten_epsilon)) / 9.0,
-                      {y_min / side_});
+    return report(r, estimate(r, u_min), {centreline_minimum(r.value).second / side_});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -149,7 +151,9 @@ class Cavity final : public Scene {
 class Obstacle final : public Scene {
  public:
   Obstacle(double diameter, const HerschelBulkley& law, const fe::SolverSettings& settings)
-      : diameter_(diameter), height_(4.1 * diameter), solver_(mesh(diameter), law, settings) {}
+      : diameter_(diameter),
+        height_(4.1 * diameter),
+        solver_(mesh(diameter), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format(
@@ -162,7 +166,7 @@ class Obstacle final : public Scene {
     return report_columns({"pressure_drop", "Pa"},
                           {{"drag_per_depth", "N/m"}, {"lift_per_depth", "N/m"}});
   }
-  std::vector<double> solve(double speed) override {
+  SceneResult solve(double speed) override {
     const double H = height_;
     // Parabolic inflow with mean speed U: 6U y(H − y)/H².
     const auto inflow = [speed, H](const Point<2>& p) {
@@ -174,7 +178,7 @@ class Obstacle final : public Scene {
                                 .characteristic_rate = 6.0 * speed / H,
                                 .force_boundary = 2,
                                 .pressure_boundary = 0});
-    return report_row(r, mean_pressure, {r.value.force[0], r.value.force[1]});
+    return report(r, estimate(r, mean_pressure), {r.value.force[0], r.value.force[1]});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -204,7 +208,7 @@ class Cylinder final : public Scene {
       : diameter_(diameter),
         box_(box),
         viscosity_(law.consistency),
-        solver_(mesh(diameter, box), law, settings) {}
+        solver_(mesh(diameter, box), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format(
@@ -222,7 +226,7 @@ class Cylinder final : public Scene {
   // F = ∫ τ:D dA / U, which converges at twice the rate of the surface
   // traction ∫ σn ds (like the torques of the rotational scenes). The traction
   // is reported beside it: their difference is a check of both.
-  std::vector<double> solve(double speed) override {
+  SceneResult solve(double speed) override {
     const auto uniform = [speed](const Point<2>&) { return Tensor<1, 2>({speed, 0.0}); };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto r = solver_.run(
@@ -230,7 +234,8 @@ class Cylinder final : public Scene {
          .characteristic_rate = speed / diameter_,
          .force_boundary = 4});
     const auto power_drag = [speed](const fe::StokesOutputs& o) { return o.dissipation / speed; };
-    return report_row(r, power_drag, {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
+    return report(r, estimate(r, power_drag),
+                  {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -255,7 +260,7 @@ class Contraction final : public Scene {
  public:
   Contraction(double height, unsigned ratio, const HerschelBulkley& law,
               const fe::SolverSettings& settings)
-      : h_(height), ratio_(ratio), solver_(mesh(height, ratio), law, settings) {}
+      : h_(height), ratio_(ratio), solver_(mesh(height, ratio), shear_law(law), settings) {}
 
   std::string description() const override {
     return fmt::format(
@@ -267,7 +272,7 @@ class Contraction final : public Scene {
   std::vector<Column> columns() const override {
     return report_columns({"pressure_drop", "Pa"}, {{"flow_rate_per_depth", "m^2/s"}});
   }
-  std::vector<double> solve(double speed) override {
+  SceneResult solve(double speed) override {
     const double H = ratio_ * h_;
     const auto inflow = [speed, H](const Point<2>& p) {
       return Tensor<1, 2>({6.0 * speed * p[1] * (H - p[1]) / (H * H), 0.0});
@@ -278,7 +283,7 @@ class Contraction final : public Scene {
                                 .straight_outflow = {1},
                                 .characteristic_rate = 6.0 * ratio_ * speed / h_,
                                 .pressure_boundary = 0});
-    return report_row(r, mean_pressure, {speed * H});
+    return report(r, estimate(r, mean_pressure), {speed * H});
   }
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
@@ -312,19 +317,28 @@ class Contraction final : public Scene {
 
 }  // namespace
 
-void declare_stokes_scenes(ParameterHandler& prm) {
+void declare_cavity(ParameterHandler& prm) {
   prm.enter_subsection("cavity");
   prm.declare_entry("side", "1", Patterns::Double(), "L [m], > 0");
   prm.declare_entry("cells", "16", Patterns::Integer(2, 1000), "cells per side (coarse mesh)");
   prm.leave_subsection();
+}
+
+void declare_obstacle(ParameterHandler& prm) {
   prm.enter_subsection("obstacle");
   prm.declare_entry("diameter", "0.01", Patterns::Double(),
                     "D [m], > 0: channel 2.2 D/0.1 long and 0.41 D/0.1 high");
   prm.leave_subsection();
+}
+
+void declare_contraction(ParameterHandler& prm) {
   prm.enter_subsection("contraction");
   prm.declare_entry("height", "0.005", Patterns::Double(), "h [m], the downstream height, > 0");
   prm.declare_entry("ratio", "4", Patterns::Integer(2, 20), "upstream height / h");
   prm.leave_subsection();
+}
+
+void declare_cylinder(ParameterHandler& prm) {
   prm.enter_subsection("cylinder");
   prm.declare_entry("diameter", "0.01", Patterns::Double(), "D [m], > 0");
   prm.declare_entry("box", "40", Patterns::Double(), "side of the square box in diameters, > 4");
@@ -364,6 +378,38 @@ std::unique_ptr<Scene> make_obstacle(ParameterHandler& prm, const Material& mate
   const double d = entries::positive(prm, "obstacle", "diameter", "m");
   prm.leave_subsection();
   return std::make_unique<Obstacle>(d, material.shear, settings);
+}
+
+SceneEntry cavity_scene() {
+  return {{"cavity",
+           "lid-driven square cavity (Stokes)",
+           {},
+           [](const SceneSpec& s) { return make_cavity(s.prm, s.material, s.settings); }},
+          declare_cavity};
+}
+
+SceneEntry obstacle_scene() {
+  return {{"obstacle",
+           "channel flow past a cylinder (Stokes, DFG geometry)",
+           {},
+           [](const SceneSpec& s) { return make_obstacle(s.prm, s.material, s.settings); }},
+          declare_obstacle};
+}
+
+SceneEntry contraction_scene() {
+  return {{"contraction",
+           "planar abrupt contraction (Stokes)",
+           {},
+           [](const SceneSpec& s) { return make_contraction(s.prm, s.material, s.settings); }},
+          declare_contraction};
+}
+
+SceneEntry cylinder_scene() {
+  return {{"cylinder",
+           "a cylinder moving through a large box (Stokes)",
+           {},
+           [](const SceneSpec& s) { return make_cylinder(s.prm, s.material, s.settings); }},
+          declare_cylinder};
 }
 
 }  // namespace softglass::macro

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/deal_ii_message.h"
 #include "common/errors.h"
 
 namespace softglass::micro {
@@ -277,26 +278,6 @@ std::filesystem::path beside(const std::filesystem::path& prm_file, const std::s
   return path.is_absolute() ? path : prm_file.parent_path() / path;
 }
 
-// deal.II's exception text carries source locations; keep the user's part.
-std::string clean_message(const std::string& what) {
-  const auto pos = what.find("Additional information:");
-  std::string text = pos == std::string::npos ? what : what.substr(pos + 23);
-  const auto stack = text.find("Stacktrace:");
-  if (stack != std::string::npos) text = text.substr(0, stack);
-  std::string collapsed;
-  bool space = false;
-  for (char c : text) {
-    const bool blank = c == '\n' || c == ' ' || c == '\t';
-    if (blank && !collapsed.empty()) space = true;
-    if (!blank) {
-      if (space) collapsed += ' ';
-      collapsed += c;
-      space = false;
-    }
-  }
-  return collapsed;
-}
-
 // `text` (printed by ParameterHandler) without its top-level subsection `name`.
 std::string without_subsection(const std::string& text, const std::string& name) {
   std::istringstream in(text);
@@ -374,7 +355,7 @@ void parse(ParameterHandler& prm, const std::filesystem::path& file) {
     prm.parse_input(file.string(), "", false, false);
   } catch (const std::exception& error) {
     throw InputError(
-        fmt::format("parameter file '{}': {}", file.string(), clean_message(error.what())));
+        fmt::format("parameter file '{}': {}", file.string(), deal_ii_message(error.what())));
   }
 }
 
@@ -493,7 +474,7 @@ MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSett
     prm.leave_subsection();
   } catch (const std::exception& error) {
     throw InputError(fmt::format("sweep case phi = {}, gamma~ = {}: {}", c.volume_fraction,
-                                 c.gamma_tilde, clean_message(error.what())));
+                                 c.gamma_tilde, deal_ii_message(error.what())));
   }
   MicroParameters p = convert(prm, e, std::filesystem::path());
   p.contact_law.coefficients = base.contact_law.coefficients;  // files already resolved

@@ -8,9 +8,11 @@
 #include <string>
 
 #include "tests/common/test_files.h"
+#include "tests/common/text_checks.h"
 
 namespace softglass::bridge::testing {
 
+using softglass::testing::expect_contains;
 using softglass::testing::read_text;
 using softglass::testing::TemporaryDirectory;
 using softglass::testing::write_text;
@@ -18,12 +20,6 @@ using softglass::testing::write_text;
 /// ../shared/data/rheometry, where the real rheometer files live when present.
 inline std::filesystem::path rheometry_dir() {
   return std::filesystem::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry";
-}
-
-/// Expects `text` to contain every one of `parts`.
-inline void expect_contains(const std::string& text, std::initializer_list<std::string> parts) {
-  for (const std::string& part : parts)
-    EXPECT_NE(text.find(part), std::string::npos) << part << " in: " << text;
 }
 
 }  // namespace softglass::bridge::testing

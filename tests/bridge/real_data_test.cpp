@@ -9,9 +9,9 @@
 // stresses that grow with φ, and rms deviations of a few per cent (10 % allowed).
 #include <gtest/gtest.h>
 
-#include "bridge/io/measured_curves.h"
 #include "bridge/rescale/rescale.h"
 #include "bridge_test_support.h"
+#include "common/measured_curves.h"
 
 namespace softglass::bridge {
 namespace {

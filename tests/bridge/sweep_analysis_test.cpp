@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "bridge/io/csv_table.h"
 #include "bridge/output/tables.h"
 #include "bridge/sweep/analysis.h"
 #include "bridge_test_support.h"
+#include "common/csv_table.h"
 #include "common/errors.h"
 #include "synthetic_sweep.h"
 

@@ -1,4 +1,4 @@
-// Fuzzing the reader of measured rheometer data (bridge/io/measured_curves.h)
+// Fuzzing the reader of measured rheometer data (common/measured_curves.h)
 // with mutated instrument exports, in both layouts, each read with and without
 // units from the command line. Accepted curves are fitted or compared: every
 // value finite, rates and stresses positive, at least 4 points.
@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "bridge/io/measured_curves.h"
+#include "common/measured_curves.h"
 #include "fuzz_check.h"
 
 namespace softglass::bridge {

@@ -21,7 +21,7 @@ inline std::vector<std::vector<double>> run_scene(const std::string& text,
   app::parse_scene_text(prm, text, "test scene");
   const auto scene = make_scene(prm, read_material(prm), fe::read_solver_settings(prm), ".");
   std::vector<std::vector<double>> rows;
-  for (double d : drives) rows.push_back(scene->solve(d));
+  for (double d : drives) rows.push_back(scene->solve(d).values());
   return rows;
 }
 

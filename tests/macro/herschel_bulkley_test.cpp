@@ -1,6 +1,7 @@
 // The Herschel–Bulkley law (macro/material/herschel_bulkley.h): stress and
 // inverse flow curve, secant viscosity, the complementary potential Φ, and the
-// augmented-Lagrangian local step.
+// augmented-Lagrangian local step; the law as the solvers see it (shear_law.h)
+// and its regularisations, made by name from their registry.
 #include "macro/material/herschel_bulkley.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,9 @@
 #include <limits>
 #include <vector>
 
+#include "common/errors.h"
+#include "macro/material/regularised_law.h"
+#include "macro/material/shear_law.h"
 #include "macro_test_support.h"
 
 namespace softglass::macro {
@@ -81,7 +85,8 @@ TEST(HerschelBulkley, RateIntegralIsTheAntiderivativeOfTheRate) {
 TEST(HerschelBulkley, ProximalRateSolvesTheLocalProblem) {
   for (const HerschelBulkley& law : laws()) {
     for (double penalty : {0.0, 0.1, 10.0, 1e4}) {
-      for (double chi : {0.5 * law.yield_stress, law.yield_stress + 0.01, law.yield_stress + 30.0}) {
+      for (double chi :
+           {0.5 * law.yield_stress, law.yield_stress + 0.01, law.yield_stress + 30.0}) {
         const double s = law.proximal_rate(chi, penalty);
         if (chi <= law.yield_stress) {
           EXPECT_EQ(s, 0.0);
@@ -110,6 +115,38 @@ TEST(HerschelBulkley, SpecialCasesAreRestrictions) {
   EXPECT_DOUBLE_EQ(b.stress(5.0), 3.0 + 0.2 * 5.0);
   EXPECT_DOUBLE_EQ(p.stress(2.0), 4.0 * std::pow(2.0, 0.4));
   EXPECT_DOUBLE_EQ(n.stress(3.0), 2.1);
+}
+
+// The solvers' interface gives the law's own values, and a regularised law
+// tends to the law where it flows (relative error O(ε²) at γ̇ ≫ ε).
+TEST(HerschelBulkley, IsTheShearLawTheSolversSee) {
+  for (const HerschelBulkley& law : laws()) {
+    const std::shared_ptr<const ShearLaw> shear = shear_law(law);
+    EXPECT_EQ(shear->yield_stress(), law.yield_stress);
+    for (double rate : {1e-3, 1.0, 50.0}) {
+      EXPECT_EQ(shear->stress(rate), law.stress(rate));
+      EXPECT_EQ(shear->viscosity(rate), law.viscosity(rate));
+      EXPECT_EQ(shear->rate(law.stress(rate)), law.rate(law.stress(rate)));
+      EXPECT_EQ(shear->proximal_rate(30.0, 2.0), law.proximal_rate(30.0, 2.0));
+    }
+    for (const std::string& name : regularisations().names()) {
+      const auto regularised = make_regularised_law(name, *shear, 1e-6);
+      EXPECT_EQ(regularised->name(), name);
+      EXPECT_LT(relative_error(regularised->viscosity(10.0).value, law.viscosity(10.0)), 1e-9)
+          << name << " n = " << law.flow_index;
+    }
+  }
+}
+
+TEST(HerschelBulkley, UnknownRegularisationNamesTheAllowedOnes) {
+  const auto shear = shear_law(bingham(1.0, 1.0));
+  try {
+    make_regularised_law("smooth", *shear, 1e-3);
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_STREQ(error.what(),
+                 "regularisation 'smooth' is unknown; allowed: papanastasiou, bercovier-engelman");
+  }
 }
 
 }  // namespace

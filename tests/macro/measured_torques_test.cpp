@@ -3,7 +3,7 @@
 // the rate window and the refusals work.
 #include <gtest/gtest.h>
 
-#include "bridge/io/csv_table.h"
+#include "common/csv_table.h"
 #include "common/errors.h"
 #include "macro/app/measured_torques.h"
 
@@ -13,8 +13,8 @@ namespace {
 const InstrumentConstants kConstants{
     .strain_constant = 12.5, .stress_constant = 2000.0, .convention = "test"};
 
-bridge::RheometerCurve curve(const std::string& csv) {
-  return bridge::read_rheometer_curves(bridge::CsvTable::parse(csv, "data.csv"), {})[0];
+RheometerCurve curve(const std::string& csv) {
+  return read_rheometer_curves(CsvTable::parse(csv, "data.csv"), {})[0];
 }
 
 TEST(MeasuredTorques, DerivesAngularVelocityAndTorqueFromRateAndStress) {
@@ -31,10 +31,10 @@ TEST(MeasuredTorques, DerivesAngularVelocityAndTorqueFromRateAndStress) {
 
 TEST(MeasuredTorques, KeepsMeasuredTorquesAndDerivesOnlyWhatIsMissing) {
   // The castor-oil export: the rate is the instrument's, the torque is measured.
-  const auto m = measured_torques(
-      curve("Shear rate [1/s],Stress [Pa],Torque [mN.m],Axial force [g]\n"
-            "25,5000,7,1\n12.5,4000,3,2\n50,6000,9,3\n100,8000,11,4\n"),
-      kConstants, 0.0, 1e9);
+  const auto m =
+      measured_torques(curve("Shear rate [1/s],Stress [Pa],Torque [mN.m],Axial force [g]\n"
+                             "25,5000,7,1\n12.5,4000,3,2\n50,6000,9,3\n100,8000,11,4\n"),
+                       kConstants, 0.0, 1e9);
   EXPECT_DOUBLE_EQ(m.angular_velocity[0], 1.0);
   EXPECT_DOUBLE_EQ(m.torque[0], 3e-3) << "the measured torque, not stress / constant";
   ASSERT_TRUE(m.normal_force.has_value());

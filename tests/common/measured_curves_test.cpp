@@ -5,11 +5,11 @@
 
 #include <numbers>
 
-#include "bridge/io/measured_curves.h"
-#include "bridge_test_support.h"
 #include "common/errors.h"
+#include "common/measured_curves.h"
+#include "tests/common/text_checks.h"
 
-namespace softglass::bridge {
+namespace softglass {
 namespace {
 
 using testing::expect_contains;
@@ -104,8 +104,7 @@ TEST(RheometerCurves, ReadsTorqueAngularVelocityAndForceInSIUnits) {
   EXPECT_DOUBLE_EQ(c[Measured::normal_force][1], -1.0 * 9.80665e-3) << "forces may be negative";
   for (const char* unit : {"mN.m", "mN m", "mNm", "mN*m"}) {
     const auto m = read_rheometer_curves(
-        CsvTable::parse(fmt::format("rate [1/s],torque [{}]\n1,1\n2,2\n3,3\n4,4\n", unit),
-                        "t.csv"),
+        CsvTable::parse(fmt::format("rate [1/s],torque [{}]\n1,1\n2,2\n3,3\n4,4\n", unit), "t.csv"),
         {});
     EXPECT_DOUBLE_EQ(m[0][Measured::torque][3], 4e-3) << unit;
   }
@@ -120,4 +119,4 @@ TEST(MeasuredCurves, RefusesBadValuesAndShortCurves) {
 }
 
 }  // namespace
-}  // namespace softglass::bridge
+}  // namespace softglass

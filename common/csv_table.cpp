@@ -1,4 +1,4 @@
-#include "bridge/io/csv_table.h"
+#include "common/csv_table.h"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 
 #include "common/errors.h"
 
-namespace softglass::bridge {
+namespace softglass {
 
 namespace {
 
@@ -129,4 +129,4 @@ ColumnName split_units(std::string_view header) {
           std::string(trim(header.substr(open + 1, header.size() - open - 2)))};
 }
 
-}  // namespace softglass::bridge
+}  // namespace softglass

@@ -1,4 +1,5 @@
-// A strict reader of comma-separated tables: the form of every bridge input.
+// A strict reader of comma-separated tables: the form of every bridge input
+// and of the measured files `macro compare` reads.
 //
 // Lines starting with `#` are comments (the ones before the header are kept:
 // they carry provenance); blank lines are skipped. The first other line is the
@@ -15,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-namespace softglass::bridge {
+namespace softglass {
 
 class CsvTable {
  public:
@@ -55,4 +56,4 @@ struct ColumnName {
 };
 ColumnName split_units(std::string_view header);
 
-}  // namespace softglass::bridge
+}  // namespace softglass

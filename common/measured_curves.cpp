@@ -1,4 +1,4 @@
-#include "bridge/io/measured_curves.h"
+#include "common/measured_curves.h"
 
 #include <fmt/format.h>
 
@@ -12,7 +12,7 @@
 
 #include "common/errors.h"
 
-namespace softglass::bridge {
+namespace softglass {
 
 namespace {
 
@@ -22,9 +22,8 @@ const std::map<std::string, double> kStressUnits = {
     {"Pa", 1.0}, {"kPa", 1e3}, {"MPa", 1e6}, {"mPa", 1e-3}};
 // Written after spaces are dropped and "·", "*" and "Nm" are read as "N.m";
 // the micro sign may come as µ (U+00B5), μ (U+03BC) or u.
-const std::map<std::string, double> kTorqueUnits = {{"N.m", 1.0},    {"mN.m", 1e-3},
-                                                    {"µN.m", 1e-6},  {"μN.m", 1e-6},
-                                                    {"uN.m", 1e-6},  {"nN.m", 1e-9}};
+const std::map<std::string, double> kTorqueUnits = {{"N.m", 1.0},   {"mN.m", 1e-3}, {"µN.m", 1e-6},
+                                                    {"μN.m", 1e-6}, {"uN.m", 1e-6}, {"nN.m", 1e-9}};
 const std::map<std::string, double> kAngularVelocityUnits = {
     {"rad/s", 1.0}, {"rpm", 2.0 * std::numbers::pi / 60.0}};
 const std::map<std::string, double> kForceUnits = {{"N", 1.0}, {"mN", 1e-3}, {"g", 9.80665e-3}};
@@ -94,16 +93,31 @@ struct Kind {
 const std::vector<Kind>& kinds() {
   using F = Kind::Fallback;
   static const std::vector<Kind> k = {
-      {Measured::shear_rate, {"shear rate", "rate", "gamma dot"}, &kRateUnits, "shear-rate",
-       true, F::rate},
+      {Measured::shear_rate,
+       {"shear rate", "rate", "gamma dot"},
+       &kRateUnits,
+       "shear-rate",
+       true,
+       F::rate},
       {Measured::stress, {"stress", "shear stress"}, &kStressUnits, "stress", true, F::stress},
-      {Measured::N1, {"n1", "first normal stress difference"}, &kStressUnits, "stress", false,
+      {Measured::N1,
+       {"n1", "first normal stress difference"},
+       &kStressUnits,
+       "stress",
+       false,
        F::stress},
       {Measured::torque, {"torque"}, &kTorqueUnits, "torque", true, F::none},
       {Measured::angular_velocity,
        {"angular velocity", "rotation rate", "angular speed", "omega"},
-       &kAngularVelocityUnits, "angular-velocity", true, F::none},
-      {Measured::normal_force, {"normal force", "axial force"}, &kForceUnits, "force", false,
+       &kAngularVelocityUnits,
+       "angular-velocity",
+       true,
+       F::none},
+      {Measured::normal_force,
+       {"normal force", "axial force"},
+       &kForceUnits,
+       "force",
+       false,
        F::none},
   };
   return k;
@@ -150,9 +164,10 @@ double value(const CsvTable& csv, std::size_t row, const Column& c) {
   // data lie far inside these bounds.
   const double si = v * c.factor;
   if (v != 0 && !(std::abs(si) >= 1e-300 && std::abs(si) <= 1e300)) {
-    throw InputError(fmt::format("{}: {} is {} in SI units (x {}); allowed: 1e-300 <= |value| <= "
-                                 "1e300 in SI units",
-                                 csv.where(row, c.index), v, si, c.factor));
+    throw InputError(
+        fmt::format("{}: {} is {} in SI units (x {}); allowed: 1e-300 <= |value| <= "
+                    "1e300 in SI units",
+                    csv.where(row, c.index), v, si, c.factor));
   }
   return si;
 }
@@ -161,8 +176,8 @@ double value(const CsvTable& csv, std::size_t row, const Column& c) {
 void finish(std::vector<RheometerCurve>& curves, const std::string& source) {
   for (RheometerCurve& c : curves) {
     if (c.size() < 4) {
-      throw InputError(fmt::format("{}: curve '{}' has {} point(s); at least 4 are needed",
-                                   source, c.label, c.size()));
+      throw InputError(fmt::format("{}: curve '{}' has {} point(s); at least 4 are needed", source,
+                                   c.label, c.size()));
     }
     const std::vector<double>& x =
         c.has(Measured::shear_rate) ? c[Measured::shear_rate] : c[Measured::angular_velocity];
@@ -297,4 +312,4 @@ std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv,
   return curves;
 }
 
-}  // namespace softglass::bridge
+}  // namespace softglass

@@ -33,9 +33,9 @@
 #include <string>
 #include <vector>
 
-#include "bridge/io/csv_table.h"
+#include "common/csv_table.h"
 
-namespace softglass::bridge {
+namespace softglass {
 
 struct FallbackUnits {
   std::string rate, stress;  // empty: none given
@@ -76,4 +76,4 @@ double rate_factor(const std::string& units, const std::string& what);
 /// SI factor of a stress unit (Pa → 1, kPa → 1e3, ...); InputError naming `what` otherwise.
 double stress_factor(const std::string& units, const std::string& what);
 
-}  // namespace softglass::bridge
+}  // namespace softglass

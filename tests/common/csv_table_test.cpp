@@ -2,11 +2,11 @@
 // refusal of missing or non-finite numbers with file, line and column named.
 #include <gtest/gtest.h>
 
-#include "bridge/io/csv_table.h"
-#include "bridge_test_support.h"
+#include "common/csv_table.h"
 #include "common/errors.h"
+#include "tests/common/text_checks.h"
 
-namespace softglass::bridge {
+namespace softglass {
 namespace {
 
 using testing::expect_contains;
@@ -67,4 +67,4 @@ TEST(CsvTable, SplitsUnitsFromColumnNames) {
 }
 
 }  // namespace
-}  // namespace softglass::bridge
+}  // namespace softglass
