@@ -8,7 +8,7 @@
 #include <set>
 #include <vector>
 
-#include "common/deal_ii_message.h"
+#include "common/parameter_input.h"
 #include "common/errors.h"
 
 namespace softglass::bridge {
@@ -93,9 +93,6 @@ std::optional<Estimate> scalar(const Lists& l, const std::string& key, const std
 }  // namespace
 
 Law read_law_file(const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file)) {
-    throw InputError(fmt::format("law file '{}' does not exist", file.string()));
-  }
   const std::string source = file.string();
   ParameterHandler prm;
   Lists l;
@@ -121,12 +118,8 @@ Law read_law_file(const std::filesystem::path& file) {
     prm.leave_subsection();
   }
   prm.leave_subsection();
-  try {
-    // Mandatory entries are checked below, to name them as the user writes them.
-    prm.parse_input(source, "", false, false);
-  } catch (const std::exception& error) {
-    throw InputError(fmt::format("law file '{}': {}", source, deal_ii_message(error.what())));
-  }
+  // Mandatory entries are checked below, to name them as the user writes them.
+  parse_parameter_file(prm, file, "law file");
   const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
   if (!missing.empty()) {
     std::string names;

@@ -8,11 +8,14 @@
 #include <utility>
 
 #include "common/errors.h"
+#include "common/flow_curve_columns.h"
 
 namespace softglass::bridge {
 
 const char* column_name(Quantity q) {
-  static constexpr std::array<const char*, kQuantities> names = {"sigma", "N1", "N2", "f_m"};
+  static constexpr std::array<const char*, kQuantities> names = {
+      flow_curve::shear_stress, flow_curve::first_normal_difference,
+      flow_curve::second_normal_difference, flow_curve::contact_force};
   return names[index(q)];
 }
 
@@ -27,20 +30,6 @@ std::string without_spaces(std::string s) {
   return s;
 }
 
-// The documented units of a column, or "" for a column the bridge does not know
-// (which must still name some units).
-std::string expected_units(const std::string& name) {
-  for (const char* n : {"phi", "gamma_tilde", "packings", "converged", "Z", "seed"})
-    if (name == n) return "1";
-  const auto family = [&](const std::string& base) {
-    return name == base || name.starts_with(base + "_");
-  };
-  for (const char* base : {"sigma", "N1", "N2", "pressure", "G0"})
-    if (family(base)) return "E*";
-  if (family("f_m")) return "E*R^2";
-  return "";
-}
-
 // The header of a reduced-units table: names mapped to column indices, units checked.
 class Columns {
  public:
@@ -53,7 +42,7 @@ class Columns {
             "'sigma [E*]' (docs/flow-curve-format.md)",
             csv.source(), csv.header()[c]));
       }
-      const std::string expected = expected_units(column.name);
+      const std::string expected = flow_curve::unit_of(column.name);
       if (!expected.empty() && without_spaces(column.units) != expected) {
         throw InputError(fmt::format(
             "{}: column '{}' is in '{}', expected '{}': flow-curve tables are in reduced units "
@@ -77,7 +66,7 @@ class Columns {
     const auto c = find(name);
     if (!c) {
       throw InputError(fmt::format("{}: column '{} [{}]' is missing (docs/flow-curve-format.md)",
-                                   csv_.source(), name, expected_units(name)));
+                                   csv_.source(), name, flow_curve::unit_of(name)));
     }
     return *c;
   }
@@ -130,13 +119,13 @@ PerQuantity<std::pair<std::size_t, std::size_t>> value_columns(const Columns& co
   for (Quantity q : kAllQuantities) {
     const std::string name = column_name(q);
     const auto value = q == Quantity::sigma ? columns.require(name) : columns.find(name);
-    const auto error = columns.find(name + "_se");
+    const auto error = columns.find(flow_curve::error_of(name));
     if (!value) {
       if (error)
         throw InputError(fmt::format("{}: '{}_se' without '{}'", csv.source(), name, name));
       continue;
     }
-    result[index(q)] = {*value, with_errors ? columns.require(name + "_se") : 0};
+    result[index(q)] = {*value, with_errors ? columns.require(flow_curve::error_of(name)) : 0};
   }
   return result;
 }
@@ -145,10 +134,10 @@ PerQuantity<std::pair<std::size_t, std::size_t>> value_columns(const Columns& co
 
 FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
   const Columns columns(csv);
-  const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
-                    packings = columns.require("packings"), g0 = columns.require("G0"),
-                    g0_se = columns.require("G0_se");
-  const auto converged = columns.find("converged");
+  const std::size_t phi = columns.require(flow_curve::phi), rate = columns.require(flow_curve::gamma_tilde),
+                    packings = columns.require(flow_curve::packings), g0 = columns.require(flow_curve::shear_modulus),
+                    g0_se = columns.require(flow_curve::error_of(flow_curve::shear_modulus));
+  const auto converged = columns.find(flow_curve::converged);
   const auto quantities = value_columns(columns, csv, true);
 
   FlowCurveTable table;
@@ -198,9 +187,9 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
                     csv.source(), table.source));
   }
   const Columns columns(csv);
-  const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
+  const std::size_t phi = columns.require(flow_curve::phi), rate = columns.require(flow_curve::gamma_tilde),
                     value = columns.require(column_name(Quantity::force)),
-                    error = columns.require(std::string(column_name(Quantity::force)) + "_se");
+                    error = columns.require(flow_curve::error_of(column_name(Quantity::force)));
   // Rows are matched to state points as make_sweep groups them: φ and γ̃ equal
   // to within a relative 1e-9 (both files print them from the same numbers).
   const auto same = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); };
@@ -236,8 +225,8 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
 
 std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
   const Columns columns(csv);
-  const std::size_t phi = columns.require("phi"), rate = columns.require("gamma_tilde"),
-                    seed = columns.require("seed"), g0 = columns.require("G0");
+  const std::size_t phi = columns.require(flow_curve::phi), rate = columns.require(flow_curve::gamma_tilde),
+                    seed = columns.require(flow_curve::seed), g0 = columns.require(flow_curve::shear_modulus);
   const auto quantities = value_columns(columns, csv, false);
   std::vector<PackingRun> runs;
   for (std::size_t r = 0; r < csv.rows(); ++r) {

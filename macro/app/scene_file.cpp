@@ -6,9 +6,8 @@
 #include <cmath>
 #include <fstream>
 #include <regex>
-#include <sstream>
 
-#include "common/deal_ii_message.h"
+#include "common/parameter_input.h"
 #include "common/errors.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material_parameters.h"
@@ -87,12 +86,7 @@ void declare_scene_file(dealii::ParameterHandler& prm) {
 
 void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
                       const std::string& source) {
-  std::istringstream input(text);
-  try {
-    prm.parse_input(input, source, "", false);
-  } catch (const dealii::ExceptionBase& error) {
-    throw InputError(deal_ii_message(error.what()));
-  }
+  parse_parameter_text(prm, text, source);
 }
 
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/deal_ii_message.h"
+#include "common/parameter_input.h"
 #include "common/errors.h"
 
 namespace softglass::macro {
@@ -119,12 +120,7 @@ Material read_material(dealii::ParameterHandler& prm) {
 Material parse_material(const std::string& text, const std::string& source) {
   dealii::ParameterHandler prm;
   declare_material(prm);
-  std::istringstream input(text);
-  try {
-    prm.parse_input(input, source, "", false);
-  } catch (const dealii::ExceptionBase& error) {
-    throw InputError(deal_ii_message(error.what()));
-  }
+  parse_parameter_text(prm, text, source);
   return read_material(prm);
 }
 

@@ -177,13 +177,13 @@ std::size_t write_tables(const Sweep& sweep, const Workers& workers) {
     if (point_runs.size() == sweep.plan.seeds.size())
       averages.push_back(average_over_packings(point_runs));
   }
-  const NumberTable table = flow_curve_table(averages);
-  const NumberTable per_packing = per_packing_table(runs, seeds);
+  const UnitTable table = flow_curve_table(averages);
+  const UnitTable per_packing = per_packing_table(runs, seeds);
   const auto lines = provenance(sweep);
   AtomicOutput csv(sweep.plan.table_csv, true), packings_csv(sweep.plan.packing_table_csv, true),
       h5(sweep.plan.table_h5, true);
-  write_table_csv(csv.temporary_path(), table, lines);
-  write_table_csv(packings_csv.temporary_path(), per_packing, lines);
+  write_table_csv(csv.temporary_path(), sweep.plan.table_csv, table, lines);
+  write_table_csv(packings_csv.temporary_path(), sweep.plan.packing_table_csv, per_packing, lines);
   write_tables_h5(h5.temporary_path(),
                   {{"flow_curve", &table}, {"flow_curve_packings", &per_packing}}, lines);
   csv.commit();

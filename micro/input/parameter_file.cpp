@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/deal_ii_message.h"
+#include "common/parameter_input.h"
 #include "common/errors.h"
 
 namespace softglass::micro {
@@ -347,18 +348,6 @@ MicroParameters convert(const ParameterHandler& prm, const Entries& e,
   return p;
 }
 
-void parse(ParameterHandler& prm, const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file)) {
-    throw InputError(fmt::format("parameter file '{}' does not exist", file.string()));
-  }
-  try {
-    prm.parse_input(file.string(), "", false, false);
-  } catch (const std::exception& error) {
-    throw InputError(
-        fmt::format("parameter file '{}': {}", file.string(), deal_ii_message(error.what())));
-  }
-}
-
 // The `sweep` subsection of a sweep file (micro/sweep/sweep_plan.h).
 struct SweepEntries {
   SweepSpec spec;
@@ -417,7 +406,7 @@ MicroParameters read_parameter_file(const std::filesystem::path& file) {
   ParameterHandler prm;
   Entries e;
   declare(prm, e);
-  parse(prm, file);
+  parse_parameter_file(prm, file, "parameter file");
   return convert(prm, e, file);
 }
 
@@ -427,7 +416,7 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   SweepEntries s;
   declare(prm, e);
   declare_sweep(prm, s);
-  parse(prm, file);
+  parse_parameter_file(prm, file, "parameter file");
   SweepParameters sweep;
   sweep.base = convert(prm, e, file);
   sweep.spec = s.spec;

@@ -1,64 +1,52 @@
 #include "micro/results/flow_curve_table.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
-#include <fstream>
 #include <utility>
-#include <stdexcept>
 
+#include "common/flow_curve_columns.h"
 #include "common/h5_file.h"
 
 namespace softglass::micro {
 
 namespace {
 
-// The stress columns of docs/flow-curve-format.md, each followed by its `_se`.
-const std::vector<std::string>& stress_columns() {
-  static const std::vector<std::string> names = {
-      "sigma", "sigma_elastic", "sigma_viscous", "N1", "N1_elastic", "N1_viscous",
-      "N2",    "N2_elastic",    "N2_viscous",    "pressure"};
-  return names;
+namespace columns = softglass::flow_curve;
+
+void add_column(UnitTable& t, const std::string& name) {
+  t.columns.push_back({name, columns::unit_of(name)});
 }
 
-void add_column(NumberTable& t, const std::string& name, const std::string& units) {
-  t.names.push_back(name);
-  t.units.push_back(units);
+// A quantity and its standard error.
+void add_with_error(UnitTable& t, const std::string& name) {
+  add_column(t, name);
+  add_column(t, columns::error_of(name));
 }
 
-void add_stress_columns(NumberTable& t) {
-  for (const auto& name : stress_columns()) {
-    add_column(t, name, "E*");
-    add_column(t, name + "_se", "E*");
-  }
+void add_stress_columns(UnitTable& t) {
+  for (const char* name : columns::stresses) add_with_error(t, name);
 }
 
 // r_m and f_m with their errors, when every row has them (docs/structure.md).
-void add_structure_columns(NumberTable& t) {
-  for (const auto& [name, units] : {std::pair{"r_m", "R"}, std::pair{"f_m", "E*R^2"}}) {
-    add_column(t, name, units);
-    add_column(t, std::string(name) + "_se", units);
-  }
+void add_structure_columns(UnitTable& t) {
+  add_with_error(t, columns::contact_distance);
+  add_with_error(t, columns::contact_force);
 }
 
 }  // namespace
 
-NumberTable flow_curve_table(const std::vector<PackingAverage>& points) {
-  NumberTable t;
+UnitTable flow_curve_table(const std::vector<PackingAverage>& points) {
+  UnitTable t;
   const bool structure =
       !points.empty() && std::all_of(points.begin(), points.end(), [](const auto& p) { return p.f_m.has_value(); });
-  add_column(t, "phi", "1");
-  add_column(t, "gamma_tilde", "1");
-  add_column(t, "packings", "1");
+  for (const char* name : {columns::phi, columns::gamma_tilde, columns::packings}) add_column(t, name);
   add_stress_columns(t);
-  add_column(t, "Z", "1");
-  add_column(t, "G0", "E*");
-  add_column(t, "G0_se", "E*");
-  add_column(t, "converged", "1");
+  add_column(t, columns::coordination);
+  add_with_error(t, columns::shear_modulus);
+  add_column(t, columns::converged);
   if (structure) add_structure_columns(t);
   for (const auto& p : points) {
     std::vector<double> row = {p.volume_fraction, p.gamma_tilde, static_cast<double>(p.runs)};
-    for (const auto& name : stress_columns()) {
+    for (const char* name : columns::stresses) {
       row.push_back(p[name].mean);
       row.push_back(p[name].standard_error());
     }
@@ -71,22 +59,20 @@ NumberTable flow_curve_table(const std::vector<PackingAverage>& points) {
   return t;
 }
 
-NumberTable per_packing_table(const std::vector<StoredRunSummary>& runs,
-                              const std::vector<unsigned>& seeds) {
-  NumberTable t;
+UnitTable per_packing_table(const std::vector<StoredRunSummary>& runs,
+                            const std::vector<unsigned>& seeds) {
+  UnitTable t;
   const bool structure =
       !runs.empty() && std::all_of(runs.begin(), runs.end(), [](const auto& r) { return r.f_m.has_value(); });
-  add_column(t, "phi", "1");
-  add_column(t, "gamma_tilde", "1");
-  add_column(t, "seed", "1");
+  for (const char* name : {columns::phi, columns::gamma_tilde, columns::seed}) add_column(t, name);
   add_stress_columns(t);
-  add_column(t, "Z", "1");
-  add_column(t, "G0", "E*");
+  add_column(t, columns::coordination);
+  add_column(t, columns::shear_modulus);
   if (structure) add_structure_columns(t);
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const StoredRunSummary& r = runs[k];
     std::vector<double> row = {r.volume_fraction, r.gamma_tilde, static_cast<double>(seeds.at(k))};
-    for (const auto& name : stress_columns()) {
+    for (const char* name : columns::stresses) {
       const MeanEstimate& e = find_estimate(r.observables, name);
       row.push_back(e.mean);
       row.push_back(e.standard_error);
@@ -98,19 +84,9 @@ NumberTable per_packing_table(const std::vector<StoredRunSummary>& runs,
   return t;
 }
 
-void write_table_csv(const std::filesystem::path& path, const NumberTable& table,
-                     const std::vector<std::string>& provenance) {
-  std::ofstream f(path);
-  for (const auto& line : provenance) f << "# " << line << '\n';
-  for (std::size_t c = 0; c < table.names.size(); ++c)
-    f << (c ? "," : "") << table.names[c] << " [" << table.units[c] << ']';
-  f << '\n';
-  for (const auto& row : table.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) f << (c ? "," : "") << fmt::format("{:.10g}", row[c]);
-    f << '\n';
-  }
-  f.close();
-  if (!f) throw std::runtime_error("writing " + path.string() + " failed");
+void write_table_csv(const std::filesystem::path& path, const std::filesystem::path& shown_path,
+                     const UnitTable& table, const std::vector<std::string>& provenance) {
+  write_csv(path, shown_path, provenance, table, 10);
 }
 
 void write_tables_h5(const std::filesystem::path& path, const std::vector<NamedTable>& tables,
@@ -122,11 +98,7 @@ void write_tables_h5(const std::filesystem::path& path, const std::vector<NamedT
     H5Group group = file.root().create_group(name);
     group.set_attribute("provenance", lines);
     group.set_attribute("rows", table->rows.size());
-    for (std::size_t c = 0; c < table->names.size(); ++c) {
-      std::vector<double> column;
-      for (const auto& row : table->rows) column.push_back(row[c]);
-      group.write(table->names[c], column, {}, {.units = table->units[c]});
-    }
+    write_columns(group, *table);
   }
   file.close();
 }

@@ -8,34 +8,30 @@
 #include <string>
 #include <vector>
 
-#include "micro/results/packing_average.h"
+#include "common/unit_table.h"
 #include "micro/io/run_file.h"
+#include "micro/results/packing_average.h"
 
 namespace softglass::micro {
 
-/// A table of numbers with named columns, "name [units]".
-struct NumberTable {
-  std::vector<std::string> names, units;
-  std::vector<std::vector<double>> rows;
-};
-
 /// One row per state point, in the order given.
-NumberTable flow_curve_table(const std::vector<PackingAverage>& points);
+UnitTable flow_curve_table(const std::vector<PackingAverage>& points);
 
 /// One row per run; `seeds[k]` is the packing seed of `runs[k]`.
-NumberTable per_packing_table(const std::vector<StoredRunSummary>& runs,
-                              const std::vector<unsigned>& seeds);
+UnitTable per_packing_table(const std::vector<StoredRunSummary>& runs,
+                            const std::vector<unsigned>& seeds);
 
-/// CSV with `#` provenance lines before the header; `path` is written whole
-/// (the caller makes it atomic).
-void write_table_csv(const std::filesystem::path& path, const NumberTable& table,
-                     const std::vector<std::string>& provenance);
+/// CSV with `#` provenance lines before the header, every number with 10
+/// significant digits (more than any average carries); `path` is written whole
+/// (the caller makes it atomic), errors name `shown_path`.
+void write_table_csv(const std::filesystem::path& path, const std::filesystem::path& shown_path,
+                     const UnitTable& table, const std::vector<std::string>& provenance);
 
 /// The tables as groups `name` of an HDF5 file: a dataset per column with its
 /// units; `provenance` as the group's attribute.
 struct NamedTable {
   std::string name;
-  const NumberTable* table;
+  const UnitTable* table;
 };
 void write_tables_h5(const std::filesystem::path& path, const std::vector<NamedTable>& tables,
                      const std::vector<std::string>& provenance);

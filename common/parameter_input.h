@@ -1,0 +1,27 @@
+// Reading parameter files with deal.II's ParameterHandler, the same way in
+// every tool (micro's parameter and sweep files, bridge's law files, macro's
+// scene and material files): whatever goes wrong becomes one InputError whose
+// message is deal.II's on one line (common/deal_ii_message.h). Entries must be
+// declared; an entry that is not is an error, never skipped.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace dealii {
+class ParameterHandler;
+}
+
+namespace softglass {
+
+/// Parses `text` into `prm`; `source` names it in deal.II's messages
+/// ("Line <3> of file <source>").
+void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text,
+                          const std::string& source);
+
+/// Parses the file `file`, which must exist; messages begin "<kind> '<file>'"
+/// (kind: "parameter file", "law file"...).
+void parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
+                          const std::string& kind);
+
+}  // namespace softglass
