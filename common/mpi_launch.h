@@ -17,8 +17,7 @@ inline bool launched_by_mpi() {
 /// Call before MPI_Init. A process started without a launcher is an MPI
 /// singleton, and Open MPI's defaults then start a server for MPI_Comm_spawn
 /// and probe the UCX network layer — neither of any use to one process, and
-/// together 0.3 s of the 0.5 s that a `macro run` of a small scene took
-/// (measured: `macro --version` 0.53 s → 0.21 s). Settings the user made win;
+/// together most of the start-up time of a small `macro run`. Settings the user made win;
 /// other MPI implementations ignore these.
 inline void prefer_lean_mpi_singleton() {
   if (launched_by_mpi()) return;
