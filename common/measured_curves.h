@@ -1,7 +1,12 @@
 // Measured rheometer data (instrument exports): flow curves for `bridge
 // rescale`, torques for `macro compare`. One reader for both.
 //
-// Layouts read (the shapes of ../shared/data/rheometry/ and common exports):
+// Layouts read (the shapes of ../shared/data/rheometry/ and common exports),
+// one file each in common/measured/ (layout.h), tried in the order of
+// registered_layouts.h:
+//   - paired: a header that labels pairs of columns ("0.68,,0.70,,..."), each
+//     pair one curve (shear rate, stress), no units in the header; rows may be
+//     shorter for some pairs (both cells empty);
 //   - long: one row per point, columns recognised by name (case, spaces,
 //     underscores and hyphens do not matter):
 //         shear rate        "shear rate", "rate", "gamma dot"
@@ -13,10 +18,7 @@
 //         curve label       "sample", "sample id", "curve", "label" (optional: groups rows)
 //     other columns (viscosity, time, temperature, ...) are ignored. Units come
 //     in brackets, "Stress [Pa]", or as a last underscore-separated part,
-//     "stress_Pa";
-//   - paired: a header that labels pairs of columns ("0.68,,0.70,,..."), each
-//     pair one curve (shear rate, stress), no units in the header; rows may be
-//     shorter for some pairs (both cells empty).
+//     "stress_Pa".
 // Units: rates in 1/s (also s^-1, s-1, 1/min); stresses in Pa, kPa, MPa or
 // mPa; torques in N.m, mN.m, µN.m, nN.m (also written Nm, N m, N·m); angular
 // velocities in rad/s or rpm; forces in N, mN or g (gram-force, as rheometers

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "common/errors.h"
-#include "macro/material/registered_regularisations.h"
+#include "macro/material/regularisations/registered_regularisations.h"
 #include "macro/numerics/root_finding.h"
 
 namespace softglass::macro {

@@ -35,9 +35,10 @@
 // Both are positive definite. At γ̇ = 0 the direction n is undefined, but there
 // γ̇ dη/dγ̇ = 0 and τ' = η, so the tangent is η I (2η𝕀): take n = 0 (N = 0).
 //
-// The regularisations are registered (common/registry.h) in
-// registered_regularisations.h, one line each; the parameter files' allowed
-// values of `regularisation` are the registry's names.
+// The regularisations, one file each in regularisations/, are registered
+// (common/registry.h) in regularisations/registered_regularisations.h, one
+// line each; the parameter files' allowed values of `regularisation` are the
+// registry's names.
 #pragma once
 
 #include <memory>
@@ -93,7 +94,7 @@ struct RegularisationSpec {
 };
 using RegularisationEntry = ComponentEntry<RegularisedLaw, RegularisationSpec>;
 
-/// Every regularisation (registered_regularisations.h).
+/// Every regularisation (regularisations/registered_regularisations.h).
 const Registry<RegularisationEntry>& regularisations();
 
 /// The regularisation called `name` of `law` (which must outlive it) with rate

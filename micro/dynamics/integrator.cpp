@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "common/errors.h"
-#include "micro/dynamics/registered_integrators.h"
+#include "micro/dynamics/integrators/registered_integrators.h"
 
 namespace softglass::micro {
 

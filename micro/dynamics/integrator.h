@@ -2,10 +2,10 @@
 // scheme per file, chosen by name (`scheme = euler` in the parameter file). A
 // new scheme is its file — a class deriving from Integrator and a function
 // returning its registry entry (IntegratorEntry <name>_integrator()) — plus one
-// line in registered_integrators.h.
+// line in integrators/registered_integrators.h.
 //
-// Schemes: `euler` (explicit, adaptive_euler.cpp) and `implicit` (backward
-// Euler as a minimising movement, backward_euler.cpp, for the stiff low-γ̃
+// Schemes (in integrators/): `euler` (explicit, adaptive_euler.cpp) and
+// `implicit` (backward Euler as a minimising movement, backward_euler.cpp, for the stiff low-γ̃
 // regime); docs/integrators.md compares them. The default, `auto`, picks one
 // by the shear rate. The quasi-static limit
 // γ̃ → 0 is not an integrator but a protocol of its own (aqs.h).
@@ -88,7 +88,7 @@ struct IntegratorTraits {
 
 using IntegratorEntry = ComponentEntry<Integrator, IntegratorSpec, IntegratorTraits>;
 
-/// Every scheme (registered_integrators.h).
+/// Every scheme (integrators/registered_integrators.h).
 const Registry<IntegratorEntry>& integrators();
 
 /// The tolerance a scheme uses when none is given (its traits).

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "common/errors.h"
+#include "common/measured/layout.h"
 #include "common/measured_curves.h"
 #include "tests/common/text_checks.h"
 
@@ -116,6 +117,20 @@ TEST(MeasuredCurves, RefusesBadValuesAndShortCurves) {
   expect_contains(refusal("rate [1/s],stress [Pa]\n1,2\n2,nan\n3,4\n4,5\n"),
                   {"line 3", "not finite"});
   expect_contains(refusal("rate [1/s],stress [Pa]\n1,2\n2,3\n3,4\n"), {"3 point(s)", "at least 4"});
+}
+
+// The layouts are tried in their registry's order: a header of labelled
+// column pairs is read as `paired`, any other as `long`, which takes them all.
+TEST(MeasuredLayouts, TheFirstLayoutThatRecognisesAHeaderReadsIt) {
+  const auto first = [](const std::vector<std::string>& header) {
+    for (const auto& layout : measured::layouts().entries())
+      if (layout.recognises(header)) return layout.name;
+    return std::string("none");
+  };
+  EXPECT_EQ(first({"0.68", "", "0.70", ""}), "paired");
+  EXPECT_EQ(first({"Shear rate [1/s]", "Stress [Pa]"}), "long");
+  EXPECT_EQ(first({"0.68", "", "0.70"}), "long");  // an unpaired label
+  EXPECT_EQ(first({"", "0.68"}), "long");
 }
 
 }  // namespace
