@@ -283,6 +283,16 @@ def mobility_sensitivity(args, done):
     return lines
 
 
+def write_csv(path, rows):
+    """Rows (dicts with the same keys) as CSV, for scripts/plot_fidelity.py."""
+    import csv
+    with open(path + ".tmp", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    os.replace(path + ".tmp", path)
+
+
 def static_scan(args, names):
     """G0, Π, ⟨ε⟩ of relaxed packings per variant and φ (micro pack)."""
     import h5py  # Debian's python3-h5py
@@ -291,6 +301,7 @@ def static_scan(args, names):
           f"Mason: G' = 1.7 (gamma_i/R) phi (phi - {PHI_C}), E* = {E_STAR_PER_LAPLACE} gamma_i/R")
     print(" ".join(f"{h:>13}" for h in ("variant", "phi", "G0 [E*]", "G0/Mason", "Pi [E*]",
                                           "Pi/G0", "<eps>", "Z", "seconds")))
+    rows = []
     for name in names:
         entries = {k: v for k, v in resolve(name)[0].items() if k[0] in ("contact law", "particles")}
         folder = os.path.join(args.out, "static", name)
@@ -325,6 +336,9 @@ def static_scan(args, names):
                      fmt(sum(eps) / len(eps)),
                      fmt(sum(z) / len(z)), f"{seconds:.0f}")
             print(" ".join(f"{c:>13}" for c in cells), flush=True)
+            rows.append({"variant": name, "phi": phi, "G0": mean, "G0_se": se,
+                         "G0_mason": mean / mason_g0(float(phi))})
+    write_csv(os.path.join(args.out, "static.csv"), rows)
 
 
 def main():
@@ -377,6 +391,8 @@ def main():
                  fmt(r["k"], r["k_se"]), fmt(r["k1"], r["k1_se"]), fmt(r["k2"], r["k2_se"]),
                  fmt(r["ev_ratio"]), fmt(r["G0_mason"]), fmt(r["sy_mason"]))
         print(" ".join(f"{c:>13}" for c in cells))
+    write_csv(os.path.join(args.out, "summary.csv"),
+              [{k: v for k, v in r.items() if not isinstance(v, dict)} for r in table])
     print("# over all phi: universal constants (collapse Q/dof), mean m, wall time")
     seen = set()
     for r in table:

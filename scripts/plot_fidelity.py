@@ -1,0 +1,95 @@
+#!/usr/bin/python3
+"""Figures of the model-fidelity study (docs/fidelity.md), drawn from the tables
+bench/model_sensitivity.py writes into its output folder.
+
+    plot_fidelity.py STUDY_DIR [-o DIR] [--variants a,b,...]
+
+Reads STUDY_DIR/summary.csv (the flow-curve variants) and, when present,
+STUDY_DIR/static.csv (G0 of relaxed packings). Writes DIR/fidelity_exponent.png
+(the Herschel-Bulkley exponent m against phi per variant, the paper's
+0.50 +- 0.02 as a band) and DIR/fidelity_modulus.png (G0 against compressed
+emulsions, Mason et al. 1995, per contact law). DIR defaults to STUDY_DIR.
+"""
+
+import argparse
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display needed
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_rows(path):
+    if not os.path.isfile(path):
+        sys.exit(f"plot_fidelity: error: '{path}' does not exist (run bench/model_sensitivity.py)")
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"plot_fidelity: error: '{path}' has no rows")
+    return rows
+
+
+def by_variant(rows, wanted):
+    """{variant: rows sorted by phi}, in the order first seen (or of `wanted`)."""
+    groups = {}
+    for r in rows:
+        groups.setdefault(r["variant"], []).append(r)
+    names = wanted if wanted else list(groups)
+    missing = [n for n in names if n not in groups]
+    if missing:
+        sys.exit(f"plot_fidelity: error: no rows for variant(s) {', '.join(missing)}")
+    return {n: sorted(groups[n], key=lambda r: float(r["phi"])) for n in names}
+
+
+def plot_exponent(groups, path):
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    ax.axhspan(0.48, 0.52, color="0.85", label="paper: 0.50 ± 0.02")
+    for name, rows in groups.items():
+        ax.errorbar([float(r["phi"]) for r in rows], [float(r["m"]) for r in rows],
+                    yerr=[float(r["m_se"]) for r in rows], marker="o", capsize=3, label=name)
+    ax.set_xlabel("φ")
+    ax.set_ylabel("Herschel–Bulkley exponent m of σ")
+    ax.set_title("N = 250, 2 packings, γ̃ = 1e-9 … 1e-4")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_modulus(groups, path):
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    ax.axhspan(1 / 1.5, 1.5, color="0.85", label="within a factor 1.5")
+    for name, rows in groups.items():
+        ax.plot([float(r["phi"]) for r in rows], [float(r["G0_mason"]) for r in rows],
+                marker="o", label=name)
+    ax.set_xlabel("φ")
+    ax.set_ylabel("G0 / (compressed emulsions, Mason et al. 1995)")
+    ax.set_yscale("log")
+    ax.set_title("relaxed packings, N = 1000")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("study")
+    parser.add_argument("-o", "--output")
+    parser.add_argument("--variants", help="comma-separated; default: all in summary.csv")
+    args = parser.parse_args()
+    out = args.output or args.study
+    os.makedirs(out, exist_ok=True)
+    wanted = [v.strip() for v in args.variants.split(",")] if args.variants else None
+    plot_exponent(by_variant(read_rows(os.path.join(args.study, "summary.csv")), wanted),
+                  os.path.join(out, "fidelity_exponent.png"))
+    static = os.path.join(args.study, "static.csv")
+    if os.path.isfile(static):
+        plot_modulus(by_variant(read_rows(static), None), os.path.join(out, "fidelity_modulus.png"))
+
+
+if __name__ == "__main__":
+    main()
