@@ -44,19 +44,24 @@ def by_variant(rows, wanted):
     return {n: sorted(groups[n], key=lambda r: float(r["phi"])) for n in names}
 
 
+def save(fig, ax, ylabel, title, path):
+    ax.set_xlabel("φ")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
 def plot_exponent(groups, path):
     fig, ax = plt.subplots(figsize=(6, 4.2))
     ax.axhspan(0.48, 0.52, color="0.85", label="paper: 0.50 ± 0.02")
     for name, rows in groups.items():
         ax.errorbar([float(r["phi"]) for r in rows], [float(r["m"]) for r in rows],
                     yerr=[float(r["m_se"]) for r in rows], marker="o", capsize=3, label=name)
-    ax.set_xlabel("φ")
-    ax.set_ylabel("Herschel–Bulkley exponent m of σ")
-    ax.set_title("N = 250, 2 packings, γ̃ = 1e-9 … 1e-4")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save(fig, ax, "Herschel–Bulkley exponent m of σ", "N = 250, 2 packings, γ̃ = 1e-9 … 1e-4",
+         path)
 
 
 def plot_modulus(groups, path):
@@ -65,14 +70,9 @@ def plot_modulus(groups, path):
     for name, rows in groups.items():
         ax.plot([float(r["phi"]) for r in rows], [float(r["G0_mason"]) for r in rows],
                 marker="o", label=name)
-    ax.set_xlabel("φ")
-    ax.set_ylabel("G0 / (compressed emulsions, Mason et al. 1995)")
     ax.set_yscale("log")
-    ax.set_title("relaxed packings, N = 1000")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    save(fig, ax, "G0 / (compressed emulsions, Mason et al. 1995)", "relaxed packings, N = 1000",
+         path)
 
 
 def main():
