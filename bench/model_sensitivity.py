@@ -102,6 +102,13 @@ VARIANTS = {
                            ("shear", "mobility factor"): "0.05"},
                           "Stokes friction against the neighbours, f_r = 0.05"),
     "nonaffine": ({("drag", "velocity"): "nonaffine"}, "EHD on the non-affine sliding only"),
+    # Modifiers of the neighbours friction (compose: nominal+neighbours+share0.3):
+    # the share kappa of each particle's friction kept against the affine flow,
+    # from the default 0.01 towards 1 (all of it: the affine reference).
+    "share0.1": ({("drag", "stokes reservoir share"): "0.1"},
+                 "a share 0.1 of the Stokes friction against the affine flow"),
+    "share0.3": ({("drag", "stokes reservoir share"): "0.3"},
+                 "a share 0.3 of the Stokes friction against the affine flow"),
 }
 
 
