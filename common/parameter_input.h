@@ -19,8 +19,13 @@ namespace softglass {
 void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text,
                           const std::string& source);
 
-/// Parses the file `file`, which must exist; messages begin "<kind> '<file>'"
-/// (kind: "parameter file", "law file"...).
+/// Parses the parameter file `file`. It must be a readable file (a directory
+/// is named as one); a UTF-8 byte-order mark before its first line is skipped,
+/// as editors on Windows write one; `include <file>` lines are replaced by that
+/// file (relative to the including one), at most 8 deep, so that a file that
+/// includes itself is an error rather than an endless recursion. Messages
+/// begin "<kind> '<file>'" (kind: "parameter file", "law file"...) and name
+/// the file and line the user wrote, through includes.
 void parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                           const std::string& kind);
 

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <regex>
 
 #include "common/parameter_input.h"
 #include "common/errors.h"
@@ -16,54 +14,6 @@
 namespace softglass::macro::app {
 
 namespace Patterns = dealii::Patterns;
-
-namespace {
-
-// Includes nest at most this deep (a file including itself is an error).
-constexpr int kMaxIncludeDepth = 8;
-
-// The text with its includes expanded, and where each of its lines came from
-// (file and line), so that messages about the expanded text name the line the
-// user wrote.
-struct ExpandedText {
-  std::string text;
-  std::vector<std::pair<std::string, std::size_t>> origin;
-};
-
-void expand(const std::filesystem::path& file, int depth, ExpandedText& out) {
-  require(depth <= kMaxIncludeDepth,
-          fmt::format("include nesting deeper than {} at '{}'", kMaxIncludeDepth, file.string()));
-  std::ifstream in(file);
-  require(in.good(), fmt::format("scene file '{}' cannot be read", file.string()));
-  static const std::regex include_line(R"(^\s*include\s+(\S+)\s*$)", std::regex::icase);
-  std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    std::smatch match;
-    if (std::regex_match(line, match, include_line)) {
-      std::filesystem::path included = match[1].str();
-      if (included.is_relative()) included = file.parent_path() / included;
-      expand(included, depth + 1, out);
-    } else {
-      out.text += line + "\n";
-      out.origin.emplace_back(file.string(), number);
-    }
-  }
-}
-
-// deal.II's "Line <N> of file <F>" (N counted in the expanded text) → the
-// file and line the user wrote.
-std::string locate(const std::string& message, const ExpandedText& expanded) {
-  static const std::regex place(R"(Line <(\d+)> of file <[^>]*>)");
-  std::smatch match;
-  if (!std::regex_search(message, match, place)) return message;
-  const std::size_t line = std::stoul(match[1].str());
-  if (line == 0 || line > expanded.origin.size()) return message;
-  const auto& [file, number] = expanded.origin[line - 1];
-  return match.prefix().str() + fmt::format("line {} of file '{}'", number, file) +
-         match.suffix().str();
-}
-
-}  // namespace
 
 void declare_scene_file(dealii::ParameterHandler& prm) {
   declare_scenes(prm);
@@ -90,13 +40,7 @@ void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
 }
 
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
-  ExpandedText expanded;
-  expand(file, 0, expanded);
-  try {
-    parse_scene_text(prm, expanded.text, file.string());
-  } catch (const InputError& error) {
-    throw InputError(locate(error.what(), expanded));
-  }
+  parse_parameter_file(prm, file, "scene file");
 }
 
 namespace {

@@ -118,6 +118,9 @@ TEST(LawFile, RefusesMalformedFilesNamingTheEntry) {
   expect_contains(refusal(replaced("(set k error +=)[^\n]*", "$1 -1")),
                   {"'universal/k'", "non-negative error"});
   EXPECT_THROW(read_law_file(dir / "no_such.prm"), InputError);
+  // A law that includes itself: an error naming the nesting, not a stack
+  // overflow inside deal.II's reader (common/parameter_input.h).
+  expect_contains(refusal("include bad.prm\n" + good), {"law file", "includes nest deeper than 8"});
 }
 
 }  // namespace

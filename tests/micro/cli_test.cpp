@@ -73,7 +73,7 @@ struct BadParameter {
 
 TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
   const std::vector<BadParameter> cases = {
-      {"unknown entry", tiny_with("particles", "colour", "red"), {"colour", "Line <12>"}},
+      {"unknown entry", tiny_with("particles", "colour", "red"), {"colour", "line 12 of file"}},
       {"unknown subsection", kTiny + "subsection nonsense\n  set number = 1\nend\n", {"nonsense"}},
       {"volume fraction below 0.64",
        tiny_with("particles", "volume fraction", "0.5"),
@@ -140,6 +140,33 @@ TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
     }
     EXPECT_FALSE(fs::exists(work() / "tiny.h5")) << c.what << ": no output for bad input";
   }
+}
+
+// Files that deal.II's own reader mishandles (common/parameter_input.h): a
+// file that includes itself recursed until the stack overflowed; a UTF-8
+// byte-order mark was refused with an invisible character in the message; a
+// directory was reported as missing.
+TEST_F(MicroCli, IncludesByteOrderMarksAndDirectoriesAreReadAsTheUserMeantThem) {
+  const Outcome loop = micro("pack --quiet " + parameters("loop.prm", "include loop.prm\n" + kTiny));
+  EXPECT_EQ(loop.code, 2) << loop.err;
+  EXPECT_NE(loop.err.find("includes nest deeper than 8"), std::string::npos) << loop.err;
+
+  parameters("particles.prm", "subsection particles\n  set number = 200\n  set colour = red\nend\n");
+  const Outcome included = micro("pack --quiet " + parameters("main.prm", kTiny + "include particles.prm\n"));
+  EXPECT_EQ(included.code, 2) << included.err;
+  EXPECT_NE(included.err.find("line 3 of file"), std::string::npos) << "the line in the included "
+                                                                       "file: " << included.err;
+  EXPECT_NE(included.err.find("particles.prm"), std::string::npos) << included.err;
+
+  fs::create_directory(work() / "folder.prm");
+  const Outcome folder = micro("pack --quiet " + (work() / "folder.prm").string());
+  EXPECT_EQ(folder.code, 2) << folder.err;
+  EXPECT_NE(folder.err.find("is a directory"), std::string::npos) << folder.err;
+  EXPECT_FALSE(fs::exists(work() / "tiny.h5"));
+
+  const Outcome marked = micro("pack --quiet " + parameters("bom.prm", "\xEF\xBB\xBF" + kTiny));
+  EXPECT_EQ(marked.code, 0) << marked.err;
+  EXPECT_TRUE(fs::exists(work() / "tiny.h5"));
 }
 
 TEST_F(MicroCli, TemplateDocumentsEverySubsectionAndParsesBack) {
