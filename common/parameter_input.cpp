@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <utility>
@@ -43,8 +44,52 @@ std::string read_text(const std::filesystem::path& file, const std::string& kind
   return s;
 }
 
+// Follows the subsections of the expanded text so that an entry set twice in
+// one file is found: deal.II keeps the last value in silence, and a second
+// `set` in one file is a slip (an edited copy) more often than an intention.
+// A file may set again what a file it includes set: that is how a shared base
+// file is specialised.
+class DuplicateEntries {
+ public:
+  void check(std::string line, const std::string& file, std::size_t number,
+             const std::string& kind) {
+    const auto last = line.find_last_not_of(" \t\r");
+    const bool continues = last != std::string::npos && line[last] == '\\';
+    const bool statement = !continued_;
+    continued_ = continues;
+    if (!statement) return;
+    line = line.substr(0, line.find('#'));
+    static const std::regex subsection(R"(^\s*subsection\s+(.*\S)\s*$)");
+    static const std::regex end(R"(^\s*end\s*$)");
+    static const std::regex set(R"(^\s*set\s+([^=]*\S)\s*=.*$)");
+    std::smatch match;
+    if (std::regex_match(line, match, subsection)) {
+      path_.push_back(match[1].str());
+    } else if (std::regex_match(line, end)) {
+      if (!path_.empty()) path_.pop_back();
+    } else if (std::regex_match(line, match, set)) {
+      std::string key;
+      for (const std::string& s : path_) key += s + "/";
+      key += match[1].str();
+      const auto [it, fresh] = where_.try_emplace(key, file, number);
+      if (!fresh && it->second.first == file) {
+        throw InputError(fmt::format(
+            "{} '{}', line {}: '{}' is set a second time in this file (first on line {}); set "
+            "each entry once",
+            kind, file, number, key, it->second.second));
+      }
+      it->second = {file, number};
+    }
+  }
+
+ private:
+  std::vector<std::string> path_;
+  std::map<std::string, std::pair<std::string, std::size_t>> where_;
+  bool continued_ = false;
+};
+
 void expand(const std::filesystem::path& file, const std::string& kind, int depth,
-            ExpandedText& out) {
+            ExpandedText& out, DuplicateEntries& duplicates) {
   if (depth > kMaxIncludeDepth) {
     throw InputError(fmt::format("{}: includes nest deeper than {} at '{}' (does a file include "
                                  "itself?)",
@@ -58,8 +103,9 @@ void expand(const std::filesystem::path& file, const std::string& kind, int dept
     if (std::regex_match(line, match, include_line)) {
       std::filesystem::path included = match[1].str();
       if (included.is_relative()) included = file.parent_path() / included;
-      expand(included, kind, depth + 1, out);
+      expand(included, kind, depth + 1, out, duplicates);
     } else {
+      duplicates.check(line, file.string(), number, kind);
       out.text += line + "\n";
       out.origin.emplace_back(file.string(), number);
     }
@@ -94,7 +140,8 @@ void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text
 void parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                           const std::string& kind) {
   ExpandedText expanded;
-  expand(file, kind, 0, expanded);
+  DuplicateEntries duplicates;
+  expand(file, kind, 0, expanded, duplicates);
   try {
     parse_parameter_text(prm, expanded.text, file.string());
   } catch (const InputError& error) {

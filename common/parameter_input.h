@@ -23,9 +23,11 @@ void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text
 /// is named as one); a UTF-8 byte-order mark before its first line is skipped,
 /// as editors on Windows write one; `include <file>` lines are replaced by that
 /// file (relative to the including one), at most 8 deep, so that a file that
-/// includes itself is an error rather than an endless recursion. Messages
-/// begin "<kind> '<file>'" (kind: "parameter file", "law file"...) and name
-/// the file and line the user wrote, through includes.
+/// includes itself is an error rather than an endless recursion. An entry set
+/// twice in one file is an error (deal.II would keep the last in silence); a
+/// file may set again an entry of a file it includes, the later `set` winning.
+/// Messages begin "<kind> '<file>'" (kind: "parameter file", "law file"...)
+/// and name the file and line the user wrote, through includes.
 void parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                           const std::string& kind);
 

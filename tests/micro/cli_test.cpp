@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -35,10 +36,14 @@ const std::string kTiny =
     "  set file = tiny.h5\n"
     "end\n";
 
-// The tiny parameter file with the entry `name` of `subsection` set to `value`
-// (added if the subsection does not set it yet).
+// The tiny parameter file with the entry `name` of `subsection` set to `value`:
+// its line replaced where the file sets it already (an entry is set once per
+// file), a subsection added otherwise.
 std::string tiny_with(const std::string& subsection, const std::string& name,
                       const std::string& value) {
+  const std::regex existing("(subsection " + subsection + "\n(?:  set [^\n]*\n)*?  set " + name +
+                            " +=) [^\n]*");
+  if (std::regex_search(kTiny, existing)) return std::regex_replace(kTiny, existing, "$1 " + value);
   return kTiny + "subsection " + subsection + "\n  set " + name + " = " + value + "\nend\n";
 }
 
@@ -143,16 +148,19 @@ TEST_F(MicroCli, EveryBadParameterIsRejectedWithExitCodeTwo) {
 }
 
 // Files that deal.II's own reader mishandles (common/parameter_input.h): a
-// file that includes itself recursed until the stack overflowed; a UTF-8
-// byte-order mark was refused with an invisible character in the message; a
-// directory was reported as missing.
+// file that includes itself recursed until the stack overflowed; an entry set
+// twice kept the last value in silence; a UTF-8 byte-order mark was refused
+// with an invisible character in the message; a directory was reported as
+// missing.
 TEST_F(MicroCli, IncludesByteOrderMarksAndDirectoriesAreReadAsTheUserMeantThem) {
-  const Outcome loop = micro("pack --quiet " + parameters("loop.prm", "include loop.prm\n" + kTiny));
+  const Outcome loop =
+      micro("pack --quiet " + parameters("loop.prm", "include loop.prm\n" + kTiny));
   EXPECT_EQ(loop.code, 2) << loop.err;
   EXPECT_NE(loop.err.find("includes nest deeper than 8"), std::string::npos) << loop.err;
 
-  parameters("particles.prm", "subsection particles\n  set number = 200\n  set colour = red\nend\n");
-  const Outcome included = micro("pack --quiet " + parameters("main.prm", kTiny + "include particles.prm\n"));
+  parameters("particles.prm", "subsection particles\n  set seed = 2\n  set colour = red\nend\n");
+  const Outcome included =
+      micro("pack --quiet " + parameters("main.prm", kTiny + "include particles.prm\n"));
   EXPECT_EQ(included.code, 2) << included.err;
   EXPECT_NE(included.err.find("line 3 of file"), std::string::npos) << "the line in the included "
                                                                        "file: " << included.err;
@@ -163,6 +171,22 @@ TEST_F(MicroCli, IncludesByteOrderMarksAndDirectoriesAreReadAsTheUserMeantThem) 
   EXPECT_EQ(folder.code, 2) << folder.err;
   EXPECT_NE(folder.err.find("is a directory"), std::string::npos) << folder.err;
   EXPECT_FALSE(fs::exists(work() / "tiny.h5"));
+
+  // One entry set twice in one file: refused naming both lines. A file that
+  // includes a base file may set one of its entries again.
+  const Outcome twice = micro(
+      "pack --quiet " +
+      parameters("twice.prm", kTiny + "subsection particles\n  set number = 300\nend\n"));
+  EXPECT_EQ(twice.code, 2) << twice.err;
+  EXPECT_NE(twice.err.find("'particles/number' is set a second time in this file (first on line 2)"),
+            std::string::npos) << twice.err;
+  parameters("base.prm", kTiny);
+  const Outcome specialised = micro(
+      "pack --quiet " +
+      parameters("special.prm", "include base.prm\nsubsection particles\n  set number = 250\nend\n"));
+  EXPECT_EQ(specialised.code, 0) << specialised.err;
+  EXPECT_EQ(read_packing(work() / "tiny.h5").particles.size(), 250u);
+  fs::remove(work() / "tiny.h5");
 
   const Outcome marked = micro("pack --quiet " + parameters("bom.prm", "\xEF\xBB\xBF" + kTiny));
   EXPECT_EQ(marked.code, 0) << marked.err;

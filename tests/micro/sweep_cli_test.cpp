@@ -20,12 +20,16 @@ namespace softglass::micro {
 namespace {
 
 // N = 200 needs a skin below ~0.6 for the neighbour grid; short runs. No
-// quasi-static case unless `sweep_entries` asks for it.
+// quasi-static case unless `sweep_entries` asks for it (an entry is set once
+// per file).
 std::string sweep_file(const std::string& directory, const std::string& sweep_entries,
                        double max_strain, std::size_t particles = 200) {
   std::ostringstream s;
   s << "subsection sweep\n  set preset = custom\n  set particles = " << particles
-    << "\n  set output directory = " << directory << "\n  set quasi-static = false\n"
+    << "\n  set output directory = " << directory << "\n"
+    << (sweep_entries.find("set quasi-static =") == std::string::npos
+            ? "  set quasi-static = false\n"
+            : "")
     << sweep_entries << "end\n"
     << "subsection neighbours\n  set skin = 0.3\nend\n"
     << "subsection shear\n  set min strain = " << max_strain
