@@ -44,12 +44,12 @@ std::string read_text(const std::filesystem::path& file, const std::string& kind
   return s;
 }
 
-// Follows the subsections of the expanded text so that an entry set twice in
-// one file is found: deal.II keeps the last value in silence, and a second
+// Follows the subsections of the expanded text, listing the entries set, so
+// that an entry set twice in one file is found: deal.II keeps the last value in silence, and a second
 // `set` in one file is a slip (an edited copy) more often than an intention.
 // A file may set again what a file it includes set: that is how a shared base
 // file is specialised.
-class DuplicateEntries {
+class SetEntries {
  public:
   void check(std::string line, const std::string& file, std::size_t number,
              const std::string& kind) {
@@ -71,6 +71,7 @@ class DuplicateEntries {
       std::string key;
       for (const std::string& s : path_) key += s + "/";
       key += match[1].str();
+      set_.push_back({path_, match[1].str(), file, number});
       const auto [it, fresh] = where_.try_emplace(key, file, number);
       if (!fresh && it->second.first == file) {
         throw InputError(fmt::format(
@@ -82,14 +83,17 @@ class DuplicateEntries {
     }
   }
 
+  std::vector<SetEntry> entries() && { return std::move(set_); }
+
  private:
+  std::vector<SetEntry> set_;
   std::vector<std::string> path_;
   std::map<std::string, std::pair<std::string, std::size_t>> where_;
   bool continued_ = false;
 };
 
 void expand(const std::filesystem::path& file, const std::string& kind, int depth,
-            ExpandedText& out, DuplicateEntries& duplicates) {
+            ExpandedText& out, SetEntries& entries) {
   if (depth > kMaxIncludeDepth) {
     throw InputError(fmt::format("{}: includes nest deeper than {} at '{}' (does a file include "
                                  "itself?)",
@@ -103,9 +107,9 @@ void expand(const std::filesystem::path& file, const std::string& kind, int dept
     if (std::regex_match(line, match, include_line)) {
       std::filesystem::path included = match[1].str();
       if (included.is_relative()) included = file.parent_path() / included;
-      expand(included, kind, depth + 1, out, duplicates);
+      expand(included, kind, depth + 1, out, entries);
     } else {
-      duplicates.check(line, file.string(), number, kind);
+      entries.check(line, file.string(), number, kind);
       out.text += line + "\n";
       out.origin.emplace_back(file.string(), number);
     }
@@ -137,16 +141,18 @@ void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text
   }
 }
 
-void parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
-                          const std::string& kind) {
+std::vector<SetEntry> parse_parameter_file(dealii::ParameterHandler& prm,
+                                           const std::filesystem::path& file,
+                                           const std::string& kind) {
   ExpandedText expanded;
-  DuplicateEntries duplicates;
-  expand(file, kind, 0, expanded, duplicates);
+  SetEntries entries;
+  expand(file, kind, 0, expanded, entries);
   try {
     parse_parameter_text(prm, expanded.text, file.string());
   } catch (const InputError& error) {
     throw InputError(fmt::format("{} '{}': {}", kind, file.string(), locate(error.what(), expanded)));
   }
+  return std::move(entries).entries();
 }
 
 }  // namespace softglass

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace dealii {
 class ParameterHandler;
@@ -19,6 +20,14 @@ namespace softglass {
 void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text,
                           const std::string& source);
 
+/// An entry the file sets: its subsections from the top, its name, and where.
+struct SetEntry {
+  std::vector<std::string> subsections;
+  std::string name;
+  std::string file;
+  std::size_t line = 0;
+};
+
 /// Parses the parameter file `file`. It must be a readable file (a directory
 /// is named as one); a UTF-8 byte-order mark before its first line is skipped,
 /// as editors on Windows write one; `include <file>` lines are replaced by that
@@ -27,8 +36,9 @@ void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text
 /// twice in one file is an error (deal.II would keep the last in silence); a
 /// file may set again an entry of a file it includes, the later `set` winning.
 /// Messages begin "<kind> '<file>'" (kind: "parameter file", "law file"...)
-/// and name the file and line the user wrote, through includes.
-void parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
+/// and name the file and line the user wrote, through includes. Returns the
+/// entries the file sets, in order (for checks of what a command uses).
+std::vector<SetEntry> parse_parameter_file(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                           const std::string& kind);
 
 }  // namespace softglass

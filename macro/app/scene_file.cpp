@@ -40,7 +40,23 @@ void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
 }
 
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
-  parse_parameter_file(prm, file, "scene file");
+  const std::vector<SetEntry> entries = parse_parameter_file(prm, file, "scene file");
+  const std::string chosen = prm.get("scene");
+  const std::vector<std::string> names = scenes().names();
+  for (const SetEntry& e : entries) {
+    if (e.subsections.empty() || e.subsections.front() == chosen ||
+        std::find(names.begin(), names.end(), e.subsections.front()) == names.end())
+      continue;
+    throw InputError(fmt::format(
+        "scene file '{}', line {} of file '{}': '{}/{}' is set, but the scene is '{}'{}; set "
+        "scene = {} to use it, or remove the subsection",
+        file.string(), e.line, e.file, e.subsections.front(), e.name, chosen,
+        std::any_of(entries.begin(), entries.end(),
+                    [](const SetEntry& s) { return s.subsections.empty() && s.name == "scene"; })
+            ? ""
+            : " (the default: the file does not set scene)",
+        e.subsections.front()));
+  }
 }
 
 namespace {

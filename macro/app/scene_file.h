@@ -21,6 +21,8 @@ void declare_scene_file(dealii::ParameterHandler& prm);
 /// file's text (FILE relative to the including file); a missing file, unknown
 /// entries, values that do not match their pattern (e.g. a unit written after
 /// a number) → InputError naming the file, line and entry.
+/// An entry of a scene other than the one `scene` chooses is refused (it would
+/// be ignored in silence: pressure gradients read as angular velocities).
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file);
 
 /// The same for text already read (includes expanded); `source` names it.

@@ -141,6 +141,22 @@ TEST_F(MacroCli, ErrorsNameTheUsersLineAndLeaveNothingBehind) {
   EXPECT_EQ(std::count(error_.begin(), error_.end(), '\n'), 1) << "one line: " << error_;
 }
 
+// Entries of a scene the file does not choose were ignored in silence: a
+// channel's pressure gradients ran as the default cone and plate's angular
+// velocities. Now refused, naming the entry, the scene in force and the fix.
+TEST_F(MacroCli, EntriesOfAnotherSceneAreRefused) {
+  EXPECT_EQ(run("include material.prm\nsubsection channel\n set half height = 0.01\nend\n"
+                "subsection sweep\n set values = 100, 1000\nend\n"),
+            2);
+  for (const char* part : {"line 3 of file", "'channel/half height' is set, but the scene is 'cone-plate'",
+                           "does not set scene", "set scene = channel"})
+    EXPECT_NE(error_.find(part), std::string::npos) << part << " in " << error_;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  EXPECT_EQ(run(couette("") + "subsection duct\n set width = 0.01\nend\n"), 2);
+  EXPECT_NE(error_.find("'duct/width' is set, but the scene is 'couette'"), std::string::npos)
+      << error_;
+}
+
 TEST_F(MacroCli, UnitsAfterNumbersAreRejected) {
   EXPECT_EQ(run(couette(" set length = 50 mm\n")), 2);
   EXPECT_NE(error_.find("length"), std::string::npos) << error_;
