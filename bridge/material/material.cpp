@@ -116,6 +116,27 @@ Material make_material(const Law& law, const MaterialRequest& request) {
             fmt::format("the {} flow index at phi = {} comes out as {:.3g}, outside (0, 2]",
                         column_name(q), request.phi, n));
   }
+  // Every number the material file will hold must be finite: an extreme E* or
+  // eta_s (1e308 Pa) overflows the scaling of the reduced law into inf, which
+  // would be written with exit 0 and refused only later by macro.
+  const auto finite = [&](const MaterialValue& v, Quantity q, const char* name) {
+    require(std::isfinite(v.value) && std::isfinite(v.error()),
+            fmt::format("the {} {} at phi = {} comes out as {:.3g} +- {:.3g}, not a finite number: "
+                        "E* = {:.3g} Pa and eta_s = {:.3g} Pa s are beyond what the law can be "
+                        "scaled to",
+                        column_name(q), name, request.phi, v.value, v.error(), request.modulus,
+                        request.viscosity));
+  };
+  for (Quantity q : {Quantity::sigma, Quantity::N1, Quantity::N2}) {
+    if (!m.laws[index(q)]) continue;
+    finite(m.laws[index(q)]->yield, q, "yield stress");
+    finite(m.laws[index(q)]->consistency, q, "consistency");
+    finite(m.laws[index(q)]->index, q, "flow index");
+  }
+  require(std::isfinite(m.rate_min) && std::isfinite(m.rate_max) && m.rate_min > 0,
+          fmt::format("the law's shear rates at E* = {:.3g} Pa, eta_s = {:.3g} Pa s come out as "
+                      "{:.3g} ... {:.3g} 1/s, not finite and positive",
+                      request.modulus, request.viscosity, m.rate_min, m.rate_max));
   const MaterialLaw& shear = *m.laws[index(Quantity::sigma)];
   require(shear.yield.value >= 0 && shear.consistency.value > 0,
           fmt::format("the shear law at phi = {} comes out with tau_y = {:.3g} Pa, K = {:.3g}: "

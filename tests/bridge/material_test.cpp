@@ -118,5 +118,18 @@ TEST(Material, RefusesVolumeFractionsOutsideTheSimulatedRange) {
   EXPECT_THROW(make_material(law, {0.8, kModulus, 0.0, false}), InputError);
 }
 
+// E* = 1e308 Pa is a finite input whose scaled law is not (the consistency
+// E* k G0 (η_s/E*)^½ overflows on the way). It is refused naming E* and η_s,
+// never written as inf (issue 19, class 3).
+TEST(Material, RefusesAnInputWhoseScaledLawIsNotFinite) {
+  const Law law = testing::exact_law({});
+  try {
+    make_material(law, {0.80, 1e308, kViscosity, false});
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    expect_contains(e.what(), {"not a finite number", "E* = 1e+308 Pa"});
+  }
+}
+
 }  // namespace
 }  // namespace softglass::bridge
