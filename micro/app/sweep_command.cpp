@@ -6,7 +6,8 @@
 // run is written whole under a temporary name and renamed into place, so a
 // file that exists is finished and a rerun skips it. The table is always
 // rebuilt from the run files, so an interrupted and resumed sweep ends with the
-// table of an uninterrupted one.
+// table of an uninterrupted one. A file is reused only if it stores the
+// parameters the sweep file now gives (finished_work.h).
 #include "micro/app/sweep_command.h"
 
 #include <fmt/format.h>
@@ -22,6 +23,7 @@
 #include "common/errors.h"
 #include "common/progress.h"
 #include "common/version.h"
+#include "micro/app/finished_work.h"
 #include "micro/app/run_steps.h"
 #include "micro/results/flow_curve_table.h"
 #include "micro/sweep/directory_lock.h"
@@ -53,13 +55,59 @@ void log(const Workers& workers, fmt::format_string<Args...> format, Args&&... a
   std::fflush(stdout);
 }
 
-void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers,
-                  bool quiet) {
-  const auto start = Clock::now();
+// The parameters of a packing and of a case: what their files store, and what
+// a rerun compares them with (finished_work.h).
+MicroParameters parameters_of(const Sweep& sweep, const SweepPacking& packing) {
   SweepCaseSettings settings = settings_of(sweep, packing.volume_fraction, packing.seed,
                                            sweep.parameters.base.shear_model.gamma_tilde);
   settings.output = packing.file;
-  const MicroParameters prm = case_parameters(sweep.parameters.base, settings);
+  return case_parameters(sweep.parameters.base, settings);
+}
+
+MicroParameters parameters_of(const Sweep& sweep, const SweepCase& c) {
+  // The quasi-static case takes the file's γ̃, which its parameters must hold
+  // but nothing uses: its record says protocol aqs and γ̃ = 0.
+  SweepCaseSettings settings =
+      settings_of(sweep, c.volume_fraction, c.seed,
+                  c.quasi_static ? sweep.parameters.base.shear_model.gamma_tilde : c.gamma_tilde);
+  settings.packing_input = sweep.plan.packings[c.packing].file;
+  settings.output = c.file;
+  return case_parameters(sweep.parameters.base, settings);
+}
+
+QuasiStaticSettings quasi_static_settings(const Sweep& sweep) {
+  return {.strain_step = sweep.plan.quasi_static_strain_step};
+}
+
+// The parameter text a case's run file stores: the quasi-static case's heads
+// it with what the file's entries do not say.
+std::string stored_parameters(const Sweep& sweep, const SweepCase& c, const std::string& text) {
+  if (!c.quasi_static) return text;
+  const QuasiStaticSettings aqs = quasi_static_settings(sweep);
+  return fmt::format(
+      "# The quasi-static (AQS) case of a sweep: strain step {}, minimiser force tolerance {}; "
+      "the stopping rule of subsection shear applies, its gamma dot tilde, the drag and the "
+      "integrator do not.\n{}",
+      aqs.strain_step, aqs.relative_force, text);
+}
+
+// Every packing and run already in the folder must be the computation the
+// sweep file now asks for; a changed contact law, N or run length is refused
+// rather than mixed into the table.
+void require_finished_work_matches(const Sweep& sweep) {
+  for (const SweepPacking& p : sweep.plan.packings)
+    if (std::filesystem::exists(p.file))
+      require_same_computation(p.file, parameters_of(sweep, p).text,
+                               {"particles", "packing", "contact law"});
+  for (const SweepCase& c : sweep.plan.cases)
+    if (std::filesystem::exists(c.file))
+      require_same_computation(c.file, stored_parameters(sweep, c, parameters_of(sweep, c).text));
+}
+
+void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers,
+                  bool quiet) {
+  const auto start = Clock::now();
+  const MicroParameters prm = parameters_of(sweep, packing);
   std::filesystem::create_directories(packing.file.parent_path());
   AtomicOutput out(packing.file, false);
   RunRecord record = pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", quiet);
@@ -85,14 +133,7 @@ std::string rate_text(const SweepCase& c) {
 void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
               const std::function<void(double)>& progress) {
   const auto start = Clock::now();
-  // The quasi-static case takes the file's γ̃, which its parameters must hold
-  // but nothing uses: its record says protocol aqs and γ̃ = 0.
-  SweepCaseSettings settings =
-      settings_of(sweep, c.volume_fraction, c.seed,
-                  c.quasi_static ? sweep.parameters.base.shear_model.gamma_tilde : c.gamma_tilde);
-  settings.packing_input = sweep.plan.packings[c.packing].file;
-  settings.output = c.file;
-  const MicroParameters prm = case_parameters(sweep.parameters.base, settings);
+  const MicroParameters prm = parameters_of(sweep, c);
   std::filesystem::create_directories(c.file.parent_path());
   AtomicOutput out(c.file, false);
   const std::shared_ptr<const ContactLaw> law = make_contact_law(prm.contact_law);
@@ -102,14 +143,10 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
   const auto follow = [&](double strain, double) {
     progress(std::min(1.0, strain / prm.protocol.max_strain));
   };
+  record.parameters = stored_parameters(sweep, c, record.parameters);
   if (c.quasi_static) {
-    const QuasiStaticSettings aqs{.strain_step = sweep.plan.quasi_static_strain_step};
-    record.parameters = fmt::format(
-        "# The quasi-static (AQS) case of a sweep: strain step {}, minimiser force tolerance {}; "
-        "the stopping rule of subsection shear applies, its gamma dot tilde, the drag and the "
-        "integrator do not.\n{}",
-        aqs.strain_step, aqs.relative_force, record.parameters);
-    shear_quasi_statically_and_analyse(record, prm, law, aqs, follow, checkpoints);
+    shear_quasi_statically_and_analyse(record, prm, law, quasi_static_settings(sweep), follow,
+                                       checkpoints);
   } else {
     shear_and_analyse(record, prm, law, follow, checkpoints);
   }
@@ -320,6 +357,7 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
     if (workers.leader()) print_plan(sweep);
     return;
   }
+  require_finished_work_matches(sweep);
   if (options.only_case) return run_one_case(sweep, *options.only_case, workers, options.quiet);
 
   std::optional<DirectoryLock> lock;

@@ -75,6 +75,26 @@ TEST_F(MicroCli, SweepWritesTheFlowCurveTablesAndSkipsFinishedWorkOnARerun) {
   EXPECT_NE(again.out.find("4 cases (4 done)"), std::string::npos) << again.out;
   EXPECT_EQ(again.out.find("run      phi"), std::string::npos) << "nothing is run again";
   EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
+
+  // The folder's finished work is reused only for the same computation: a
+  // changed contact law, N or run length is refused naming the entry, and the
+  // table is left as it was (it used to be rewritten from the old runs under
+  // a header naming the new parameters; issue 19, class 1).
+  std::string longer = sweep_file("out", entries, 1.0);
+  longer.replace(longer.find("set max strain = 1\n"), 19, "set max strain = 1.5\n");
+  const std::map<std::string, std::string> changes = {
+      {"contact law/law = seth2011",
+       sweep_file("out", entries, 1.0) + "subsection contact law\n  set law = hertz\nend\n"},
+      {"shear/max strain = 1", longer}};
+  for (const auto& [was, text] : changes) {
+    parameters("s.prm", text);
+    const Outcome changed = micro("--threads 1 sweep s.prm --quiet");
+    EXPECT_EQ(changed.code, 2) << changed.err;
+    EXPECT_NE(changed.err.find("a finished result of another computation"), std::string::npos)
+        << changed.err;
+    EXPECT_NE(changed.err.find(was), std::string::npos) << was << " in " << changed.err;
+    EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
+  }
 }
 
 // The columns of a CSV table's data rows, by name (units dropped).
