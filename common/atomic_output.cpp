@@ -1,7 +1,11 @@
 #include "common/atomic_output.h"
 
+#include <fcntl.h>
+#include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <system_error>
 
 #include "common/errors.h"
@@ -19,8 +23,20 @@ AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
   if (!std::filesystem::is_directory(dir)) {
     throw InputError("output directory '" + dir.string() + "' does not exist");
   }
+  if (std::filesystem::is_directory(final_)) {
+    throw InputError("output '" + final_.string() + "' is a directory; name a file to write");
+  }
   temporary_ = final_;
   temporary_ += ".tmp" + std::to_string(::getpid());
+  // The temporary file is claimed now, so that an output that cannot be
+  // written (a read-only folder, a full quota) is refused before the work, not
+  // after it.
+  const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+  if (fd < 0) {
+    throw InputError(fmt::format("cannot write in output directory '{}': {}", dir.string(),
+                                 std::strerror(errno)));
+  }
+  ::close(fd);
 }
 
 AtomicOutput::~AtomicOutput() {
@@ -31,7 +47,12 @@ AtomicOutput::~AtomicOutput() {
 }
 
 void AtomicOutput::commit() {
-  std::filesystem::rename(temporary_, final_);
+  std::error_code error;
+  std::filesystem::rename(temporary_, final_, error);
+  if (error) {
+    throw NumericalError(fmt::format("cannot put the finished '{}' in place of '{}': {}",
+                                     temporary_.string(), final_.string(), error.message()));
+  }
   committed_ = true;
 }
 

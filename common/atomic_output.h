@@ -11,7 +11,10 @@ namespace softglass {
 
 class AtomicOutput {
  public:
-  /// Refuses (OutputExistsError) when `final_path` exists and `overwrite` is false.
+  /// Refuses (OutputExistsError) when `final_path` exists and `overwrite` is
+  /// false; InputError when it is a directory, or when its directory is
+  /// missing or cannot be written (the temporary file is created here, before
+  /// any work, and removed again unless committed).
   AtomicOutput(std::filesystem::path final_path, bool overwrite);
   ~AtomicOutput();
   AtomicOutput(const AtomicOutput&) = delete;
@@ -21,7 +24,8 @@ class AtomicOutput {
   const std::filesystem::path& temporary_path() const { return temporary_; }
   const std::filesystem::path& final_path() const { return final_; }
 
-  /// Renames the temporary file onto the final path (atomic on POSIX).
+  /// Renames the temporary file onto the final path (atomic on POSIX);
+  /// NumericalError naming both paths and the reason if it cannot.
   void commit();
 
  private:

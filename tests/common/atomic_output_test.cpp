@@ -118,5 +118,40 @@ TEST_F(AtomicOutputTest, AnEmptyPathIsAnInputError) {
   EXPECT_THROW(AtomicOutput(fs::path(), false), InputError);
 }
 
+// An output that cannot be written is refused when the output is claimed,
+// before any work (issue 19, class 6): a directory in place of the file
+// (with --force too), and a folder without write permission.
+TEST_F(AtomicOutputTest, ADirectoryInPlaceOfTheOutputIsRefusedBeforeTheWork) {
+  fs::create_directory(dir_ / "taken");
+  try {
+    AtomicOutput output(dir_ / "taken", true);
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("is a directory"), std::string::npos) << error.what();
+  }
+  EXPECT_TRUE(fs::is_empty(dir_ / "taken"));
+}
+
+// Needs a user whom permissions bind: root writes anyway, so it is skipped there.
+TEST_F(AtomicOutputTest, AReadOnlyFolderIsRefusedBeforeTheWork) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes into a read-only folder";
+  fs::create_directory(dir_ / "locked");
+  fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+  try {
+    AtomicOutput output(dir_ / "locked" / "result.h5", false);
+    FAIL() << "no InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("cannot write in output directory"),
+              std::string::npos)
+        << error.what();
+  }
+  fs::permissions(dir_ / "locked", fs::perms::owner_all);
+}
+
+TEST_F(AtomicOutputTest, TheTemporaryFileExistsFromTheStart) {
+  AtomicOutput output(result(), false);
+  EXPECT_TRUE(fs::exists(output.temporary_path())) << "claimed before the work";
+}
+
 }  // namespace
 }  // namespace softglass
