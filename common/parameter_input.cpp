@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <utility>
@@ -44,52 +45,63 @@ std::string read_text(const std::filesystem::path& file, const std::string& kind
   return s;
 }
 
-// Follows the subsections of the expanded text, listing the entries set, so
-// that an entry set twice in one file is found: deal.II keeps the last value in silence, and a second
-// `set` in one file is a slip (an edited copy) more often than an intention.
-// A file may set again what a file it includes set: that is how a shared base
-// file is specialised.
-class SetEntries {
+// The statements of a parameter text, line by line: follows the subsections
+// and continuation lines, and returns each `set` as an entry.
+class Statements {
  public:
-  void check(std::string line, const std::string& file, std::size_t number,
-             const std::string& kind) {
+  std::optional<SetEntry> read(std::string line, const std::string& file, std::size_t number) {
     const auto last = line.find_last_not_of(" \t\r");
-    const bool continues = last != std::string::npos && line[last] == '\\';
     const bool statement = !continued_;
-    continued_ = continues;
-    if (!statement) return;
+    continued_ = last != std::string::npos && line[last] == '\\';
+    if (!statement) return std::nullopt;
     line = line.substr(0, line.find('#'));
     static const std::regex subsection(R"(^\s*subsection\s+(.*\S)\s*$)");
     static const std::regex end(R"(^\s*end\s*$)");
-    static const std::regex set(R"(^\s*set\s+([^=]*\S)\s*=.*$)");
+    static const std::regex set(R"(^\s*set\s+([^=]*\S)\s*=\s*(.*?)\s*$)");
     std::smatch match;
     if (std::regex_match(line, match, subsection)) {
       path_.push_back(match[1].str());
     } else if (std::regex_match(line, end)) {
       if (!path_.empty()) path_.pop_back();
     } else if (std::regex_match(line, match, set)) {
-      std::string key;
-      for (const std::string& s : path_) key += s + "/";
-      key += match[1].str();
-      set_.push_back({path_, match[1].str(), file, number});
-      const auto [it, fresh] = where_.try_emplace(key, file, number);
-      if (!fresh && it->second.first == file) {
-        throw InputError(fmt::format(
-            "{} '{}', line {}: '{}' is set a second time in this file (first on line {}); set "
-            "each entry once",
-            kind, file, number, key, it->second.second));
-      }
-      it->second = {file, number};
+      return SetEntry{path_, match[1].str(), match[2].str(), file, number};
     }
+    return std::nullopt;
+  }
+
+ private:
+  std::vector<std::string> path_;
+  bool continued_ = false;
+};
+
+// The entries of the expanded text, checked as they come: an entry set twice
+// in one file is refused (deal.II keeps the last value in silence, and a
+// second `set` in one file is a slip, an edited copy, more often than an
+// intention). A file may set again what a file it includes set: that is how
+// a shared base file is specialised.
+class SetEntries {
+ public:
+  void check(const std::string& line, const std::string& file, std::size_t number,
+             const std::string& kind) {
+    std::optional<SetEntry> entry = statements_.read(line, file, number);
+    if (!entry) return;
+    const auto [it, fresh] = where_.try_emplace(entry->key(), file, number);
+    if (!fresh && it->second.first == file) {
+      throw InputError(fmt::format(
+          "{} '{}', line {}: '{}' is set a second time in this file (first on line {}); set "
+          "each entry once",
+          kind, file, number, entry->key(), it->second.second));
+    }
+    it->second = {file, number};
+    set_.push_back(std::move(*entry));
   }
 
   std::vector<SetEntry> entries() && { return std::move(set_); }
 
  private:
+  Statements statements_;
   std::vector<SetEntry> set_;
-  std::vector<std::string> path_;
   std::map<std::string, std::pair<std::string, std::size_t>> where_;
-  bool continued_ = false;
 };
 
 void expand(const std::filesystem::path& file, const std::string& kind, int depth,
@@ -130,6 +142,22 @@ std::string locate(const std::string& message, const ExpandedText& expanded) {
 }
 
 }  // namespace
+
+std::string SetEntry::key() const {
+  std::string key;
+  for (const std::string& s : subsections) key += s + "/";
+  return key + name;
+}
+
+std::vector<SetEntry> entries_set_in(const std::string& text, const std::string& file) {
+  Statements statements;
+  std::vector<SetEntry> entries;
+  std::istringstream in(text);
+  std::size_t number = 0;
+  for (std::string line; std::getline(in, line);)
+    if (auto entry = statements.read(line, file, ++number)) entries.push_back(std::move(*entry));
+  return entries;
+}
 
 void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text,
                           const std::string& source) {

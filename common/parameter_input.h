@@ -20,13 +20,22 @@ namespace softglass {
 void parse_parameter_text(dealii::ParameterHandler& prm, const std::string& text,
                           const std::string& source);
 
-/// An entry the file sets: its subsections from the top, its name, and where.
+/// An entry a file sets: its subsections from the top, its name, its value
+/// (trimmed, comment dropped), and where.
 struct SetEntry {
   std::vector<std::string> subsections;
   std::string name;
+  std::string value;
   std::string file;
   std::size_t line = 0;
+
+  /// "subsection/…/name".
+  std::string key() const;
 };
+
+/// The entries `text` sets, in order (its `include` lines are not followed);
+/// `file` names it in the entries.
+std::vector<SetEntry> entries_set_in(const std::string& text, const std::string& file);
 
 /// Parses the parameter file `file`. It must be a readable file (a directory
 /// is named as one); a UTF-8 byte-order mark before its first line is skipped,

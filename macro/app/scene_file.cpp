@@ -34,11 +34,6 @@ void declare_scene_file(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
-                      const std::string& source) {
-  parse_parameter_text(prm, text, source);
-}
-
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
   const std::vector<SetEntry> entries = parse_parameter_file(prm, file, "scene file");
   const std::string chosen = prm.get("scene");

@@ -25,10 +25,6 @@ void declare_scene_file(dealii::ParameterHandler& prm);
 /// be ignored in silence: pressure gradients read as angular velocities).
 void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file);
 
-/// The same for text already read (includes expanded); `source` names it.
-void parse_scene_text(dealii::ParameterHandler& prm, const std::string& text,
-                      const std::string& source);
-
 /// What every command takes from a scene file: declares and parses it into
 /// `prm` with the command line's overrides (`preset`, a `material` fragment;
 /// empty: none), and reads the material and the solver settings.

@@ -3,46 +3,30 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <regex>
 #include <sstream>
 #include <vector>
 
 #include "common/errors.h"
 #include "common/h5_file.h"
+#include "common/parameter_input.h"
 
 namespace softglass::micro {
 
 namespace {
 
-// The entries of a printed parameter text as "subsection/…/name = value", in
-// order. The documentation comments of the listing are dropped (they change
-// with the software's wording, not with the computation); the heading lines a
-// tool puts before the listing (the quasi-static case's strain step) are kept.
-std::vector<std::string> entries_of(const std::string& text) {
-  static const std::regex subsection(R"(^\s*subsection\s+(.*\S)\s*$)");
-  static const std::regex end(R"(^\s*end\s*$)");
-  static const std::regex set(R"(^\s*set\s+([^=]*\S)\s*=\s*([^#]*?)\s*(#.*)?$)");
-  std::vector<std::string> path, out;
-  bool listing = false;
+// What a stored parameter text says about the computation: the heading lines
+// a tool puts before the listing (the quasi-static case's strain step), then
+// every entry as "subsection/…/name = value". The listing's documentation
+// comments are left out (they change with the software's wording, not with
+// the computation), and so are the entries that only say where files are.
+std::vector<std::string> computation_of(const std::string& text) {
+  std::vector<std::string> out;
   std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos) continue;
-    if (line[first] == '#') {
-      listing = listing || line.find("Listing of Parameters") != std::string::npos;
-      if (!listing) out.push_back(line);
-    } else if (std::regex_match(line, m, subsection)) {
-      path.push_back(m[1].str());
-    } else if (std::regex_match(line, end)) {
-      if (!path.empty()) path.pop_back();
-    } else if (std::regex_match(line, m, set)) {
-      if (m[1] == "file" || m[1] == "input file") continue;  // where, not what
-      std::string key;
-      for (const std::string& s : path) key += s + "/";
-      out.push_back(key + m[1].str() + " = " + m[2].str());
-    }
-  }
+  for (std::string line; std::getline(in, line) && line.starts_with("#") &&
+                         line.find("Listing of Parameters") == std::string::npos;)
+    out.push_back(line);
+  for (const SetEntry& e : entries_set_in(text, ""))
+    if (e.name != "file" && e.name != "input file") out.push_back(e.key() + " = " + e.value);
   return out;
 }
 
@@ -66,8 +50,8 @@ void require_same_computation(const std::filesystem::path& file, const std::stri
     });
     return entries;
   };
-  const std::vector<std::string> was = compared(entries_of(stored)),
-                                 now = compared(entries_of(expected));
+  const std::vector<std::string> was = compared(computation_of(stored)),
+                                 now = compared(computation_of(expected));
   for (std::size_t k = 0; k < std::max(was.size(), now.size()); ++k) {
     const std::string a = k < was.size() ? was[k] : "(nothing)";
     const std::string b = k < now.size() ? now[k] : "(nothing)";

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/parameter_input.h"
 #include "macro/app/scene_file.h"
 #include "macro/material/material_parameters.h"
 #include "macro/scenes/scene.h"
@@ -18,7 +19,7 @@ inline std::vector<std::vector<double>> run_scene(const std::string& text,
                                                   const std::vector<double>& drives) {
   dealii::ParameterHandler prm;
   app::declare_scene_file(prm);
-  app::parse_scene_text(prm, text, "test scene");
+  parse_parameter_text(prm, text, "test scene");
   const auto scene = make_scene(prm, read_material(prm), fe::read_solver_settings(prm), ".");
   std::vector<std::vector<double>> rows;
   for (double d : drives) rows.push_back(scene->solve(d).values());

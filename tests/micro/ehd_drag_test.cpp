@@ -447,6 +447,17 @@ TEST(EhdFilm, NonaffineFilmIgnoresTheAffineSliding) {
   EXPECT_NEAR(spec[i].x() / paper[i].x(), std::sqrt((0.3 + d) / d), 1e-12);
 }
 
+// The root of an increasing `f` in [lo, hi] (f(lo) < 0 < f(hi)), to
+// rounding: the closed-form pair problems below reduce to one such balance.
+template <class F>
+double root_by_bisection(F f, double lo, double hi) {
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) < 0.0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 // One implicit (backward-Euler) step of the pair from rest with the `full`
 // film: the minimiser's displacement u n of particle i (and −u n of j)
 // satisfies
@@ -470,13 +481,9 @@ TEST(EhdFilm, ImplicitStepBalancesTheFullFilmDrag) {
   const auto balance = [&](double x) {
     return p.zeta * x / h + p.a * std::sqrt(2.0 * x / h) - 0.25 * law->force((0.1 - 2.0 * x) / 0.5);
   };
-  double lo = 0.0, hi = 0.05;
-  ASSERT_LT(balance(lo), 0.0);
-  ASSERT_GT(balance(hi), 0.0);
-  for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (balance(mid) < 0.0 ? lo : hi) = mid;
-  }
+  ASSERT_LT(balance(0.0), 0.0);
+  ASSERT_GT(balance(0.05), 0.0);
+  const double lo = root_by_bisection(balance, 0.0, 0.05);
   EXPECT_NEAR(u[p.i].dot(p.n) / lo, 1.0, 1e-8);
   EXPECT_NEAR(u[p.j].dot(p.n) / -lo, 1.0, 1e-8);
 }
@@ -573,13 +580,9 @@ TEST(StokesNeighbours, ImplicitStepBalancesThePairDashpot) {
   const auto balance = [&](double x) {
     return kappa * p.zeta * x / h + 2.0 * b * x / h - 0.25 * law->force((0.1 - 2.0 * x) / 0.5);
   };
-  double lo = 0.0, hi = 0.05;
-  ASSERT_LT(balance(lo), 0.0);
-  ASSERT_GT(balance(hi), 0.0);
-  for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (balance(mid) < 0.0 ? lo : hi) = mid;
-  }
+  ASSERT_LT(balance(0.0), 0.0);
+  ASSERT_GT(balance(0.05), 0.0);
+  const double lo = root_by_bisection(balance, 0.0, 0.05);
   EXPECT_NEAR(u[p.i].dot(p.n) / lo, 1.0, 1e-8);
 }
 
