@@ -213,6 +213,10 @@ def summarise(args, name, folder, table):
         ratios = [number(p, "sigma_elastic [E*]") / number(p, "sigma_viscous [E*]")
                   for p in points if abs(float(p["phi [1]"]) - phi) < 1e-9
                   and 0 < float(p["gamma_tilde [1]"]) <= 1e-5 and number(p, "sigma_viscous [E*]") > 0]
+        # The paper's σ^v is the EHD films' part alone ("due to the EHD drag force").
+        film_ratios = [number(p, "sigma_elastic [E*]") / number(p, "sigma_film [E*]")
+                       for p in points if abs(float(p["phi [1]"]) - phi) < 1e-9
+                       and 0 < float(p["gamma_tilde [1]"]) <= 1e-5 and number(p, "sigma_film [E*]") > 0]
         g0 = number(row, "G0 [E*]")
         sy_aqs = number(row, "sigma_yield_quasi_static [E*]")
         m_aqs, m_aqs_se = anchored_exponent(points, phi)
@@ -227,6 +231,7 @@ def summarise(args, name, folder, table):
             "k1": number(row, "N1_own_k [1]"), "k1_se": number(row, "N1_own_k_se [1]"),
             "k2": number(row, "N2_own_k [1]"), "k2_se": number(row, "N2_own_k_se [1]"),
             "ev_ratio": min(ratios) if ratios else math.nan,
+            "ef_ratio": min(film_ratios) if film_ratios else math.nan,
             "G0_mason": g0 / mason_g0(phi), "sy_mason": sy_aqs / mason_yield(phi),
             "K": constants["k"], "K1": constants["k_N1"], "K2": constants["k_N2"],
             "mean_m": constants["mean_exponent"], "wall": wall})
@@ -389,14 +394,14 @@ def main():
           f"gamma~ = {', '.join(args.rates)} + AQS, {args.packings} packings, "
           f"{args.strain:g} strain per run")
     header = ("variant", "phi", "m", "m (AQS yield)", "sigma_y HB", "sigma_y AQS", "G0",
-              "gamma_y", "own k", "own k'", "own k''", "se/sv", "G0/Mason", "sy/Mason")
+              "gamma_y", "own k", "own k'", "own k''", "se/sv", "se/s_film", "G0/Mason", "sy/Mason")
     print(" ".join(f"{h:>13}" for h in header))
     for r in table:
         cells = (r["variant"], f"{r['phi']:.2f}", fmt(r["m"], r["m_se"]),
                  fmt(r["m_aqs"], r["m_aqs_se"]), fmt(r["sigma_y"]),
                  fmt(r["sigma_y_aqs"]), fmt(r["G0"], r["G0_se"]), fmt(r["gamma_y"], r["gamma_y_se"]),
                  fmt(r["k"], r["k_se"]), fmt(r["k1"], r["k1_se"]), fmt(r["k2"], r["k2_se"]),
-                 fmt(r["ev_ratio"]), fmt(r["G0_mason"]), fmt(r["sy_mason"]))
+                 fmt(r["ev_ratio"]), fmt(r["ef_ratio"]), fmt(r["G0_mason"]), fmt(r["sy_mason"]))
         print(" ".join(f"{c:>13}" for c in cells))
     write_csv(os.path.join(args.out, "summary.csv"),
               [{k: v for k, v in r.items() if not isinstance(v, dict)} for r in table])

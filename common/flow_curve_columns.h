@@ -24,9 +24,12 @@ inline constexpr const char* first_normal_difference = "N1";
 inline constexpr const char* second_normal_difference = "N2";
 
 /// The stress columns, in table order; each is followed by its standard error.
-inline constexpr std::array<const char*, 10> stresses = {
-    shear_stress,  "sigma_elastic", "sigma_viscous", first_normal_difference, "N1_elastic",
-    "N1_viscous",  second_normal_difference, "N2_elastic", "N2_viscous", "pressure"};
+/// "_film" is the EHD films' part of "_viscous" (the paper's σ^v).
+inline constexpr std::array<const char*, 13> stresses = {
+    shear_stress,       "sigma_elastic", "sigma_viscous", "sigma_film",
+    first_normal_difference, "N1_elastic", "N1_viscous", "N1_film",
+    second_normal_difference, "N2_elastic", "N2_viscous", "N2_film",
+    "pressure"};
 
 /// The standard error of column `name`.
 inline std::string error_of(std::string_view name) { return std::string(name) + "_se"; }

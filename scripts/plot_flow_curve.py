@@ -60,11 +60,14 @@ def main(table_path, prefix):
         rate = t["gamma_tilde"][at]
         ax.plot(rate, t["sigma_elastic"][at], "o-", color=colour, ms=4, label=rf"$\phi$ = {phi:.2f}")
         ax.plot(rate, t["sigma_viscous"][at], "s--", color=colour, ms=4)
+        # The films' part, where friction pair dashpots make up the rest of σ^v.
+        if "sigma_film" in t and not np.allclose(t["sigma_film"][at], t["sigma_viscous"][at]):
+            ax.plot(rate, t["sigma_film"][at], "^:", color=colour, ms=4)
         quasi_static(ax, t, phi, "sigma_elastic", 1, colour)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(r"$\tilde\gamma$")
-    ax.set_ylabel(r"$\sigma^e/E^*$ (circles), $\sigma^v/E^*$ (squares)")
+    ax.set_ylabel(r"$\sigma^e/E^*$ (circles), $\sigma^v/E^*$ (squares), films' part (triangles)")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(prefix + "_parts.png", dpi=110)

@@ -57,8 +57,9 @@ void print_shear(const ShearRecord& s, double particles) {
   }
   const ShearCounters& c = r.counters;
   fmt::print(
-      "         sigma^e/sigma^v = {:.1f}, Z = {:.3f}, layering S_y = {:.1f}, drift |z| = {:.1f}\n",
-      m.elastic_to_viscous, m.coordination, m.layering, m.drift);
+      "         sigma^e/sigma^v = {:.1f} (films alone {:.1f}), Z = {:.3f}, layering S_y = {:.1f}, "
+      "drift |z| = {:.1f}\n",
+      m.elastic_to_viscous, m.elastic_to_film, m.coordination, m.layering, m.drift);
   if (m.layered()) {
     fmt::print(
         "WARNING  the sample has layered under shear (S_y = {:.0f} > {:.0f}): these are the "
@@ -156,8 +157,11 @@ void summary_command(const std::vector<std::filesystem::path>& runs,
                o.standard_error(), o.mean != 0 ? 100 * std::abs(o.standard_error() / o.mean) : 0.0,
                o.within, o.between);
   }
-  const double viscous = a["sigma_viscous"].mean;
-  if (viscous != 0.0) fmt::print("sigma^e/sigma^v = {:.1f}\n", a["sigma_elastic"].mean / viscous);
+  const double viscous = a["sigma_viscous"].mean, film = a["sigma_film"].mean;
+  if (viscous != 0.0) {
+    fmt::print("sigma^e/sigma^v = {:.1f} (films alone {:.1f})\n", a["sigma_elastic"].mean / viscous,
+               film != 0.0 ? a["sigma_elastic"].mean / film : 0.0);
+  }
   for (const auto& run : summaries) {
     if (run.layering > kLayeredThreshold) {
       fmt::print("WARNING  {} has layered under shear (S_y = {:.0f})\n", run.file.string(),

@@ -122,7 +122,10 @@ void write_time_series(H5Group&& ts, const TimeSeries& t) {
   ts.write("stress_elastic", flatten(t.elastic), {t.size(), 3, 3},
            {"E*", "elastic stress tensor sigma^e_ij = -(1/V) sum d_i f_j, [sample][i][j]"});
   ts.write("stress_viscous", flatten(t.viscous), {t.size(), 3, 3},
-           {"E*", "viscous (EHD) stress tensor sigma^v_ij, not symmetric, [sample][i][j]"});
+           {"E*", "viscous stress tensor sigma^v_ij (EHD films and Stokes pair dashpots), "
+                  "not symmetric, [sample][i][j]"});
+  ts.write("stress_film", flatten(t.film), {t.size(), 3, 3},
+           {"E*", "the EHD films' part of sigma^v_ij, [sample][i][j]"});
   ts.write("coordination", t.coordination, {}, {"1", "Z = 2 x contacts / N"});
   ts.write(
       "layering", t.layering, {},
@@ -149,6 +152,12 @@ TimeSeries read_time_series(const H5Group& ts, const std::string& where) {
   };
   t.elastic = tensors("stress_elastic");
   t.viscous = tensors("stress_viscous");
+  if (!ts.has_child("stress_film")) {
+    throw InputError(fmt::format("'{}': no dataset 'stress_film' (the films' part of the viscous "
+                                 "stress): written before softglass recorded it; run it again",
+                                 where));
+  }
+  t.film = tensors("stress_film");
   if (t.coordination.size() != t.size() || t.step.size() != t.size() || t.layering.size() != t.size()) {
     throw InputError(fmt::format("'{}': time-series datasets differ in length", where));
   }

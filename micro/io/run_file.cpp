@@ -82,6 +82,7 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   sum.set_attribute("averaged_strain", r.summary.averaged_strain);
   sum.set_attribute("transient_resolved", static_cast<std::int64_t>(r.summary.transient_resolved));
   sum.set_attribute("elastic_to_viscous", r.summary.elastic_to_viscous);
+  sum.set_attribute("elastic_to_film", r.summary.elastic_to_film);
   sum.set_attribute("coordination", r.summary.coordination);
   sum.set_attribute("drift", r.summary.drift);
   sum.set_attribute("layering", r.summary.layering);

@@ -339,24 +339,27 @@ void EhdDrag::line_search(const ContactList& c, std::span<const Vec3> force,
   }
 }
 
-Eigen::Matrix3d EhdDrag::virial(const ContactList& c, double gamma_tilde, std::span<const Vec3> v,
-                                std::span<Vec3> drag, std::span<const double> friction) const {
+DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde,
+                                  std::span<const Vec3> v, std::span<Vec3> drag,
+                                  std::span<const double> friction) const {
   std::vector<double> dashpot;
   if (settings_.stokes.has_pairs()) {
     if (friction.size() != v.size())
       throw std::invalid_argument("EhdDrag::virial: the Stokes pair dashpots need the frictions");
     settings_.stokes.pair_coefficients(c, friction, dashpot);
   }
-  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  DissipativeVirial sum;
   for (std::size_t k = 0; k < c.size(); ++k) {
     const Vec3 q = v[c.i[k]] - v[c.j[k]];
     const Vec3 w = settings_.film.sliding(c.separation[k].normalized(), q, c.separation[k]);
     const double speed = w.norm();
-    Vec3 f = Vec3::Zero();  // on i from j
+    Vec3 film = Vec3::Zero(), dashpot_force = Vec3::Zero();  // on i from j
     if (settings_.enabled && speed > 0.0)
-      f = -drag_coefficient(c, k, gamma_tilde) / std::sqrt(speed) * w;
-    if (!dashpot.empty()) f -= dashpot[k] * relative_velocity(q, c.separation[k]);
-    sum += c.separation[k] * f.transpose();
+      film = -drag_coefficient(c, k, gamma_tilde) / std::sqrt(speed) * w;
+    if (!dashpot.empty()) dashpot_force = -dashpot[k] * relative_velocity(q, c.separation[k]);
+    sum.film += c.separation[k] * film.transpose();
+    sum.friction += c.separation[k] * dashpot_force.transpose();
+    const Vec3 f = film + dashpot_force;
     if (!drag.empty()) {
       drag[c.i[k]] += f;
       drag[c.j[k]] -= f;

@@ -88,6 +88,17 @@ struct VelocitySolveStats {
   double residual = 0.0;  // final, relative
 };
 
+/// The virial of the dissipative pair forces in two parts: the EHD drag of the
+/// films (the paper's σ^v, "due to the EHD drag force") and, with the Stokes
+/// friction against the neighbours, its pair dashpots (stokes_friction.h;
+/// zero against the affine flow, where the friction is a one-body force
+/// without a virial).
+struct DissipativeVirial {
+  Eigen::Matrix3d film = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d friction = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d total() const { return film + friction; }
+};
+
 class EhdDrag {
  public:
   explicit EhdDrag(EhdSettings settings);
@@ -100,12 +111,13 @@ class EhdDrag {
                            std::span<const double> friction, std::span<const Vec3> elastic_force,
                            std::span<Vec3> v);
 
-  /// Σ_c d ⊗ f at velocities v of the pair forces that dissipate — the EHD
-  /// drag and, with `neighbours`, the Stokes pair dashpots (σ^v = −virial/V);
-  /// also the sum of those forces on each particle if `drag` is not empty.
-  /// `friction` (ζ) is needed for the dashpots only.
-  Eigen::Matrix3d virial(const ContactList& contacts, double gamma_tilde, std::span<const Vec3> v,
-                         std::span<Vec3> drag = {}, std::span<const double> friction = {}) const;
+  /// Σ_c d ⊗ f at velocities v of the pair forces that dissipate, each part
+  /// apart (σ^v = −(film + friction)/V); also the sum of those forces on each
+  /// particle if `drag` is not empty. `friction` (ζ) is needed for the
+  /// dashpots only.
+  DissipativeVirial virial(const ContactList& contacts, double gamma_tilde,
+                           std::span<const Vec3> v, std::span<Vec3> drag = {},
+                           std::span<const double> friction = {}) const;
 
  private:
   struct Geometry {  // per contact

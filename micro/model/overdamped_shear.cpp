@@ -58,7 +58,7 @@ void OverdampedShear::evaluate() {
       viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity, {}, friction_);
   } else {
     for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * field.force[a];
-    viscous_virial_.setZero();
+    viscous_virial_ = {};
   }
   elastic_virial_ = field.virial;
 
@@ -79,7 +79,8 @@ void OverdampedShear::evaluate() {
 StressSample OverdampedShear::stress() const {
   if (!stress_valid_) throw std::logic_error("stress requested at an evaluation that skipped it");
   const double volume = system_.box().volume();
-  return {-elastic_virial_ / volume, -viscous_virial_ / volume};
+  return {-elastic_virial_ / volume, -viscous_virial_.total() / volume,
+          -viscous_virial_.film / volume};
 }
 
 void OverdampedShear::prepare_step(double dt) {

@@ -39,10 +39,13 @@ struct ShearModel {
   double friction(double radius) const;
 };
 
-/// Stress tensors (units of E*), σ = −(1/V) Σ d ⊗ f over contacts.
+/// Stress tensors (units of E*), σ = −(1/V) Σ d ⊗ f over contacts: σ^e of the
+/// elastic forces, σ^v of the dissipative ones, and σ^film ⊆ σ^v the part of
+/// the EHD films alone (σ^v − σ^film is the Stokes pair dashpots').
 struct StressSample {
   Eigen::Matrix3d elastic = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d viscous = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d film = Eigen::Matrix3d::Zero();
   Eigen::Matrix3d total() const { return elastic + viscous; }
 };
 
@@ -85,7 +88,8 @@ class OverdampedShear {
     std::vector<Vec3> position, velocity;
     ContactSystem::Tracking tracking;
     double strain, relaxation_rate, max_speed;
-    Eigen::Matrix3d elastic_virial, viscous_virial;
+    Eigen::Matrix3d elastic_virial;
+    DissipativeVirial viscous_virial;
     bool stress_valid;
   };
   /// Copies into `into`'s buffers (no allocation once they have grown).
@@ -105,7 +109,7 @@ class OverdampedShear {
   double relaxation_rate_ = 0.0;
   double max_speed_ = 0.0;
   Eigen::Matrix3d elastic_virial_ = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d viscous_virial_ = Eigen::Matrix3d::Zero();
+  DissipativeVirial viscous_virial_;
   VelocitySolveStats last_solve_;
   std::size_t evaluations_ = 0;
 };

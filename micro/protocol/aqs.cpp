@@ -95,6 +95,7 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings, const AqsO
     result.series.strain.push_back(system.box().strain() - start);
     result.series.elastic.push_back(sigma);
     result.series.viscous.push_back(Eigen::Matrix3d::Zero());
+    result.series.film.push_back(Eigen::Matrix3d::Zero());
     result.series.coordination.push_back(2.0 * double(field.contact_count) / double(n));
     result.series.layering.push_back(0.0);
     result.series.step.push_back(dg);

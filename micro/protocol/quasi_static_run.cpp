@@ -53,6 +53,7 @@ void append(const AqsResult& r, const Layout& l, double segment_start,
     state.series.strain.push_back(segment_start + r.series.strain[first + per - 1]);
     state.series.elastic.push_back(elastic);
     state.series.viscous.push_back(Eigen::Matrix3d::Zero());
+    state.series.film.push_back(Eigen::Matrix3d::Zero());
     state.series.coordination.push_back(coordination);
     state.series.layering.push_back(0.0);
     state.series.step.push_back(r.series.step[first + per - 1]);

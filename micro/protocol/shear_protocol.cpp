@@ -46,7 +46,7 @@ const std::vector<std::string>& shear_observable_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
     for (const char* base : {"sigma", "N1", "N2", "pressure"})
-      for (const char* part : {"", "_elastic", "_viscous"}) n.push_back(std::string(base) + part);
+      for (const char* part : {"", "_elastic", "_viscous", "_film"}) n.push_back(std::string(base) + part);
     return n;
   }();
   return names;
@@ -59,6 +59,7 @@ std::vector<double> TimeSeries::component(const std::string& observable) const {
   const auto value = [&](std::size_t k) -> double {
     const Eigen::Matrix3d s = part == "elastic"   ? elastic[k]
                               : part == "viscous" ? viscous[k]
+                              : part == "film"    ? film[k]
                                                   : Eigen::Matrix3d(elastic[k] + viscous[k]);
     const ShearObservables o = observables(s);
     if (base == "sigma") return o.shear;
@@ -123,6 +124,8 @@ ShearSummary summarise(const TimeSeries& series, double min_stationary_strain) {
   }
   const double viscous = summary["sigma_viscous"].mean;
   summary.elastic_to_viscous = viscous != 0.0 ? summary["sigma_elastic"].mean / viscous : 0.0;
+  const double film = summary["sigma_film"].mean;
+  summary.elastic_to_film = film != 0.0 ? summary["sigma_elastic"].mean / film : 0.0;
   double z = 0.0, layering = 0.0;
   for (std::size_t k = first; k < series.size(); ++k) {
     z += series.coordination[k];

@@ -46,6 +46,7 @@ struct ShearProtocol {
 struct TimeSeries {
   std::vector<double> strain;
   std::vector<Eigen::Matrix3d> elastic, viscous;  // σ^e, σ^v (units of E*)
+  std::vector<Eigen::Matrix3d> film;              // σ^film ⊆ σ^v, the EHD films' part
   std::vector<double> coordination;               // Z = 2 × contacts / N
   std::vector<double> layering;                   // S_y, analysis/layering.h
   std::vector<double> step;                       // last accepted step (strain)
@@ -56,7 +57,8 @@ struct TimeSeries {
 };
 
 /// Names of the scalar observables: σ, N1, N2, Π and their elastic and viscous
-/// parts ("sigma", "sigma_elastic", "sigma_viscous", "N1", …).
+/// parts and the films' share of the viscous one ("sigma", "sigma_elastic",
+/// "sigma_viscous", "sigma_film", "N1", …).
 const std::vector<std::string>& shear_observable_names();
 
 struct ObservableEstimate {
@@ -73,6 +75,7 @@ struct ShearSummary {
   bool transient_resolved = false;
   std::vector<ObservableEstimate> observables;  // in shear_observable_names() order
   double elastic_to_viscous = 0.0;              // σ^e / σ^v
+  double elastic_to_film = 0.0;                 // σ^e / σ^film, the paper's ratio
   double coordination = 0.0;                    // mean Z over the stationary part
   double drift = 0.0;                           // largest |z| of σ, N1, N2 (drift_statistic)
   double layering = 0.0;                        // mean S_y over the stationary part

@@ -132,6 +132,7 @@ class SteadyShearRun {
     series.strain.push_back(flow_.strain());
     series.elastic.push_back(s.elastic);
     series.viscous.push_back(s.viscous);
+    series.film.push_back(s.film);
     series.coordination.push_back(2.0 * static_cast<double>(flow_.contact_count()) /
                                   static_cast<double>(flow_.system().size()));
     series.layering.push_back(

@@ -33,7 +33,7 @@ void expect_valid(const ShearCheckpoint& c, const std::string& input) {
       "the state", input);
   EXPECT_FALSE(std::isnan(c.worst)) << input;  // inf before the first check
   expect_all_finite(c.series.strain, "series strain", input);
-  for (const auto* tensors : {&c.series.elastic, &c.series.viscous})
+  for (const auto* tensors : {&c.series.elastic, &c.series.viscous, &c.series.film})
     for (const Eigen::Matrix3d& s : *tensors) expect_all_finite(s.reshaped(), "a stress", input);
   for (const Snapshot& snap : c.snapshots) {
     expect_finite(snap.strain, "a snapshot strain", input);

@@ -26,7 +26,7 @@ void expect_valid(const TimeSeries& t, const std::string& input) {
   expect_all_finite(t.coordination, "coordination", input);
   expect_all_finite(t.layering, "layering", input);
   expect_all_finite(t.step, "step", input);
-  for (const auto* tensors : {&t.elastic, &t.viscous})
+  for (const auto* tensors : {&t.elastic, &t.viscous, &t.film})
     for (const Eigen::Matrix3d& s : *tensors) expect_all_finite(s.reshaped(), "a stress", input);
   EXPECT_EQ(t.coordination.size(), t.size()) << input;
   EXPECT_EQ(t.elastic.size(), t.size()) << input;

@@ -133,7 +133,8 @@ TEST(EhdDrag, ImplicitVelocitiesSatisfyTheForceBalance) {
   // its virial is Σ d ⊗ f^EHD. A few roundings apart: 1e-12 relative.
   EhdDrag engine({.tolerance = kTolerance});
   std::vector<Vec3> engine_drag(n, Vec3::Zero());
-  const Eigen::Matrix3d virial = engine.virial(field.contacts, kGammaTilde, s.v, engine_drag);
+  const Eigen::Matrix3d virial =
+      engine.virial(field.contacts, kGammaTilde, s.v, engine_drag).total();
   const double drag_scale = max_norm(drag);
   for (std::size_t a = 0; a < n; ++a) {
     EXPECT_LE((engine_drag[a] - drag[a]).norm(), 1e-12 * drag_scale) << "particle " << a;
@@ -258,7 +259,7 @@ TEST(EhdDrag, ZeroWithoutTangentialVelocity) {
   ASSERT_EQ(c.size(), 1u);
   std::vector<Vec3> v = {Vec3(0.5, 0, 0), Vec3(-0.5, 0, 0)};
   std::vector<Vec3> drag(2, Vec3::Zero());
-  const Eigen::Matrix3d virial = EhdDrag({}).virial(c, kGammaTilde, v, drag);
+  const Eigen::Matrix3d virial = EhdDrag({}).virial(c, kGammaTilde, v, drag).total();
   EXPECT_EQ(drag[0], Vec3::Zero());
   EXPECT_EQ(drag[1], Vec3::Zero());
   EXPECT_TRUE((virial.array() == 0.0).all());
@@ -290,6 +291,8 @@ TEST(EhdDrag, ShearDynamicsUsesTheImplicitVelocities) {
   const Eigen::Matrix3d viscous = flow.stress().viscous;
   EXPECT_LE((viscous - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
   EXPECT_GT(expected.cwiseAbs().maxCoeff(), 0.0);
+  // Against the affine flow the friction has no virial: σ^v is the films' alone.
+  EXPECT_TRUE((flow.stress().film.array() == viscous.array()).all());
 }
 
 TEST(EhdDrag, DisabledDragGivesFreeDrainingVelocitiesAndNoViscousStress) {
@@ -536,13 +539,14 @@ TEST(StokesNeighbours, ImplicitVelocitiesSatisfyTheForceBalance) {
   std::vector<double> z(n, 0.0);
   for (std::size_t k = 0; k < c.size(); ++k) z[c.i[k]] += 1, z[c.j[k]] += 1;
   std::vector<Vec3> pair_force = spec_drag_per_particle(c, kGammaTilde, v);
-  Eigen::Matrix3d expected_virial = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d expected_film = Eigen::Matrix3d::Zero(), expected_friction = expected_film;
   for (std::size_t k = 0; k < c.size(); ++k) {
     const double b = (1.0 - kappa) * 0.5 * (zeta[c.i[k]] / z[c.i[k]] + zeta[c.j[k]] / z[c.j[k]]);
     const Vec3 q0 = v[c.i[k]] - v[c.j[k]] + Vec3(c.separation[k].y(), 0.0, 0.0);
     pair_force[c.i[k]] -= b * q0;
     pair_force[c.j[k]] += b * q0;
-    expected_virial += c.separation[k] * (spec_drag(c, k, kGammaTilde, v) - b * q0).transpose();
+    expected_film += c.separation[k] * spec_drag(c, k, kGammaTilde, v).transpose();
+    expected_friction -= c.separation[k] * (b * q0).transpose();
   }
   const double scale = std::max(1.0, max_norm(v));
   double worst = 0.0;
@@ -551,9 +555,12 @@ TEST(StokesNeighbours, ImplicitVelocitiesSatisfyTheForceBalance) {
     worst = std::max(worst, residual.norm() / zeta[a] / scale);
   }
   EXPECT_LE(worst, kTolerance);
-  const Eigen::Matrix3d virial = drag.virial(c, kGammaTilde, v, {}, zeta);
-  EXPECT_LE((virial - expected_virial).cwiseAbs().maxCoeff(),
-            1e-12 * expected_virial.cwiseAbs().maxCoeff());
+  // The virial in its two parts: the films' (the paper's σ^v) and the dashpots'.
+  const DissipativeVirial virial = drag.virial(c, kGammaTilde, v, {}, zeta);
+  EXPECT_LE((virial.film - expected_film).cwiseAbs().maxCoeff(),
+            1e-12 * expected_film.cwiseAbs().maxCoeff());
+  EXPECT_LE((virial.friction - expected_friction).cwiseAbs().maxCoeff(),
+            1e-12 * expected_friction.cwiseAbs().maxCoeff());
 }
 
 // One implicit step of the pair with the neighbour dashpots (no EHD): the

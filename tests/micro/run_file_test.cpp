@@ -87,6 +87,7 @@ TEST(RunFile, PackingAndTimeSeriesRoundTripExactly) {
     ASSERT_TRUE(same_bits(t.strain[k], s.strain[k])) << "sample " << k;
     ASSERT_TRUE(same_bits(t.elastic[k], s.elastic[k])) << "sample " << k;  // row/column order too
     ASSERT_TRUE(same_bits(t.viscous[k], s.viscous[k])) << "sample " << k;
+    ASSERT_TRUE(same_bits(t.film[k], s.film[k])) << "sample " << k;
     ASSERT_TRUE(same_bits(t.coordination[k], s.coordination[k])) << "sample " << k;
     ASSERT_TRUE(same_bits(t.layering[k], s.layering[k])) << "sample " << k;
     ASSERT_TRUE(same_bits(t.step[k], s.step[k])) << "sample " << k;

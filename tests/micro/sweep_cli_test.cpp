@@ -163,6 +163,7 @@ TEST_F(MicroCli, SweepQuasiStaticCaseIsTheLowEndOfTheFlowCurve) {
   EXPECT_LT(aqs.at("sigma"), rate.at("sigma")) << "sigma_y <= sigma(gamma~)";
   EXPECT_EQ(aqs.at("sigma_viscous"), 0.0);
   EXPECT_EQ(aqs.at("sigma_viscous_se"), 0.0);
+  EXPECT_EQ(aqs.at("sigma_film"), 0.0);
   EXPECT_EQ(aqs.at("sigma"), aqs.at("sigma_elastic"));
   EXPECT_EQ(aqs.at("G0"), rate.at("G0")) << "one packing";
   EXPECT_EQ(table_rows(work() / "out/flow_curve_packings.csv").at(0).at("gamma_tilde"), 0.0);
