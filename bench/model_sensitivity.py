@@ -66,6 +66,8 @@ def piecewise(breakpoints, exponents):
 # name -> (entries {(subsection, entry): value}, one-line description)
 VARIANTS = {
     "literal": ({}, "the paper read literally: seth2011, f_r = 0.01, tangential EHD"),
+    # The model presets (micro/input/model_preset.h); softglass = nominal+neighbours.
+    "softglass": ({("model", "preset"): "softglass"}, "the softglass model preset"),
     "fr0.05": ({("shear", "mobility factor"): "0.05"}, "literal, f_r = 0.05"),
     "fr0.2": ({("shear", "mobility factor"): "0.2"}, "literal, f_r = 0.2"),
     "fr1": ({("shear", "mobility factor"): "1"}, "literal, f_r = 1"),

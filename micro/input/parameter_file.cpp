@@ -11,6 +11,7 @@
 #include "common/deal_ii_message.h"
 #include "common/parameter_input.h"
 #include "common/errors.h"
+#include "micro/input/model_preset.h"
 
 namespace softglass::micro {
 
@@ -22,6 +23,7 @@ namespace Patterns = dealii::Patterns;
 /// What the file sets, before conversion to the engine's types.
 struct Entries {
   MicroParameters p;
+  std::string model_preset = kDefaultModelPreset;
   std::string coupling = "implicit";
   std::string film_velocity = "tangential";
   std::string stokes_reference = "affine";
@@ -76,6 +78,16 @@ void declare_coefficients(ParameterHandler& prm, const ContactLawEntry& law, Ent
         break;
     }
   }
+}
+
+void declare_model(ParameterHandler& prm, Entries& e) {
+  prm.enter_subsection("model");
+  entry(prm, "preset", e.model_preset,
+        "A whole reading of the paper's model (docs/fidelity.md); it sets entries of "
+        "subsections 'contact law' and 'drag', and every entry this file sets itself wins:" +
+            model_preset_documentation(),
+        Patterns::Selection(model_preset_names()));
+  prm.leave_subsection();
 }
 
 void declare_particles(ParameterHandler& prm, Entries& e) {
@@ -262,6 +274,7 @@ void declare_output(ParameterHandler& prm, Entries& e) {
 
 // Every entry of a `micro run` file, subsection by subsection.
 void declare(ParameterHandler& prm, Entries& e) {
+  declare_model(prm, e);
   declare_particles(prm, e);
   declare_packing(prm, e);
   declare_contact_law(prm, e);
@@ -402,11 +415,23 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
 
 }  // namespace
 
+// A file is read twice: once for the model preset it chooses, then with that
+// preset's entries in place of the defaults, so that the file's own entries
+// override the preset's wherever they stand in it.
+void parse_with_model_preset(ParameterHandler& prm, const std::filesystem::path& file) {
+  std::string preset = kDefaultModelPreset;
+  for (const SetEntry& set : parse_parameter_file(prm, file, "parameter file"))
+    if (set.subsections == std::vector<std::string>{"model"} && set.name == "preset")
+      preset = set.value;
+  apply_model_preset(prm, preset);
+  parse_parameter_file(prm, file, "parameter file");
+}
+
 MicroParameters read_parameter_file(const std::filesystem::path& file) {
   ParameterHandler prm;
   Entries e;
   declare(prm, e);
-  parse_parameter_file(prm, file, "parameter file");
+  parse_with_model_preset(prm, file);
   return convert(prm, e, file);
 }
 
@@ -416,7 +441,7 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   SweepEntries s;
   declare(prm, e);
   declare_sweep(prm, s);
-  parse_parameter_file(prm, file, "parameter file");
+  parse_with_model_preset(prm, file);
   SweepParameters sweep;
   sweep.base = convert(prm, e, file);
   sweep.spec = s.spec;
