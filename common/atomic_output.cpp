@@ -4,13 +4,41 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cerrno>
 #include <cstring>
+#include <string>
 #include <system_error>
 
 #include "common/errors.h"
 
 namespace softglass {
+
+namespace {
+
+const std::string kTemporarySuffix = ".tmp";
+
+// Removes `<final>.tmp<PID>` files beside `final` whose process is gone (kill
+// with signal 0 reports ESRCH). A live process's temporary is kept, whoever
+// owns it; only the file name decides, so nothing else is ever removed.
+void remove_dead_temporaries(const std::filesystem::path& final) {
+  const auto dir = final.has_parent_path() ? final.parent_path() : std::filesystem::path(".");
+  const std::string prefix = final.filename().string() + kTemporarySuffix;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      std::filesystem::remove(entry.path(), ignored);
+    }
+  }
+}
+
+}  // namespace
 
 AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
     : final_(std::move(final_path)) {
@@ -27,7 +55,7 @@ AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
     throw InputError("output '" + final_.string() + "' is a directory; name a file to write");
   }
   temporary_ = final_;
-  temporary_ += ".tmp" + std::to_string(::getpid());
+  temporary_ += kTemporarySuffix + std::to_string(::getpid());
   // The temporary file is claimed now, so that an output that cannot be
   // written (a read-only folder, a full quota) is refused before the work, not
   // after it.
@@ -54,6 +82,7 @@ void AtomicOutput::commit() {
                                      temporary_.string(), final_.string(), error.message()));
   }
   committed_ = true;
+  remove_dead_temporaries(final_);
 }
 
 }  // namespace softglass

@@ -2,7 +2,10 @@
 //
 // The file is written under a temporary name in the same directory and renamed
 // onto the final path only when `commit()` is called; an exception or a kill
-// before that leaves any earlier file at the final path untouched.
+// before that leaves any earlier file at the final path untouched. A killed
+// process cannot remove its temporary file (`<final>.tmp<PID>`); the next
+// process that completes the same output removes those of processes no longer
+// alive on this machine.
 #pragma once
 
 #include <filesystem>
@@ -24,7 +27,8 @@ class AtomicOutput {
   const std::filesystem::path& temporary_path() const { return temporary_; }
   const std::filesystem::path& final_path() const { return final_; }
 
-  /// Renames the temporary file onto the final path (atomic on POSIX);
+  /// Renames the temporary file onto the final path (atomic on POSIX) and
+  /// removes the temporaries of this output left by dead processes;
   /// NumericalError naming both paths and the reason if it cannot.
   void commit();
 

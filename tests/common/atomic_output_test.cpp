@@ -3,7 +3,10 @@
 #include "common/atomic_output.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <filesystem>
 #include <fstream>
@@ -151,6 +154,36 @@ TEST_F(AtomicOutputTest, AReadOnlyFolderIsRefusedBeforeTheWork) {
 TEST_F(AtomicOutputTest, TheTemporaryFileExistsFromTheStart) {
   AtomicOutput output(result(), false);
   EXPECT_TRUE(fs::exists(output.temporary_path())) << "claimed before the work";
+}
+
+// A process killed while writing leaves its temporary file; the next process
+// that completes the same output removes it, and keeps a live process's one
+// (PID 1 is always alive) and any other file.
+TEST_F(AtomicOutputTest, TheNextCompletedOutputRemovesTheTemporariesOfKilledProcesses) {
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    AtomicOutput output(result(), false);
+    std::ofstream(output.temporary_path()) << "half";
+    ::raise(SIGKILL);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  const fs::path killed = result().string() + ".tmp" + std::to_string(child);
+  ASSERT_TRUE(fs::exists(killed)) << "a killed process cannot clean up";
+  const fs::path alive = result().string() + ".tmp1";
+  const fs::path other = result().string() + ".tmp-notes";
+  write_text(alive, "live");
+  write_text(other, "mine");
+
+  AtomicOutput output(result(), false);
+  write_text(output.temporary_path(), "complete");
+  output.commit();
+  EXPECT_FALSE(fs::exists(killed));
+  EXPECT_TRUE(fs::exists(alive));
+  EXPECT_TRUE(fs::exists(other));
+  EXPECT_EQ(read_text(result()), "complete");
 }
 
 }  // namespace
