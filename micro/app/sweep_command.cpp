@@ -91,17 +91,45 @@ std::string stored_parameters(const Sweep& sweep, const SweepCase& c, const std:
       aqs.strain_step, aqs.relative_force, text);
 }
 
-// Every packing and run already in the folder must be the computation the
-// sweep file now asks for; a changed contact law, N or run length is refused
-// rather than mixed into the table.
-void require_finished_work_matches(const Sweep& sweep) {
-  for (const SweepPacking& p : sweep.plan.packings)
+// Before any work: every packing's and case's parameters are built, which
+// checks them (a value wrong only in combination with the sweep's, such as N =
+// 1, is one message up front instead of one failure per packing), and every
+// packing and run already in the folder must be the computation the sweep file
+// now asks for; a changed contact law, N or run length is refused rather than
+// mixed into the table.
+template <class Work>
+MicroParameters checked_parameters_of(const Sweep& sweep, const Work& work) {
+  try {
+    return parameters_of(sweep, work);
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("sweep, phi = {}, packing seed {}: {}", work.volume_fraction,
+                                 work.seed, error.what()));
+  }
+}
+
+void check_cases_before_work(const Sweep& sweep) {
+  for (const SweepPacking& p : sweep.plan.packings) {
+    const MicroParameters prm = checked_parameters_of(sweep, p);
     if (std::filesystem::exists(p.file))
-      require_same_computation(p.file, parameters_of(sweep, p).text,
-                               {"particles", "packing", "contact law"});
-  for (const SweepCase& c : sweep.plan.cases)
+      require_same_computation(p.file, prm.text, {"particles", "packing", "contact law"});
+  }
+  for (const SweepCase& c : sweep.plan.cases) {
+    const MicroParameters prm = checked_parameters_of(sweep, c);
     if (std::filesystem::exists(c.file))
-      require_same_computation(c.file, stored_parameters(sweep, c, parameters_of(sweep, c).text));
+      require_same_computation(c.file, stored_parameters(sweep, c, prm.text));
+  }
+}
+
+// The wall time of the cases not yet done, from the plan's cost model (core
+// seconds per 5 strain, docs/sweeps.md) at the runs' shortest length, spread
+// over the workers: a lower estimate, within about a factor 2.
+double estimated_hours(const Sweep& sweep, std::size_t workers) {
+  const double strain = sweep.plan.run ? sweep.plan.run->min_strain
+                                       : sweep.parameters.base.protocol.min_strain;
+  double seconds = 0.0;
+  for (const SweepCase& c : sweep.plan.cases)
+    if (!std::filesystem::exists(c.file)) seconds += c.cost * std::max(strain, 1.0) / 5.0;
+  return seconds / static_cast<double>(workers) / 3600.0;
 }
 
 void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers,
@@ -357,7 +385,7 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
     if (workers.leader()) print_plan(sweep);
     return;
   }
-  require_finished_work_matches(sweep);
+  check_cases_before_work(sweep);
   if (options.only_case) return run_one_case(sweep, *options.only_case, workers, options.quiet);
 
   std::optional<DirectoryLock> lock;
@@ -366,9 +394,11 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
     if (workers.leader()) {
       std::size_t done = 0;
       for (const auto& c : plan.cases) done += std::filesystem::exists(c.file);
-      log(workers, "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}",
+      log(workers,
+          "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}; estimated at "
+          "least {:.2g} h (cost model, docs/sweeps.md)",
           sweep.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
-          plan.directory.string());
+          plan.directory.string(), estimated_hours(sweep, workers.size()));
     }
     make_packings(sweep, workers);
     run_cases(sweep, workers, options.quiet);

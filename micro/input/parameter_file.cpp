@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -418,13 +419,15 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
 // A file is read twice: once for the model preset it chooses, then with that
 // preset's entries in place of the defaults, so that the file's own entries
 // override the preset's wherever they stand in it.
-void parse_with_model_preset(ParameterHandler& prm, const std::filesystem::path& file) {
+// Returns the entries the file sets.
+std::vector<SetEntry> parse_with_model_preset(ParameterHandler& prm,
+                                              const std::filesystem::path& file) {
   std::string preset = kDefaultModelPreset;
   for (const SetEntry& set : parse_parameter_file(prm, file, "parameter file"))
     if (set.subsections == std::vector<std::string>{"model"} && set.name == "preset")
       preset = set.value;
   apply_model_preset(prm, preset);
-  parse_parameter_file(prm, file, "parameter file");
+  return parse_parameter_file(prm, file, "parameter file");
 }
 
 MicroParameters read_parameter_file(const std::filesystem::path& file) {
@@ -441,7 +444,19 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   SweepEntries s;
   declare(prm, e);
   declare_sweep(prm, s);
-  parse_with_model_preset(prm, file);
+  const std::vector<SetEntry> set = parse_with_model_preset(prm, file);
+  // A run file given to `micro sweep` would start the default preset's hours
+  // of work: a sweep file says at least which sweep it is.
+  if (std::none_of(set.begin(), set.end(),
+                   [](const SetEntry& e) { return !e.subsections.empty() && e.subsections.front() == "sweep"; })) {
+    throw InputError(fmt::format(
+        "'{}' sets nothing in subsection 'sweep': it is not a sweep file (a run file is for "
+        "`micro run`); a sweep file names at least its preset, e.g. 'subsection sweep / set "
+        "preset = fast' (docs/sweeps.md)",
+        file.string()));
+  }
+  require(s.particles != 1,
+          "sweep: particles = 1; allowed: 0 (the preset's N) or 2 ... 50000000");
   SweepParameters sweep;
   sweep.base = convert(prm, e, file);
   sweep.spec = s.spec;

@@ -261,6 +261,41 @@ TEST_F(MicroCli, SweepRefusesBadSweepFiles) {
   EXPECT_FALSE(fs::exists(work() / "out" / "flow_curve.csv"));
 }
 
+// Mistakes that used to cost hours or fail late: a run file given to `micro
+// sweep` (it started the default preset), N = 1 (refused once per packing
+// after the sweep began), a value wrong only in combination with a sweep's
+// volume fraction. Each is one exit-2 message before anything is written.
+TEST_F(MicroCli, SweepRefusesMistakesBeforeAnyWork) {
+  parameters("run.prm", "subsection particles\n  set number = 200\nend\n");
+  Outcome o = micro("sweep run.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("sets nothing in subsection 'sweep': it is not a sweep file"),
+            std::string::npos)
+      << o.err;
+
+  const std::string one_point =
+      "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4\n  set packings = 1\n";
+  parameters("one.prm", sweep_file("out", one_point, 1.0, 1));
+  o = micro("sweep one.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("particles = 1; allowed: 0 (the preset's N) or 2"), std::string::npos)
+      << o.err;
+
+  parameters("combined.prm",
+             sweep_file("out",
+                        "  set volume fractions = 0.66, 0.8\n  set gamma dot tildes = 1e-4\n"
+                        "  set packings = 1\n",
+                        1.0) +
+                 "subsection packing\n  set initial volume fraction = 0.7\nend\n");
+  o = micro("sweep combined.prm");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.err.find("phi = 0.66, packing seed 1: initial volume fraction = 0.7 exceeds"),
+            std::string::npos)
+      << o.err;
+  EXPECT_EQ(o.out.find("packing "), std::string::npos) << "no packing was made:\n" << o.out;
+  EXPECT_FALSE(fs::exists(work() / "out"));
+}
+
 TEST_F(MicroCli, SweepRunsOneCaseOfABatchArray) {
   parameters("s.prm",
              sweep_file("out",
