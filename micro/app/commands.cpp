@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "common/atomic_output.h"
 #include "common/progress.h"
@@ -123,14 +124,19 @@ void run_command(const CommandOptions& options) {
 }
 
 void analyze_command(const AnalyzeOptions& options) {
+  // Every output is claimed before the analysis, so that a refusal (exit 3)
+  // leaves nothing written.
   const StoredSnapshots stored = read_stationary_snapshots(options.run_file);
+  require_structure_replaceable(options.run_file, options.force);
+  std::optional<StructureCsv> csv;
+  if (!options.csv_prefix.empty()) csv.emplace(options.csv_prefix, options.force);
   StructureSettings settings;  // defaults, overridden by the options
   if (options.bin_width) settings.bin_width = *options.bin_width;
   if (options.slab) settings.slab = *options.slab;
   const auto law = make_contact_law(stored.contact_law);
   const StructureRecord record =
       analyse_snapshots(stored.snapshots, stored.radius, stored.side, *law, settings);
-  if (!options.csv_prefix.empty()) write_structure_csv(options.csv_prefix, record, options.force);
+  if (csv) csv->write(record);
   update_structure(options.run_file, record, options.force);
   print_structure(record);
   fmt::print("written  {} (/structure){}\n", options.run_file.string(),

@@ -373,17 +373,17 @@ StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path) {
   return s;
 }
 
+void require_structure_replaceable(const std::filesystem::path& path, bool replace) {
+  const H5File check = H5File::open(path);
+  if (check.root().has_child("structure") && !replace) {
+    throw OutputExistsError(fmt::format(
+        "'{}' holds a structure analysis already; pass --force to replace it", path.string()));
+  }
+}
+
 void update_structure(const std::filesystem::path& path, const StructureRecord& structure,
                       bool replace) {
-  {
-    const H5File check = H5File::open(path);
-    if (check.root().has_child("structure") && !replace) {
-      throw OutputExistsError(
-          fmt::format("'{}' holds a structure analysis already; pass --force to "
-                      "replace it",
-                      path.string()));
-    }
-  }
+  require_structure_replaceable(path, replace);
   AtomicOutput out(path, /*overwrite=*/true);
   std::filesystem::copy_file(path, out.temporary_path(),
                              std::filesystem::copy_options::overwrite_existing);

@@ -101,6 +101,10 @@ struct StoredSnapshots {
 };
 StoredSnapshots read_stationary_snapshots(const std::filesystem::path& path);
 
+/// OutputExistsError if the run file holds a /structure group and `replace` is
+/// false: checked before an analysis is computed.
+void require_structure_replaceable(const std::filesystem::path& path, bool replace);
+
 /// Writes (or, with `replace`, rewrites) the /structure group of an existing
 /// run file; the file is updated through a copy renamed over it, so that a
 /// failure leaves it as it was. OutputExistsError if /structure exists and

@@ -4,16 +4,16 @@
 
 #include <fstream>
 #include <functional>
-#include <optional>
-
-#include "common/atomic_output.h"
 
 namespace softglass::micro {
 
-void write_structure_csv(const std::string& prefix, const StructureRecord& record, bool force) {
+StructureCsv::StructureCsv(const std::string& prefix, bool force)
+    : harmonics_(prefix + "_harmonics.csv", force),
+      map_(prefix + "_map.csv", force),
+      summary_(prefix + "_summary.csv", force) {}
+
+void StructureCsv::write(const StructureRecord& record) {
   const StructureResult& s = record.result;
-  AtomicOutput harmonics(prefix + "_harmonics.csv", force), map(prefix + "_map.csv", force),
-      summary(prefix + "_summary.csv", force);
   const auto write = [](AtomicOutput& out, const std::function<void(std::ofstream&)>& body) {
     {
       std::ofstream f(out.temporary_path());
@@ -23,7 +23,7 @@ void write_structure_csv(const std::string& prefix, const StructureRecord& recor
     out.commit();
   };
 
-  write(harmonics, [&](std::ofstream& f) {
+  write(harmonics_, [&](std::ofstream& f) {
     f << "r [R]";
     for (const char* name : kHarmonicNames) f << "," << name << " [1]," << name << "_error [1]";
     for (const char* name : kHarmonicNames) f << ",f" << name << " [E* R^2],f" << name << "_error [E* R^2]";
@@ -35,14 +35,14 @@ void write_structure_csv(const std::string& prefix, const StructureRecord& recor
       f << "\n";
     }
   });
-  write(map, [&](std::ofstream& f) {
+  write(map_, [&](std::ofstream& f) {
     f << fmt::format("# g(r, theta), pairs with |dz| < {} R\n", s.settings.slab);
     f << "r [R],theta [rad],g [1]\n";
     for (std::size_t b = 0; b < s.map_r.size(); ++b)
       for (std::size_t t = 0; t < s.map_theta.size(); ++t)
         f << fmt::format("{:.6g},{:.6g},{:.6e}\n", s.map_r[b], s.map_theta[t], s.map[b * s.map_theta.size() + t]);
   });
-  write(summary, [&](std::ofstream& f) {
+  write(summary_, [&](std::ofstream& f) {
     f << fmt::format("# {} snapshots, strain {:.3f} to {:.3f}\n", s.snapshots, record.strain_from,
                      record.strain_to);
     f << "quantity,value,standard_error,units\n";

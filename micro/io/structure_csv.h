@@ -6,12 +6,21 @@
 
 #include <string>
 
+#include "common/atomic_output.h"
 #include "micro/io/run_file.h"
 
 namespace softglass::micro {
 
-/// Writes the three files (atomically each); OutputExistsError if one exists
-/// and `force` is false, before anything is written.
-void write_structure_csv(const std::string& prefix, const StructureRecord& record, bool force);
+class StructureCsv {
+ public:
+  /// Claims the three files: OutputExistsError if one exists and `force` is
+  /// false, before the analysis is computed.
+  StructureCsv(const std::string& prefix, bool force);
+  /// Writes them (atomically each).
+  void write(const StructureRecord& record);
+
+ private:
+  AtomicOutput harmonics_, map_, summary_;
+};
 
 }  // namespace softglass::micro

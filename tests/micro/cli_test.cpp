@@ -320,6 +320,9 @@ TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
 
   const Outcome again = micro("analyze run.h5 --csv run");  // the run wrote /structure already
   EXPECT_EQ(again.code, 3) << again.err;
+  for (const char* table : {"run_harmonics.csv", "run_map.csv", "run_summary.csv"}) {
+    EXPECT_FALSE(fs::exists(work() / table)) << table << ": refused, so nothing is written";
+  }
   const Outcome forced = micro("analyze run.h5 --csv run --force --bin-width 0.01");
   ASSERT_EQ(forced.code, 0) << forced.err;
   for (const char* table : {"run_harmonics.csv", "run_map.csv", "run_summary.csv"}) {
