@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -39,6 +40,23 @@ void remove_dead_temporaries(const std::filesystem::path& final) {
 }
 
 }  // namespace
+
+void write_text_file(const std::filesystem::path& path, const std::string& shown,
+                     const std::function<void(std::ostream&)>& body) {
+  errno = 0;
+  std::ofstream file(path, std::ios::binary);
+  if (file) body(file);
+  file.close();
+  if (!file) {
+    throw NumericalError(fmt::format("cannot write '{}': {}", shown,
+                                     errno != 0 ? std::strerror(errno) : "write error"));
+  }
+}
+
+void AtomicOutput::write_and_commit(const std::function<void(std::ostream&)>& body) {
+  write_text_file(temporary_, final_.string(), body);
+  commit();
+}
 
 AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
     : final_(std::move(final_path)) {

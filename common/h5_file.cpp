@@ -4,14 +4,20 @@
 // explicitly (H5Dcreate2, H5Eset_auto2, ...) rather than through their macros.
 #include "common/h5_file.h"
 
+#include <fcntl.h>
 #include <hdf5.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <functional>
 #include <new>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
+
+#include <fmt/format.h>
 
 #include "common/errors.h"
 
@@ -533,15 +539,62 @@ std::string H5Group::attribute_string(const std::string& name) const {
 
 // ---- H5File
 
+namespace {
+
+// Files written by softglass live in memory (HDF5's core driver, no backing
+// store) until close() writes their image in one checked write. HDF5 itself
+// never writes to the disk: when its own write fails (a full disk) it leaves
+// the file half-closed, and its exit handler then crashes closing it.
+H5Id in_memory_access() {
+  H5Id fapl = own(H5Pcreate(H5P_FILE_ACCESS), "cannot create an HDF5 property list");
+  check(H5Pset_fapl_core(fapl.get(), 1 << 20, /*backing_store=*/false),
+        "cannot select HDF5's in-memory driver");
+  return fapl;
+}
+
+// Writes `size` bytes to `path` (truncated first); NumericalError naming the
+// file and the system's reason otherwise.
+void write_image(const std::filesystem::path& path, const char* data, std::size_t size) {
+  const auto fail = [&](const char* step) {
+    throw NumericalError(
+        fmt::format("cannot {} '{}': {}", step, path.string(), std::strerror(errno)));
+  };
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+  if (fd < 0) fail("create");
+  std::size_t written = 0;
+  while (written < size) {
+    const ssize_t n = ::write(fd, data + written, size - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int reason = errno;
+      ::close(fd);
+      errno = reason;
+      fail("write");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) fail("write");
+}
+
+}  // namespace
+
 H5File H5File::create(const std::filesystem::path& path) {
   silence_hdf5_errors();
-  return H5File(own(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                    "cannot create HDF5 file '" + path.native() + "'"));
+  write_image(path, nullptr, 0);  // claims (and truncates) it now: a bad path fails here
+  const H5Id fapl = in_memory_access();
+  H5File file(own(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()),
+                  "cannot create HDF5 file '" + path.native() + "'"));
+  file.image_path_ = path;
+  return file;
 }
 
 H5File H5File::open(const std::filesystem::path& path) { return open_with(path, H5F_ACC_RDONLY); }
 
-H5File H5File::open_for_update(const std::filesystem::path& path) { return open_with(path, H5F_ACC_RDWR); }
+H5File H5File::open_for_update(const std::filesystem::path& path) {
+  H5File file = open_with(path, H5F_ACC_RDWR);
+  file.image_path_ = path;
+  return file;
+}
 
 H5File H5File::open_with(const std::filesystem::path& path, unsigned mode) {
   silence_hdf5_errors();
@@ -555,8 +608,11 @@ H5File H5File::open_with(const std::filesystem::path& path, unsigned mode) {
       check<InputError>(H5Fis_hdf5(path.c_str()), "cannot read " + quoted) == 0) {
     throw InputError(quoted + " is not an HDF5 file");
   }
-  return H5File(own<InputError>(H5Fopen(path.c_str(), mode, H5P_DEFAULT),
-                                "cannot open HDF5 file " + quoted));
+  // An update is read into memory and written back whole by close().
+  const H5Id fapl = mode == H5F_ACC_RDWR ? in_memory_access() : H5Id();
+  return H5File(own<InputError>(
+      H5Fopen(path.c_str(), mode, mode == H5F_ACC_RDWR ? fapl.get() : H5P_DEFAULT),
+      "cannot open HDF5 file " + quoted));
 }
 
 H5Group H5File::root() const {
@@ -565,8 +621,14 @@ H5Group H5File::root() const {
 
 void H5File::close() {
   if (id_.get() < 0) return;  // closed already
-  const auto what = "cannot write HDF5 file '" + file_name(id_.get()) + "'";
-  check(H5Fflush(id_.get(), H5F_SCOPE_LOCAL), what);
+  if (!image_path_.empty()) {
+    const auto what = "cannot write HDF5 file '" + image_path_.string() + "'";
+    check(H5Fflush(id_.get(), H5F_SCOPE_LOCAL), what);
+    const auto size = check(H5Fget_file_image(id_.get(), nullptr, 0), what);
+    std::vector<char> image(static_cast<std::size_t>(size));
+    check(H5Fget_file_image(id_.get(), image.data(), image.size()), what);
+    write_image(image_path_, image.data(), image.size());
+  }
   id_ = detail::H5Id();
 }
 

@@ -168,7 +168,8 @@ class H5Group {
 /// the file open until the last of them is closed too.
 class H5File {
  public:
-  /// Creates `path`, truncating any existing file; std::runtime_error on failure.
+  /// Creates `path`, truncating any existing file (empty until close());
+  /// std::runtime_error on failure.
   static H5File create(const std::filesystem::path& path);
   /// Opens `path` read-only; InputError naming the path if it is missing or
   /// not an HDF5 file.
@@ -180,9 +181,11 @@ class H5File {
   /// The root group "/".
   H5Group root() const;
 
-  /// Flushes everything written and closes the file, throwing
-  /// std::runtime_error if that fails. Call it before AtomicOutput::commit():
-  /// the destructor also closes, but cannot report a failed final write.
+  /// Writes a created or updated file to its path and closes it. Such a file
+  /// lives in memory until then (HDF5's core driver): a file destroyed without
+  /// close() is not written at all, and a failed write (a full disk) is a
+  /// NumericalError naming the file and the system's reason. Call it before
+  /// AtomicOutput::commit().
   void close();
 
  private:
@@ -190,6 +193,7 @@ class H5File {
   static H5File open_with(const std::filesystem::path& path, unsigned mode);
 
   detail::H5Id id_;
+  std::filesystem::path image_path_;  // where close() writes a created or updated file
 };
 
 }  // namespace softglass

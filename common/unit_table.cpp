@@ -3,23 +3,21 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <fstream>
-
-#include "common/errors.h"
+#include "common/atomic_output.h"
 #include "common/h5_file.h"
 
 namespace softglass {
 
 void write_csv(const std::filesystem::path& path, const std::filesystem::path& shown_path,
                const std::vector<std::string>& comments, const UnitTable& table, int digits) {
-  std::ofstream csv(path);
-  for (const std::string& line : comments) csv << "# " << line << "\n";
-  for (std::size_t c = 0; c < table.columns.size(); ++c)
-    csv << (c ? "," : "") << table.columns[c].name << " [" << table.columns[c].unit << "]";
-  csv << "\n";
-  for (const auto& row : table.rows) csv << fmt::format("{:.{}g}\n", fmt::join(row, ","), digits);
-  csv.close();
-  if (!csv) throw NumericalError(fmt::format("cannot write {}", shown_path.string()));
+  write_text_file(path, shown_path.string(), [&](std::ostream& csv) {
+    for (const std::string& line : comments) csv << "# " << line << "\n";
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+      csv << (c ? "," : "") << table.columns[c].name << " [" << table.columns[c].unit << "]";
+    csv << "\n";
+    for (const auto& row : table.rows)
+      csv << fmt::format("{:.{}g}\n", fmt::join(row, ","), digits);
+  });
 }
 
 void write_columns(H5Group& group, const UnitTable& table) {

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <ctime>
-#include <fstream>
 
 #include "bridge/app/law_file.h"
 #include "bridge/app/report.h"
@@ -34,10 +33,8 @@ std::filesystem::path beside(const std::filesystem::path& main, const std::strin
 }
 
 void write(AtomicOutput& out, const std::string& text) {
-  std::ofstream f(out.temporary_path(), std::ios::binary);
-  f << text;
-  f.close();
-  if (!f) throw std::runtime_error("writing " + out.temporary_path().string() + " failed");
+  write_text_file(out.temporary_path(), out.final_path().string(),
+                  [&](std::ostream& f) { f << text; });
 }
 
 }  // namespace

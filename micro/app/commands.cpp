@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 
 #include "common/atomic_output.h"
@@ -176,16 +175,13 @@ void summary_command(const std::vector<std::filesystem::path>& runs,
   }
 
   if (out) {
-    {
-      std::ofstream f(out->temporary_path());
+    out->write_and_commit([&](std::ostream& f) {
       f << "observable,mean [E*],standard_error [E*],within_runs [E*],between_packings [E*]\n";
       for (const auto& o : a.observables) {
         f << fmt::format("{},{:.10e},{:.4e},{:.4e},{:.4e}\n", o.name, o.mean, o.standard_error(),
                          o.within, o.between);
       }
-      if (!f) throw std::runtime_error("writing " + out->temporary_path().string() + " failed");
-    }
-    out->commit();
+    });
     fmt::print("written  {}\n", out->final_path().string());
   }
 }

@@ -2,9 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <functional>
-
 namespace softglass::micro {
 
 StructureCsv::StructureCsv(const std::string& prefix, bool force)
@@ -14,16 +11,7 @@ StructureCsv::StructureCsv(const std::string& prefix, bool force)
 
 void StructureCsv::write(const StructureRecord& record) {
   const StructureResult& s = record.result;
-  const auto write = [](AtomicOutput& out, const std::function<void(std::ofstream&)>& body) {
-    {
-      std::ofstream f(out.temporary_path());
-      body(f);
-      if (!f) throw std::runtime_error("writing " + out.temporary_path().string() + " failed");
-    }
-    out.commit();
-  };
-
-  write(harmonics_, [&](std::ofstream& f) {
+  harmonics_.write_and_commit([&](std::ostream& f) {
     f << "r [R]";
     for (const char* name : kHarmonicNames) f << "," << name << " [1]," << name << "_error [1]";
     for (const char* name : kHarmonicNames) f << ",f" << name << " [E* R^2],f" << name << "_error [E* R^2]";
@@ -35,14 +23,14 @@ void StructureCsv::write(const StructureRecord& record) {
       f << "\n";
     }
   });
-  write(map_, [&](std::ofstream& f) {
+  map_.write_and_commit([&](std::ostream& f) {
     f << fmt::format("# g(r, theta), pairs with |dz| < {} R\n", s.settings.slab);
     f << "r [R],theta [rad],g [1]\n";
     for (std::size_t b = 0; b < s.map_r.size(); ++b)
       for (std::size_t t = 0; t < s.map_theta.size(); ++t)
         f << fmt::format("{:.6g},{:.6g},{:.6e}\n", s.map_r[b], s.map_theta[t], s.map[b * s.map_theta.size() + t]);
   });
-  write(summary_, [&](std::ofstream& f) {
+  summary_.write_and_commit([&](std::ostream& f) {
     f << fmt::format("# {} snapshots, strain {:.3f} to {:.3f}\n", s.snapshots, record.strain_from,
                      record.strain_to);
     f << "quantity,value,standard_error,units\n";

@@ -285,6 +285,16 @@ TEST_F(BridgeCli, BadInputIsRefusedWithExitCodeTwoAndNoOutput) {
 
 // Every subcommand refuses to replace its results without --force (exit code
 // 3) and leaves them untouched.
+// A full disk (a file-size limit): exit 1 naming the file the user asked for
+// and the reason, and none of the four results left, whole or in part.
+TEST_F(BridgeCli, AFullDiskNamesTheFileAndTheReason) {
+  const Outcome o = softglass::testing::run_tool_on_full_disk(
+      SOFTGLASS_BRIDGE_EXECUTABLE, kFit, work(), dir_ / "capture", 4);
+  EXPECT_EQ(o.code, 1) << o.err;
+  expect_contains(o.err, {"cannot write 'law", "File too large"});
+  EXPECT_EQ(files(), (std::vector<std::string>{"runs.csv", "sweep.csv"}));
+}
+
 TEST_F(BridgeCli, ExistingResultsAreKeptWithoutForce) {
   // τ = 100 (1 + 80 x^½) Pa and N1 = 40 Pa + 20 · 100 x^½ Pa: both panels of Fig. 5.
   testing::write_text(work() / "data.csv",

@@ -34,6 +34,18 @@ inline Outcome run_tool(const std::filesystem::path& executable, const std::stri
   return {WEXITSTATUS(status), read_text(out), read_text(err)};
 }
 
+/// As run_tool, with every file the tool writes limited to `kilobytes`
+/// (SIGXFSZ ignored): a write beyond fails (EFBIG) as on a full disk.
+inline Outcome run_tool_on_full_disk(const std::filesystem::path& executable,
+                                     const std::string& arguments,
+                                     const std::filesystem::path& directory,
+                                     const std::filesystem::path& capture, int kilobytes) {
+  return run_tool("/bin/bash",
+                  "-c \"trap '' XFSZ; ulimit -f " + std::to_string(kilobytes) + "; exec '" +
+                      executable.string() + "' " + arguments + "\"",
+                  directory, capture);
+}
+
 /// Names of the entries of `directory`, sorted.
 inline std::vector<std::string> file_names(const std::filesystem::path& directory) {
   std::vector<std::string> names;

@@ -54,9 +54,18 @@ void expect_error(Call call, std::initializer_list<std::string> parts) {
   }
 }
 
+// A created file is written by close() (h5_file.h): `fill` writes into its
+// root, then the file is closed.
+template <class Fill>
+void create_and_close(const fs::path& path, Fill fill) {
+  H5File created = H5File::create(path);
+  fill(created.root());
+  created.close();
+}
+
 TEST_F(H5FileTest, RoundTripsOneDimensionalDoubles) {
   const std::vector<double> values = {1.5, -2.25, 1e-300, 1e300, 0.0};
-  H5File::create(file()).root().write("values", values);
+  create_and_close(file(), [&](H5Group root) { root.write("values", values); });
 
   const auto array = H5File::open(file()).root().read_array("values");
   EXPECT_EQ(array.data, values);
@@ -66,7 +75,7 @@ TEST_F(H5FileTest, RoundTripsOneDimensionalDoubles) {
 TEST_F(H5FileTest, RoundTripsRowsOfThree) {
   std::vector<double> positions;
   for (int i = 0; i < 7 * 3; ++i) positions.push_back(0.1 * i);
-  H5File::create(file()).root().write("positions", positions, {7, 3});
+  create_and_close(file(), [&](H5Group root) { root.write("positions", positions, {7, 3}); });
 
   const auto root = H5File::open(file()).root();
   const auto array = root.read_array("positions");
@@ -80,11 +89,10 @@ TEST_F(H5FileTest, CompressesLargeArraysAndReadsThemBack) {
   for (std::size_t i = 0; i < series.size(); ++i) series[i] = 0.25 * static_cast<double>(i);
   std::vector<double> rows(40000 * 3);
   for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = static_cast<double>(i % 1000);
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     root.write("series", series);
     root.write("rows", rows, {40000, 3});
-  }
+  });
   const auto raw_bytes = (series.size() + rows.size()) * sizeof(double);
   EXPECT_LT(fs::file_size(file()), raw_bytes / 4);
 
@@ -96,7 +104,7 @@ TEST_F(H5FileTest, CompressesLargeArraysAndReadsThemBack) {
 }
 
 TEST_F(H5FileTest, RoundTripsAnEmptyArray) {
-  H5File::create(file()).root().write("none", std::span<const double>{});
+  create_and_close(file(), [&](H5Group root) { root.write("none", std::span<const double>{}); });
 
   const auto array = H5File::open(file()).root().read_array("none");
   EXPECT_TRUE(array.data.empty());
@@ -109,12 +117,11 @@ TEST_F(H5FileTest, RoundTripsIntegers) {
                                          std::numeric_limits<std::int64_t>::max()};
   const std::vector<std::uint32_t> counts = {0, 7, std::numeric_limits<std::uint32_t>::max()};
   const std::vector<std::int64_t> pairs = {0, 1, 1, 2, 2, 0};
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     root.write("ids", ids);
     root.write("counts", counts);
     root.write("pairs", pairs, {3, 2});
-  }
+  });
   const auto root = H5File::open(file()).root();
   EXPECT_EQ(root.read_int_array("ids"), ids);
   EXPECT_EQ(root.read_int_array("counts"), (std::vector<std::int64_t>{0, 7, 4294967295}));
@@ -126,12 +133,11 @@ TEST_F(H5FileTest, RoundTripsIntegers) {
 
 TEST_F(H5FileTest, RoundTripsStringsAndScalars) {
   const std::string text = "τ = σ/E*\nsecond line\n\tindented ✓";
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     root.write_string("notes", text);
     root.write_string("empty", "");
     root.write_scalar("phi", 0.64);
-  }
+  });
   const auto root = H5File::open(file()).root();
   EXPECT_EQ(root.read_string("notes"), text);
   EXPECT_EQ(root.read_string("empty"), "");
@@ -141,15 +147,14 @@ TEST_F(H5FileTest, RoundTripsStringsAndScalars) {
 }
 
 TEST_F(H5FileTest, RoundTripsGroupAttributes) {
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     root.set_attribute("phi", 0.64);
     root.set_attribute("steps", 42);  // a plain int picks the integer overload
     root.set_attribute("seed", std::int64_t{1} << 40);
     root.set_attribute("model", std::string("Hertz, σ/E*"));
     root.set_attribute("status", "running");
     root.set_attribute("status", "done");  // replaces
-  }
+  });
   const auto root = H5File::open(file()).root();
   EXPECT_EQ(root.attribute_double("phi"), 0.64);
   EXPECT_EQ(root.attribute_int("steps"), 42);
@@ -163,14 +168,13 @@ TEST_F(H5FileTest, RoundTripsGroupAttributes) {
 }
 
 TEST_F(H5FileTest, NestsGroupsAndListsChildrenInOrder) {
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     root.create_group("zeta");
     auto inner = root.create_group("alpha").create_group("inner");
     inner.write_scalar("deep", 3.0);
     inner.set_attribute("level", 2);
     root.write_scalar("mid", 1.0);
-  }
+  });
   const auto root = H5File::open(file()).root();
   EXPECT_EQ(root.children(), (std::vector<std::string>{"alpha", "mid", "zeta"}));
   EXPECT_TRUE(root.group("zeta").children().empty());
@@ -188,13 +192,13 @@ TEST_F(H5FileTest, NestsGroupsAndListsChildrenInOrder) {
 TEST_F(H5FileTest, AttachesUnitsAndDescriptionsToDatasets) {
   const std::vector<double> stress = {1.0, 2.0};
   const std::vector<double> strain = {0.01, 0.02};
-  {
-    auto series = H5File::create(file()).root().create_group("timeseries");
+  create_and_close(file(), [&](H5Group root) {
+    auto series = root.create_group("timeseries");
     series.write("stress", stress, {}, {.units = "Pa", .description = "shear stress σ"});
     series.write("strain", strain);
     series.set_dataset_attribute("strain", "units", "1");
     series.write_scalar("rate", 0.5, {.units = "1/s", .description = ""});
-  }
+  });
   const auto series = H5File::open(file()).root().group("timeseries");
   EXPECT_EQ(series.dataset_attribute("stress", "units"), "Pa");
   EXPECT_EQ(series.dataset_attribute("stress", "description"), "shear stress σ");
@@ -208,12 +212,20 @@ TEST_F(H5FileTest, FilesAndGroupsMoveAndOutliveTheirFile) {
   auto created = H5File::create(file());
   H5File file_handle = std::move(created);
   auto root = file_handle.root();
-  file_handle = H5File::create(dir_ / "other.h5");  // closes run.h5 but `root` keeps it usable
-  root.write_scalar("late", 1.0);
-  file_handle.close();
+  root.write_scalar("early", 1.0);
+  file_handle.close();  // writes run.h5
   file_handle.close();  // closing twice is harmless
+  root.write_scalar("late", 2.0);  // the group stays usable; the file holds what close() wrote
   root = H5File::open(file()).root();
-  EXPECT_EQ(root.read_scalar("late"), 1.0);
+  EXPECT_EQ(root.read_scalar("early"), 1.0);
+  EXPECT_FALSE(root.has_child("late"));
+}
+
+// A file that is not closed is not written: an exception between create and
+// close leaves no file that looks complete.
+TEST_F(H5FileTest, AFileNotClosedIsNotWritten) {
+  H5File::create(file()).root().write_scalar("answer", 42.0);
+  expect_error<InputError>([&] { H5File::open(file()); }, {"run.h5", "not an HDF5 file"});
 }
 
 TEST_F(H5FileTest, WritesThroughAtomicOutput) {
@@ -244,7 +256,7 @@ TEST_F(H5FileTest, CreatingInAMissingDirectoryFails) {
 }
 
 TEST_F(H5FileTest, MissingObjectsAreNamedWithTheirPathAndFile) {
-  H5File::create(file()).root().create_group("timeseries").write_scalar("rate", 1.0);
+  create_and_close(file(), [&](H5Group root) { root.create_group("timeseries").write_scalar("rate", 1.0); });
   const auto root = H5File::open(file()).root();
   const auto series = root.group("timeseries");
 
@@ -265,14 +277,13 @@ TEST_F(H5FileTest, MissingObjectsAreNamedWithTheirPathAndFile) {
 }
 
 TEST_F(H5FileTest, ObjectsOfTheWrongKindAreRejected) {
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     const std::vector<double> values = {1.0, 2.0};
     root.write("values", values);
     root.write_string("text", "abc");
     root.set_attribute("phi", 0.5);
     root.create_group("group");
-  }
+  });
   const auto root = H5File::open(file()).root();
   expect_error<InputError>([&] { root.read_string("values"); }, {"/values", "single string"});
   expect_error<InputError>([&] { root.read_int_array("values"); }, {"/values", "integers"});
@@ -294,13 +305,12 @@ TEST_F(H5FileTest, DimsThatDoNotMatchTheDataAreRejected) {
 
 TEST_F(H5FileTest, WriteFailuresThrow) {
   const std::vector<double> values = {1.0};
-  {
-    auto root = H5File::create(file()).root();
+  create_and_close(file(), [&](H5Group root) {
     root.write("values", values);
     expect_error<std::runtime_error>([&] { root.write("values", values); },
                                      {"cannot create dataset '/values'", "exists"});
     expect_error<std::runtime_error>([&] { root.create_group("values"); }, {"'/values'"});
-  }
+  });
   auto read_only = H5File::open(file()).root();
   expect_error<std::runtime_error>([&] { read_only.write("more", values); }, {"'/more'"});
 }

@@ -304,6 +304,20 @@ TEST_F(MicroCli, LawCoefficientsFromTheParameterFileAreStoredWithTheRun) {
   for (double eps : {0.2, 0.6, 1.2}) EXPECT_EQ(rebuilt->force(eps), used->force(eps)) << eps;
 }
 
+// A full disk (a file-size limit) while the result is written: HDF5 left the
+// file half-closed and crashed at exit (exit 139). Now: exit 1 naming the
+// file and the reason, and no file left behind.
+TEST_F(MicroCli, AFullDiskIsAnErrorNamingTheReasonNotACrash) {
+  const std::string prm = parameters(
+      "big.prm", "subsection particles\n  set number = 2000\n  set volume fraction = 0.7\nend\n"
+                 "subsection output\n  set file = big.h5\nend\n");
+  const Outcome o = softglass::testing::run_tool_on_full_disk(
+      SOFTGLASS_MICRO_EXECUTABLE, "pack --quiet " + prm, work(), dir_ / "capture", 24);
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_NE(o.err.find("File too large"), std::string::npos) << o.err;
+  EXPECT_EQ(files_in_work(), std::vector<std::string>{"big.prm"});
+}
+
 TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
   // A short run stores snapshots every 0.02 strain; `analyze` adds /structure
   // and the CSV tables, refuses to replace them without --force (exit 3) and a
