@@ -14,8 +14,10 @@
 #include "common/csv_table.h"
 #include "common/errors.h"
 #include "common/version.h"
+#include "macro/app/input_scales.h"
 #include "macro/app/measured_torques.h"
 #include "macro/app/operating_points.h"
+#include "macro/app/result_folder.h"
 #include "macro/app/results_file.h"
 #include "macro/app/scene_file.h"
 #include "macro/io/overlay_plot.h"
@@ -24,6 +26,8 @@
 namespace softglass::macro::app {
 
 namespace {
+
+constexpr const char* kNoPlot = "gnuplot is not installed, failed, or wrote an incomplete file";
 
 // How far the predictions are from the measurements, e = predicted/measured − 1.
 struct Agreement {
@@ -98,14 +102,40 @@ InstrumentConstants instrument_constants(const Scene& scene, const std::string& 
   return c;
 }
 
-// The measured points of the chosen curve within the rate window, as torques.
+// The measured points of the chosen curve within the rate window, as torques,
+// thinned to --max-points; refused when they are too many to be a flow curve.
 MeasuredTorques read_measured(const CompareOptions& o, const InstrumentConstants& constants) {
   require(o.min_rate >= 0.0 && o.max_rate > o.min_rate,
           fmt::format("--min-rate {} and --max-rate {}: allowed 0 <= min < max", o.min_rate,
                       o.max_rate));
+  require(o.max_points == 0 || o.max_points >= 2,
+          fmt::format("--max-points {} is not allowed; allowed: >= 2", o.max_points));
   const auto curves =
       read_rheometer_curves(CsvTable::read(o.data_file), {o.rate_unit, o.stress_unit});
-  return measured_torques(select_curve(curves, o), constants, o.min_rate, o.max_rate);
+  MeasuredTorques m = measured_torques(select_curve(curves, o), constants, o.min_rate, o.max_rate);
+  if (o.max_points > 0) return thinned(m, o.max_points);
+  require(m.angular_velocity.size() <= kMostComparedPoints,
+          fmt::format("{}: curve '{}' has {} points in the rate window, one solve each; a measured "
+                      "flow curve has tens to hundreds, so this is taken for another kind of "
+                      "file; allowed: at most {} points: narrow the window with --min-rate and "
+                      "--max-rate, or compare N of them with --max-points N",
+                      o.data_file.string(), m.label, m.angular_velocity.size(),
+                      kMostComparedPoints));
+  return m;
+}
+
+// The measured angular velocities as entries of subsection "measurement", so
+// that a scale they make unrepresentable names them (input_scales.h).
+std::vector<SetEntry> measured_entries(const MeasuredTorques& m,
+                                       const std::filesystem::path& data_file) {
+  std::vector<SetEntry> entries;
+  for (const double omega : m.angular_velocity) {
+    entries.push_back({.subsections = {"measurement"},
+                       .name = "angular velocity",
+                       .value = fmt::format("{}", omega),
+                       .file = data_file.string()});
+  }
+  return entries;
 }
 
 // The predictions at the measured points, side by side with the measurements.
@@ -176,10 +206,10 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
   return table;
 }
 
-// Predicted against measured torque (and normal force) over Ω; false if
-// gnuplot is missing or failed.
+// Predicted against measured torque (and normal force) over Ω into `file`;
+// false if gnuplot is missing or failed.
 bool write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
-                AtomicOutput& png_file) {
+                const std::filesystem::path& file) {
   const MeasuredTorques& m = c.measured;
   io::OverlayPlot plot{
       .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
@@ -190,23 +220,20 @@ bool write_plot(const Comparison& c, const CompareOptions& o, const std::string&
       .panels = {{"torque [N m]", m.torque, c.torque}}};
   if (c.compares_force)
     plot.panels.push_back({"normal force [N]", *m.normal_force, c.normal_force});
-  const bool plotted = io::write_overlay_png(plot, png_file.temporary_path());
-  if (plotted) png_file.commit();
-  return plotted;
+  return io::write_overlay_png(plot, file);
 }
 
-void write_summary(AtomicOutput& summary_file, const std::vector<std::string>& header_lines,
+void write_summary(const std::filesystem::path& file, const std::vector<std::string>& header_lines,
                    const std::vector<std::string>& report, double wall, unsigned ranks_per_point,
                    bool plotted) {
-  std::ofstream summary(summary_file.temporary_path());
+  std::ofstream summary(file);
   for (const std::string& line : header_lines) summary << line << "\n";
   for (const std::string& line : report) summary << line << "\n";
   summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
                          dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD), ranks_per_point);
-  if (!plotted) summary << "no plot: gnuplot is not installed or failed\n";
+  if (!plotted) summary << "no plot: " << kNoPlot << "\n";
   summary.close();
-  if (!summary)
-    throw NumericalError(fmt::format("cannot write {}", summary_file.final_path().string()));
+  if (!summary) throw NumericalError("cannot write summary.txt");
 }
 
 std::filesystem::path default_directory(const std::filesystem::path& data_file,
@@ -221,9 +248,12 @@ std::vector<std::string> provenance(const CompareOptions& o, const std::string& 
   std::vector<std::string> lines{
       fmt::format("softglass macro compare {} ({})", kVersion, kGitRevision),
       fmt::format("scene: {} ({})", o.scene_file.string(), scene),
-      fmt::format("data: {}, curve '{}', {} points compared, {} outside the rate window",
+      fmt::format("data: {}, curve '{}', {} points compared, {} outside the rate window{}",
                   o.data_file.string(), measured.label, measured.angular_velocity.size(),
-                  measured.left_out),
+                  measured.left_out,
+                  measured.thinned_out > 0
+                      ? fmt::format(", {} left out by --max-points", measured.thinned_out)
+                      : ""),
       model};
   for (const std::string& c : measured.conversions) lines.push_back("derived: " + c);
   return lines;
@@ -243,7 +273,7 @@ void print_comparison(const Comparison& c, const std::vector<std::string>& repor
   for (const std::string& line : report) std::cout << line << "\n";
   std::cout << fmt::format("results: {}{}\n", (directory / "comparison.csv").string(),
                            plotted ? ", " + (directory / "comparison.png").string()
-                                   : " (no plot: gnuplot is not installed)");
+                                   : fmt::format(" (no plot: {})", kNoPlot));
 }
 
 }  // namespace
@@ -254,17 +284,22 @@ void print_comparison(const Comparison& c, const std::vector<std::string>& repor
 int compare(const CompareOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
-  auto [material, settings] = read_scene_input(prm, o.scene_file, o.preset, o.material);
+  auto [material, settings, entries] = read_scene_input(prm, o.scene_file, o.preset, o.material);
   const std::string scene_name = prm.get("scene");
+  check_entry_scales(entries, o.scene_file);
   std::unique_ptr<Scene> scene = make_scene(prm, material, settings, o.scene_file.parent_path());
   const InstrumentConstants constants = instrument_constants(*scene, scene_name, o);
   const MeasuredTorques measured = read_measured(o, constants);
+  const std::vector<SetEntry> measured_points = measured_entries(measured, o.data_file);
+  entries.insert(entries.end(), measured_points.begin(), measured_points.end());
+  check_derived_scales(*scene, material, settings, measured.angular_velocity, entries,
+                       o.scene_file);
 
   const std::filesystem::path directory =
       o.output.empty() ? default_directory(o.data_file, o.scene_file) : o.output;
-  ClaimedOutputs claimed = claim_outputs(
-      directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"}, o.force);
-  if (claimed.refused) return kExitOutputExists;
+  ResultFolder folder(directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"},
+                      o.force);
+  if (folder.refused()) return kExitOutputExists;
   // The number of points is known now; when ranks are to share meshes, the
   // scene is made again on its group's ranks.
   const RankGroups groups(measured.angular_velocity.size(), o.ranks_per_point);
@@ -274,8 +309,7 @@ int compare(const CompareOptions& o) {
   }
   std::vector<SceneResult> results = solve_operating_points(
       *scene, measured.angular_velocity, groups,
-      {.directory = directory,
-       .vtu = "none",
+      {.settings = settings,
        .label = fmt::format("macro compare {}", o.data_file.filename().string()),
        .quiet = o.quiet});
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0) return kExitOk;
@@ -286,14 +320,17 @@ int compare(const CompareOptions& o) {
   const std::vector<std::string> header_lines =
       provenance(o, scene->description(), measured, describe_model(material, settings));
 
-  write_results_csv(*claimed.files[0], header_lines, table, 8);
-  const bool plotted = write_plot(comparison, o, measured.label, *claimed.files[2]);
+  write_results_csv(folder.temporary("comparison.csv"), folder.path("comparison.csv"),
+                    header_lines, table, 8);
+  const bool plotted =
+      write_plot(comparison, o, measured.label, folder.temporary("comparison.png"));
+  if (!plotted) folder.discard("comparison.png");
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_summary(*claimed.files[1], header_lines, report, wall, groups.ranks_per_point(), plotted);
+  write_summary(folder.temporary("summary.txt"), header_lines, report, wall, groups.ranks_per_point(), plotted);
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
-  write_results_h5(claimed.files[3]->temporary_path(), table,
+  write_results_h5(folder.temporary("comparison.h5"), table,
                    {.software = header_lines[0],
                     .scene_file = o.scene_file.string(),
                     .description = fmt::format(
@@ -303,11 +340,11 @@ int compare(const CompareOptions& o) {
                     .wall_time = wall,
                     .mpi_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
                     .ranks_per_point = groups.ranks_per_point()});
-  for (const std::size_t f : {0, 1, 3}) claimed.files[f]->commit();
+  folder.commit();
 
   if (!o.quiet) print_comparison(comparison, report, directory, plotted);
   if (!plotted)
-    std::cerr << "macro: warning: no plot written (gnuplot is not installed or failed)\n";
+    std::cerr << "macro: warning: no plot written (" << kNoPlot << ")\n";
   return kExitOk;
 }
 

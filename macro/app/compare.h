@@ -29,9 +29,17 @@ struct CompareOptions {
   std::filesystem::path material;
   /// MPI ranks that share one operating point's mesh; 0 = chosen (operating_points.h).
   unsigned ranks_per_point = 0;
+  /// Compare at most this many of the points (thinned evenly); 0: all of them,
+  /// refused beyond kMostComparedPoints.
+  std::size_t max_points = 0;
   bool force = false;
   bool quiet = false;
 };
+
+/// A measured flow curve holds tens to hundreds of points; a file with more
+/// than this in the rate window is taken for something else (a time series, a
+/// whole export) unless --max-points thins it.
+inline constexpr std::size_t kMostComparedPoints = 10000;
 
 /// Returns the exit code; throws InputError, OutputExistsError, NumericalError.
 int compare(const CompareOptions& options);

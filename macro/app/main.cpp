@@ -82,6 +82,11 @@ void add_compare_command(CLI::App& app, softglass::macro::app::CompareOptions& c
   compare->add_option("--material", compare_options.material,
                       "material fragment (.prm, e.g. from `bridge material`) replacing the "
                       "scene's");
+  compare->add_option(
+      "--max-points", compare_options.max_points,
+      fmt::format("compare at most N of the points in the rate window, evenly spaced, the first "
+                  "and last kept (default: all; more than {} are refused)",
+                  softglass::macro::app::kMostComparedPoints));
   compare
       ->add_option("--ranks-per-point", compare_options.ranks_per_point,
                    "MPI ranks that share each operating point's mesh (default: as for run)")

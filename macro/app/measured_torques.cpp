@@ -49,4 +49,24 @@ MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentCo
   return m;
 }
 
+MeasuredTorques thinned(const MeasuredTorques& m, std::size_t max_points) {
+  const std::size_t n = m.angular_velocity.size();
+  if (n <= max_points) return m;
+  MeasuredTorques kept{.label = m.label,
+                       .normal_force = m.normal_force ? std::optional(std::vector<double>{})
+                                                      : std::nullopt,
+                       .conversions = m.conversions,
+                       .left_out = m.left_out,
+                       .thinned_out = n - max_points};
+  for (std::size_t k = 0; k < max_points; ++k) {
+    const std::size_t i = (k * (n - 1) + (max_points - 1) / 2) / (max_points - 1);
+    kept.angular_velocity.push_back(m.angular_velocity[i]);
+    kept.shear_rate.push_back(m.shear_rate[i]);
+    kept.torque.push_back(m.torque[i]);
+    kept.stress.push_back(m.stress[i]);
+    if (m.normal_force) kept.normal_force->push_back((*m.normal_force)[i]);
+  }
+  return kept;
+}
+
 }  // namespace softglass::macro::app

@@ -19,19 +19,25 @@
 namespace softglass::macro::app {
 
 struct MeasuredTorques {
-  std::string label;                                // the curve's
-  std::vector<double> angular_velocity;             // Ω [rad/s], increasing
-  std::vector<double> shear_rate;                   // γ̇ [1/s] as reported (or c_γ Ω)
-  std::vector<double> torque;                       // M [N m]
-  std::vector<double> stress;                       // τ [Pa] as reported (or c_τ M)
-  std::optional<std::vector<double>> normal_force;  // F [N] when measured
-  std::vector<std::string> conversions;             // one line per derived quantity
+  std::string label;                                  // the curve's
+  std::vector<double> angular_velocity{};             // Ω [rad/s], increasing
+  std::vector<double> shear_rate{};                   // γ̇ [1/s] as reported (or c_γ Ω)
+  std::vector<double> torque{};                       // M [N m]
+  std::vector<double> stress{};                       // τ [Pa] as reported (or c_τ M)
+  std::optional<std::vector<double>> normal_force{};  // F [N] when measured
+  std::vector<std::string> conversions{};             // one line per derived quantity
   std::size_t left_out = 0;                         // points outside the rate window
+  std::size_t thinned_out = 0;                      // points left out by thinned()
 };
 
 /// The points of `curve` whose shear rate (reported, or c_γ Ω) lies in
 /// [min_rate, max_rate]. InputError when fewer than 2 points remain.
 MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentConstants& constants,
                                  double min_rate, double max_rate);
+
+/// At most `max_points` (>= 2) of the points, evenly spaced in their order,
+/// the first and the last kept (measured curves are spaced evenly in log Ω,
+/// so the kept ones are too).
+MeasuredTorques thinned(const MeasuredTorques& m, std::size_t max_points);
 
 }  // namespace softglass::macro::app

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iostream>
 
 #include "common/errors.h"
 #include "common/progress.h"
@@ -37,21 +39,30 @@ RankGroups::~RankGroups() {
   if (group_ != MPI_COMM_SELF) MPI_Comm_free(&group_);
 }
 
+double estimated_work(const MeshExtent& mesh, const fe::SolverSettings& settings) {
+  // Each uniform refinement multiplies the cells by 2^dim; each adaptive cycle
+  // splits the refined fraction into 2^dim; a Q_p cell holds ~p^dim unknowns.
+  const double children = std::pow(2.0, mesh.dimension);
+  const double cells = double(mesh.cells) * std::pow(children, settings.global_refinements) *
+                       std::pow(1.0 + settings.refine_fraction * (children - 1.0),
+                                settings.adaptive_cycles);
+  const double unknowns = cells * std::pow(double(settings.fe_degree), mesh.dimension);
+  return unknowns * (1.0 + settings.adaptive_cycles) * mesh.relative_cost;
+}
+
 namespace {
 
-// Writes the fields of the scene's last point: every rank of the group writes
-// its cells into one file, under the leader's temporary name.
-void write_fields(const Scene& scene, const std::filesystem::path& file, const RankGroups& groups) {
-  std::unique_ptr<AtomicOutput> out;
-  std::string temporary;
-  if (groups.leader()) {
-    out = std::make_unique<AtomicOutput>(file, true);
-    temporary = out->temporary_path().string();
-  }
-  temporary = broadcast_text(groups.mesh_communicator(), temporary);
-  scene.write_vtu(temporary);
-  MPI_Barrier(groups.mesh_communicator());
-  if (out) out->commit();
+// One line on stderr before a long sweep: how many solves, and how long.
+void announce_plan(const Scene& scene, const fe::SolverSettings& settings, std::size_t points,
+                   const RankGroups& groups) {
+  const std::size_t per_group = (points + groups.groups() - 1) / groups.groups();
+  const double seconds = kSecondsPerWork * estimated_work(scene.mesh_extent(), settings) *
+                         double(per_group);
+  if (seconds <= kPlanThreshold) return;
+  std::cerr << fmt::format(
+      "macro: plan: {} operating points ({} per group of ranks, {} group(s)), preset {}: about "
+      "{:.0f} s ({:.1f} h) by the cost model of docs/macro.md\n",
+      points, per_group, groups.groups(), settings.preset, seconds, seconds / 3600.0);
 }
 
 }  // namespace
@@ -68,6 +79,7 @@ std::vector<SceneResult> solve_operating_points(Scene& scene, const std::vector<
     return (points.size() * g + groups.groups() - 1) / groups.groups();
   };
   const std::size_t first = boundary(groups.group()), last = boundary(groups.group() + 1);
+  if (root) announce_plan(scene, display.settings, points.size(), groups);
   Progress progress(display.label, double(last - first), display.quiet || !root);
   std::vector<std::vector<double>> mine;
   std::string failure;  // a rank that fails still joins the gather below
@@ -75,8 +87,9 @@ std::vector<SceneResult> solve_operating_points(Scene& scene, const std::vector<
     try {
       const SceneResult result = scene.solve(points[k]);
       if (groups.leader()) mine.push_back(result.pack());
-      if (display.vtu == "all" || (display.vtu == "last" && k + 1 == points.size()))
-        write_fields(scene, display.directory / fmt::format("solution_{:03d}.vtu", k), groups);
+      // Every rank of the group writes its cells into the one file.
+      if (const auto file = display.field_files.find(k); file != display.field_files.end())
+        scene.write_vtu(file->second);
     } catch (const std::exception& error) {
       failure = fmt::format("{} = {}: {}", drive.name, points[k], error.what());
     }
@@ -89,29 +102,6 @@ std::vector<SceneResult> solve_operating_points(Scene& scene, const std::vector<
   std::vector<SceneResult> results;
   for (const auto& row : rows) results.push_back(SceneResult::unpack(row));
   return results;
-}
-
-ClaimedOutputs claim_outputs(const std::filesystem::path& directory,
-                             const std::vector<std::string>& names, bool force) {
-  const MPI_Comm comm = MPI_COMM_WORLD;
-  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  ClaimedOutputs claimed;
-  std::string refusal;
-  if (root) {
-    std::filesystem::create_directories(directory);
-    try {
-      for (const std::string& name : names)
-        claimed.files.push_back(std::make_unique<AtomicOutput>(directory / name, force));
-    } catch (const OutputExistsError& error) {
-      refusal = error.what();
-      claimed.files.clear();
-    }
-  }
-  if (broadcast_flag(comm, !refusal.empty())) {
-    if (root) throw OutputExistsError(refusal);
-    claimed.refused = true;
-  }
-  return claimed;
 }
 
 }  // namespace softglass::macro::app

@@ -7,12 +7,10 @@
 
 #include <mpi.h>
 
-#include <filesystem>
-#include <memory>
+#include <map>
 #include <string>
 #include <vector>
 
-#include "common/atomic_output.h"
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
@@ -22,9 +20,12 @@ std::string describe_model(const Material& material, const fe::SolverSettings& s
 
 /// What to write besides the rows, and how to show progress.
 struct SweepDisplay {
-  std::filesystem::path directory;  // for the VTU files
-  std::string vtu = "none";         // none | last | all
-  std::string label;                // of the progress bar
+  /// The points whose fields are written (VTU), and where: the temporary name
+  /// of the file (result_folder.h), the same on every rank.
+  std::map<std::size_t, std::string> field_files{};
+  /// The scene's solver settings (for the cost model).
+  fe::SolverSettings settings{};
+  std::string label;  // of the progress bar
   bool quiet = false;
 };
 
@@ -53,22 +54,22 @@ class RankGroups {
   bool leader_ = true;
 };
 
+/// The cost model (docs/macro.md, "Cost of a sweep"): the unknowns of one
+/// point's final mesh, from the coarse mesh, the preset's uniform refinements
+/// and adaptive cycles, times the meshes solved on.
+double estimated_work(const MeshExtent& mesh, const fe::SolverSettings& settings);
+/// Seconds per unit of that work: the slowest of the scalar scenes measured
+/// (docs/macro.md), so that the estimate errs long.
+inline constexpr double kSecondsPerWork = 4e-5;
+/// The plan is stated before a sweep estimated to take longer than this [s].
+inline constexpr double kPlanThreshold = 120.0;
+
 /// Every point's result on rank 0 (empty on the other ranks). A point that
 /// fails on any rank → NumericalError on rank 0 naming the point. The scene
-/// must have been made with groups.mesh_communicator().
+/// must have been made with groups.mesh_communicator(). A sweep estimated
+/// longer than kPlanThreshold is announced on stderr before it starts.
 std::vector<SceneResult> solve_operating_points(Scene& scene, const std::vector<double>& points,
                                                 const RankGroups& groups,
                                                 const SweepDisplay& display);
-
-/// Rank 0 claims the result files in `directory` (created if needed) before
-/// any work, so that a refusal costs nothing: OutputExistsError on rank 0, and
-/// an empty list on the other ranks, which should then stop with
-/// kExitOutputExists. Without a refusal, rank 0 gets one AtomicOutput per name.
-struct ClaimedOutputs {
-  std::vector<std::unique_ptr<AtomicOutput>> files;
-  bool refused = false;  // on ranks other than 0
-};
-ClaimedOutputs claim_outputs(const std::filesystem::path& directory,
-                             const std::vector<std::string>& names, bool force);
 
 }  // namespace softglass::macro::app

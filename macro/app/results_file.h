@@ -19,7 +19,6 @@
 #include <string>
 #include <vector>
 
-#include "common/atomic_output.h"
 #include "common/unit_table.h"
 
 namespace softglass::macro::app {
@@ -30,11 +29,18 @@ struct RunProvenance {
   unsigned mpi_ranks = 1, ranks_per_point = 1;
 };
 
-/// Writes the temporary file of `out` (common/unit_table.h's CSV form, numbers
-/// with `digits` significant digits); NumericalError naming the final path if
-/// it cannot be written.
-void write_results_csv(const AtomicOutput& out, const std::vector<std::string>& comments,
-                       const UnitTable& table, int digits);
+/// The column whose value is undefined, and written NaN, where the ideal
+/// geometry's value is 0 (below the yield point of a pressure-driven flow).
+inline constexpr const char* kUndefinedWhereIdealIsZero = "relative_deviation_from_ideal";
+
+/// Writes `temporary` (common/unit_table.h's CSV form, numbers with `digits`
+/// significant digits), to become the file `shown`. Every number must be
+/// finite (NaN only in kUndefinedWhereIdealIsZero): otherwise NumericalError
+/// naming the file, the column, the row and its operating point, and nothing
+/// is written. NumericalError naming `shown` if it cannot be written.
+void write_results_csv(const std::filesystem::path& temporary, const std::filesystem::path& shown,
+                       const std::vector<std::string>& comments, const UnitTable& table,
+                       int digits);
 
 /// Writes `path` (a new file): the provenance, and the table under /results.
 void write_results_h5(const std::filesystem::path& path, const UnitTable& table,

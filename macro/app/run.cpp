@@ -6,12 +6,14 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
-#include "common/atomic_output.h"
 #include "common/errors.h"
 #include "common/version.h"
+#include "macro/app/input_scales.h"
 #include "macro/app/operating_points.h"
+#include "macro/app/result_folder.h"
 #include "macro/app/results_file.h"
 #include "macro/app/scene_file.h"
 #include "macro/material/material_parameters.h"
@@ -65,16 +67,27 @@ std::string error_summary(const std::string& quantity, const std::vector<SceneRe
 
 // summary.txt: the scene, the sweep's cost, the largest error estimates and
 // the full parameter set.
-void write_summary(const AtomicOutput& file, const std::filesystem::path& scene_file,
+void write_summary(const std::string& file, const std::filesystem::path& scene_file,
                    const Scene& scene, const std::vector<SceneResult>& results,
                    const std::string& sweep, const std::string& parameters) {
-  std::ofstream summary(file.temporary_path());
+  std::ofstream summary(file);
   summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
   summary << "scene file: " << scene_file.string() << "\n";
   summary << scene.description() << "\n";
   summary << sweep;
   summary << error_summary(scene.columns()[0].name, results);
   summary << "\nfull parameter set:\n" << parameters;
+  summary.close();
+  if (!summary) throw NumericalError("cannot write summary.txt");
+}
+
+// The field files of `output = vtu`: none, the last point's, or every point's.
+std::map<std::size_t, std::string> field_names(const std::string& vtu, std::size_t points) {
+  std::map<std::size_t, std::string> names;
+  for (std::size_t k = 0; k < points; ++k)
+    if (vtu == "all" || (vtu == "last" && k + 1 == points))
+      names[k] = fmt::format("solution_{:03d}.vtu", k);
+  return names;
 }
 
 }  // namespace
@@ -82,7 +95,7 @@ void write_summary(const AtomicOutput& file, const std::filesystem::path& scene_
 int run(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   dealii::ParameterHandler prm;
-  auto [material, settings] =
+  auto [material, settings, entries] =
       read_scene_input(prm, options.scene_file, options.preset, options.material);
   const std::vector<double> points = read_sweep(prm);
   const RankGroups groups(points.size(), options.ranks_per_point);
@@ -98,36 +111,36 @@ int run(const RunOptions& options) {
   // Every rank parses and validates the input (building the scene checks its
   // entries), so bad input stops all of them alike and leaves no folder
   // behind; rank 0 alone then claims the output and writes the tables.
+  check_entry_scales(entries, options.scene_file);
   std::unique_ptr<Scene> scene =
       make_scene(prm, material, settings, options.scene_file.parent_path());
-  ClaimedOutputs claimed =
-      claim_outputs(directory, {"results.csv", "summary.txt", "results.h5"}, options.force);
-  if (claimed.refused) return kExitOutputExists;
-  const auto results = solve_operating_points(
-      *scene, points, groups,
-      {.directory = directory,
-       .vtu = vtu,
-       .label = fmt::format("macro {}", options.scene_file.filename().string()),
-       .quiet = options.quiet});
+  check_derived_scales(*scene, material, settings, points, entries, options.scene_file);
+  const std::map<std::size_t, std::string> fields = field_names(vtu, points.size());
+  std::vector<std::string> names{"results.csv", "summary.txt", "results.h5"};
+  for (const auto& [point, name] : fields) names.push_back(name);
+  ResultFolder folder(directory, names, options.force);
+  if (folder.refused()) return kExitOutputExists;
+  SweepDisplay display{.settings = settings,
+                       .label = fmt::format("macro {}", options.scene_file.filename().string()),
+                       .quiet = options.quiet};
+  for (const auto& [point, name] : fields) display.field_files[point] = folder.temporary(name);
+  const auto results = solve_operating_points(*scene, points, groups, display);
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0) return kExitOk;
-  AtomicOutput& csv_file = *claimed.files[0];
-  AtomicOutput& summary_file = *claimed.files[1];
-  AtomicOutput& h5_file = *claimed.files[2];
   const unsigned ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
 
   const UnitTable table = results_table(*scene, points, results);
-  write_results_csv(csv_file, {scene->description(), describe_model(material, settings)}, table,
-                    10);
+  write_results_csv(folder.temporary("results.csv"), folder.path("results.csv"),
+                    {scene->description(), describe_model(material, settings)}, table, 10);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
-  write_summary(summary_file, options.scene_file, *scene, results,
+  write_summary(folder.temporary("summary.txt"), options.scene_file, *scene, results,
                 fmt::format("operating points: {} on {} MPI rank(s), {} per point's mesh; wall "
                             "time {:.3f} s\n",
                             points.size(), ranks, groups.ranks_per_point(), wall),
                 parameters.str());
-  write_results_h5(h5_file.temporary_path(), table,
+  write_results_h5(folder.temporary("results.h5"), table,
                    {.software = fmt::format("softglass macro {} ({})", kVersion, kGitRevision),
                     .scene_file = options.scene_file.string(),
                     .description = scene->description(),
@@ -136,9 +149,7 @@ int run(const RunOptions& options) {
                     .wall_time = wall,
                     .mpi_ranks = ranks,
                     .ranks_per_point = groups.ranks_per_point()});
-  csv_file.commit();
-  summary_file.commit();
-  h5_file.commit();
+  folder.commit();
   if (!options.quiet) {
     std::cout << fmt::format("{} operating points in {:.2f} s; results in {}\n", points.size(),
                              wall, directory.string());

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "common/parameter_input.h"
 #include "common/errors.h"
@@ -34,7 +36,8 @@ void declare_scene_file(dealii::ParameterHandler& prm) {
   prm.leave_subsection();
 }
 
-void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file) {
+std::vector<SetEntry> parse_scene_file(dealii::ParameterHandler& prm,
+                                       const std::filesystem::path& file) {
   const std::vector<SetEntry> entries = parse_parameter_file(prm, file, "scene file");
   const std::string chosen = prm.get("scene");
   const std::vector<std::string> names = scenes().names();
@@ -52,6 +55,7 @@ void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path
             : " (the default: the file does not set scene)",
         e.subsections.front()));
   }
+  return entries;
 }
 
 namespace {
@@ -63,6 +67,21 @@ Material read_scene_material(dealii::ParameterHandler& prm, const std::filesyste
   const Material material = read_material_file(override);
   set_material(prm, material);
   return material;
+}
+
+// The scene file's entries with those of its material replaced by what the
+// fragment `override` sets, when it is not empty.
+std::vector<SetEntry> material_entries_replaced(std::vector<SetEntry> entries,
+                                                const std::filesystem::path& override) {
+  if (override.empty()) return entries;
+  std::erase_if(entries, [](const SetEntry& e) {
+    return !e.subsections.empty() && e.subsections.front() == "material";
+  });
+  std::ifstream in(override);
+  std::ostringstream text;
+  text << in.rdbuf();
+  for (SetEntry& e : entries_set_in(text.str(), override.string())) entries.push_back(std::move(e));
+  return entries;
 }
 
 // Sets `solver/preset` unless `preset` is empty (the command line's --preset).
@@ -83,11 +102,12 @@ void override_preset(dealii::ParameterHandler& prm, const std::string& preset) {
 SceneInput read_scene_input(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                             const std::string& preset, const std::filesystem::path& material) {
   declare_scene_file(prm);
-  parse_scene_file(prm, file);
+  std::vector<SetEntry> entries = parse_scene_file(prm, file);
   override_preset(prm, preset);
-  // Braced initialisers run in order: the material is read first.
+  // Braced initialisers run in order: the material is read (and checked) first.
   return {.material = read_scene_material(prm, material),
-          .settings = fe::read_solver_settings(prm)};
+          .settings = fe::read_solver_settings(prm),
+          .entries = material_entries_replaced(std::move(entries), material)};
 }
 
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/parameter_input.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
 
@@ -23,7 +24,9 @@ void declare_scene_file(dealii::ParameterHandler& prm);
 /// a number) → InputError naming the file, line and entry.
 /// An entry of a scene other than the one `scene` chooses is refused (it would
 /// be ignored in silence: pressure gradients read as angular velocities).
-void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path& file);
+/// Returns the entries the file sets, with their files and lines.
+std::vector<SetEntry> parse_scene_file(dealii::ParameterHandler& prm,
+                                       const std::filesystem::path& file);
 
 /// What every command takes from a scene file: declares and parses it into
 /// `prm` with the command line's overrides (`preset`, a `material` fragment;
@@ -31,6 +34,9 @@ void parse_scene_file(dealii::ParameterHandler& prm, const std::filesystem::path
 struct SceneInput {
   Material material;
   fe::SolverSettings settings;
+  /// What the files set, where (a --material fragment's entries in place of
+  /// the scene's material): to name a value whose consequences are refused.
+  std::vector<SetEntry> entries;
 };
 SceneInput read_scene_input(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                             const std::string& preset, const std::filesystem::path& material);

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 
@@ -67,6 +69,19 @@ std::string script(const OverlayPlot& plot, const std::filesystem::path& output)
   return g.str();
 }
 
+// gnuplot exits with success when the disk fills while it writes: the file
+// must begin with PNG's signature and end with its IEND chunk.
+bool complete_png(const std::filesystem::path& file) {
+  static constexpr char kSignature[] = "\x89PNG\r\n\x1a\n";
+  static constexpr char kEnd[] = "IEND\xae\x42\x60\x82";
+  std::ifstream in(file, std::ios::binary);
+  char head[8] = {}, tail[8] = {};
+  in.read(head, 8);
+  in.seekg(-8, std::ios::end);
+  in.read(tail, 8);
+  return in && std::equal(head, head + 8, kSignature) && std::equal(tail, tail + 8, kEnd);
+}
+
 }  // namespace
 
 bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file) {
@@ -75,9 +90,7 @@ bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& fil
   const std::string text = script(plot, file);
   const bool written = std::fwrite(text.data(), 1, text.size(), gnuplot) == text.size();
   const int status = pclose(gnuplot);
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(file, ec);
-  return written && status == 0 && !ec && size > 0;
+  return written && status == 0 && complete_png(file);
 }
 
 }  // namespace softglass::macro::io

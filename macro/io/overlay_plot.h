@@ -21,8 +21,9 @@ struct OverlayPlot {
   std::vector<OverlaySeries> panels;  // one panel each, with the relative error below
 };
 
-/// Writes `file` (PNG) with gnuplot; false when gnuplot is not installed or
-/// fails, so that the caller can say so (and discard the file).
+/// Writes `file` (PNG) with gnuplot; false when gnuplot is not installed,
+/// fails, or leaves an incomplete PNG (a full disk), so that the caller can
+/// say so (and discard the file).
 bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file);
 
 }  // namespace softglass::macro::io

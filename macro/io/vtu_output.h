@@ -25,6 +25,7 @@ void write_vtu(const dealii::DataOut<dim>& data_out, const std::filesystem::path
     if (dealii::Utilities::MPI::n_mpi_processes(communicator) == 1) {
       std::ofstream out(file);
       data_out.write_vtu(out);
+      out.close();  // a full disk shows only when the last buffer is written
       if (out) return;
     } else {
       data_out.write_vtu_in_parallel(file.string(), communicator);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 
 #include "common/errors.h"
@@ -30,6 +31,21 @@ unsigned cells_for(double piece, double total, unsigned cells) {
 }
 
 }  // namespace
+
+template <int dim>
+MeshExtent extent(const Triangulation<dim>& mesh) {
+  MeshExtent e{.dimension = dim, .cells = mesh.n_active_cells()};
+  e.smallest_cell = std::numeric_limits<double>::infinity();
+  for (const auto& cell : mesh.active_cell_iterators())
+    e.smallest_cell = std::min(e.smallest_cell, cell->minimum_vertex_distance());
+  const auto [low, high] = GridTools::compute_bounding_box(mesh).get_boundary_points();
+  e.largest_extent = low.distance(high);
+  e.volume = GridTools::volume(mesh);
+  return e;
+}
+
+template MeshExtent extent(const Triangulation<1>&);
+template MeshExtent extent(const Triangulation<2>&);
 
 void interval(Triangulation<1>& mesh, double a, double b, unsigned cells) {
   GridGenerator::subdivided_hyper_cube(mesh, cells, a, b, true);

@@ -7,7 +7,14 @@
 
 #include <filesystem>
 
+#include "macro/scenes/scene.h"
+
 namespace softglass::macro::meshes {
+
+/// The extent of a coarse mesh (dim = 1, 2); its volume is the section's
+/// measure.
+template <int dim>
+MeshExtent extent(const dealii::Triangulation<dim>& mesh);
 
 /// [a, b] in `cells` equal cells; id 0 at a, 1 at b.
 void interval(dealii::Triangulation<1>& mesh, double a, double b, unsigned cells);

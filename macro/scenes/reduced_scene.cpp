@@ -1,8 +1,22 @@
 #include "macro/scenes/reduced_scene.h"
 
+#include "macro/scenes/meshes.h"
+
 namespace softglass::macro {
 
 namespace {
+
+// The extent of the section, its volume that of the body it stands for
+// (weighted by ρ = r on axisymmetric sections, times the measure factor).
+template <int dim>
+MeshExtent body_extent(const dealii::Triangulation<dim>& mesh, const fe::SectionWeights& w) {
+  MeshExtent e = meshes::extent(mesh);
+  e.volume = 0.0;
+  for (const auto& cell : mesh.active_cell_iterators())
+    e.volume += cell->measure() * w.rho(cell->center()[0]);
+  e.volume *= w.measure_factor;
+  return e;
+}
 
 template <int dim>
 class ReducedScene final : public Scene {
@@ -10,6 +24,7 @@ class ReducedScene final : public Scene {
   ReducedScene(const dealii::Triangulation<dim>& mesh, ReducedSceneSpec<dim> spec,
                const HerschelBulkley& law, const fe::SolverSettings& settings)
       : spec_(std::move(spec)),
+        extent_(body_extent(mesh, spec_.weights)),
         solver_(mesh, spec_.mapping_degree, spec_.weights, shear_law(law), settings) {}
 
   std::string description() const override { return spec_.description; }
@@ -65,12 +80,19 @@ class ReducedScene final : public Scene {
     return result;
   }
 
+  double characteristic_rate(double drive) const override {
+    return spec_.drive(drive).characteristic_rate;
+  }
+
+  MeshExtent mesh_extent() const override { return extent_; }
+
   void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
 
   std::optional<InstrumentConstants> instrument() const override { return spec_.instrument; }
 
  private:
   ReducedSceneSpec<dim> spec_;
+  MeshExtent extent_;
   fe::ScalarFlowSolver<dim> solver_;
 };
 

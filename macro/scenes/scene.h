@@ -35,6 +35,21 @@ struct InstrumentConstants {
   std::string convention;
 };
 
+/// The scene's coarse mesh, before the solver refines it: the lengths a solve
+/// works with and the size its cost grows from.
+struct MeshExtent {
+  unsigned dimension = 0;
+  std::size_t cells = 0;
+  double smallest_cell = 0.0;   ///< [m] the shortest distance between two vertices of a cell
+  double largest_extent = 0.0;  ///< [m] the diagonal of the mesh's bounding box
+  /// [m^3] the material's volume (per unit depth, [m^2], for plane sections):
+  /// the outputs are integrals over it.
+  double volume = 0.0;
+  /// What an unknown costs relative to a scalar scene's (the cost model of
+  /// docs/macro.md, app/operating_points.h).
+  double relative_cost = 1.0;
+};
+
 class Scene {
  public:
   virtual ~Scene() = default;
@@ -46,6 +61,10 @@ class Scene {
   virtual std::vector<Column> columns() const = 0;
   /// Solves at one operating point (warm-started from the previous one).
   virtual SceneResult solve(double drive) = 0;
+  /// The shear rate γ̇_c that sets the regularisation at one operating point
+  /// (docs/macro.md: ε = relative rate scale · γ̇_c) [1/s].
+  virtual double characteristic_rate(double drive) const = 0;
+  virtual MeshExtent mesh_extent() const = 0;
   /// The fields of the last solved point, for ParaView.
   virtual void write_vtu(const std::filesystem::path& file) const = 0;
   /// Rotational rheometers: the instrument's conversions (none for channels,

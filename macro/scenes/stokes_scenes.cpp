@@ -29,6 +29,7 @@
 
 #include "macro/fe/stokes_flow_solver.h"
 #include "macro/scenes/entries.h"
+#include "macro/scenes/meshes.h"
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro {
@@ -39,6 +40,12 @@ using dealii::Tensor;
 namespace Patterns = dealii::Patterns;
 
 namespace {
+
+// An unknown of the Stokes problem costs this many of a scalar scene's:
+// measured, the fast Bingham cavity (3891 units of estimated work) in 4.3 s
+// against 4e-5 s per unit for the scalar scenes (docs/macro.md, "Cost of a
+// sweep"): three fields, a saddle point, continuation on the coarse mesh.
+constexpr double kStokesRelativeCost = 30.0;
 
 // Centreline samples of the cavity: the minimum is located to L/kSamples.
 constexpr int kSamples = 400;
@@ -87,13 +94,31 @@ double drag(const fe::StokesOutputs& o) {
   return o.force[0];
 }
 
-class Cavity final : public Scene {
+// What the four scenes share: the solver on their mesh, the mesh's extent and
+// the fields. Each derives its characteristic rate from its drive, and solves
+// with it (characteristic_rate is what the input check sees).
+class StokesScene : public Scene {
+ public:
+  StokesScene(const dealii::Triangulation<2>& mesh, const HerschelBulkley& law,
+              const fe::SolverSettings& settings)
+      : solver_(mesh, shear_law(law), settings), extent_(meshes::extent(mesh)) {
+    extent_.relative_cost = kStokesRelativeCost;
+  }
+  MeshExtent mesh_extent() const override { return extent_; }
+  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+
+ protected:
+  fe::StokesFlowSolver solver_;
+
+ private:
+  MeshExtent extent_;
+};
+
+class Cavity final : public StokesScene {
  public:
   Cavity(double side, unsigned cells, const HerschelBulkley& law,
          const fe::SolverSettings& settings)
-      : side_(side),
-        centreline_(centreline(side)),
-        solver_(mesh(side, cells), shear_law(law), settings) {}
+      : StokesScene(mesh(side, cells), law, settings), side_(side), centreline_(centreline(side)) {}
 
   std::string description() const override {
     return fmt::format("lid-driven cavity, side {} m: Stokes (u, p), Taylor-Hood Q2-Q1", side_);
@@ -108,14 +133,14 @@ class Cavity final : public Scene {
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto moving = [lid](const Point<2>&) { return Tensor<1, 2>({lid, 0.0}); };
     const auto r = solver_.run({.velocity = {{3, moving}, {0, zero}, {1, zero}, {2, zero}},
-                                .characteristic_rate = lid / side_,
+                                .characteristic_rate = characteristic_rate(lid),
                                 .probes = centreline_});
     // The minimum on each mesh: its change over the last refinement and
     // (at 10ε − at ε)/9 on the first mesh are its error estimates.
     const auto u_min = [this](const fe::StokesOutputs& o) { return centreline_minimum(o).first; };
     return report(r, estimate(r, u_min), {centreline_minimum(r.value).second / side_});
   }
-  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+  double characteristic_rate(double lid) const override { return lid / side_; }
 
  private:
   static dealii::Triangulation<2> mesh(double side, unsigned cells) {
@@ -145,15 +170,12 @@ class Cavity final : public Scene {
 
   double side_;
   std::vector<Point<2>> centreline_;
-  fe::StokesFlowSolver solver_;
 };
 
-class Obstacle final : public Scene {
+class Obstacle final : public StokesScene {
  public:
   Obstacle(double diameter, const HerschelBulkley& law, const fe::SolverSettings& settings)
-      : diameter_(diameter),
-        height_(4.1 * diameter),
-        solver_(mesh(diameter), shear_law(law), settings) {}
+      : StokesScene(mesh(diameter), law, settings), diameter_(diameter), height_(4.1 * diameter) {}
 
   std::string description() const override {
     return fmt::format(
@@ -175,12 +197,13 @@ class Obstacle final : public Scene {
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto r = solver_.run({.velocity = {{0, inflow}, {2, zero}, {3, zero}},
                                 .straight_outflow = {1},
-                                .characteristic_rate = 6.0 * speed / H,
+                                .characteristic_rate = characteristic_rate(speed),
                                 .force_boundary = 2,
                                 .pressure_boundary = 0});
     return report(r, estimate(r, mean_pressure), {r.value.force[0], r.value.force[1]});
   }
-  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+  // The Newtonian wall rate of the parabolic inflow, 6U/H.
+  double characteristic_rate(double speed) const override { return 6.0 * speed / height_; }
 
  private:
   // deal.II's DFG channel (D = 0.1) scaled by D/0.1, the cylinder's polar
@@ -198,17 +221,16 @@ class Obstacle final : public Scene {
   }
 
   double diameter_, height_;
-  fe::StokesFlowSolver solver_;
 };
 
-class Cylinder final : public Scene {
+class Cylinder final : public StokesScene {
  public:
   Cylinder(double diameter, double box, const HerschelBulkley& law,
            const fe::SolverSettings& settings)
-      : diameter_(diameter),
+      : StokesScene(mesh(diameter, box), law, settings),
+        diameter_(diameter),
         box_(box),
-        viscosity_(law.consistency),
-        solver_(mesh(diameter, box), shear_law(law), settings) {}
+        viscosity_(law.consistency) {}
 
   std::string description() const override {
     return fmt::format(
@@ -231,13 +253,13 @@ class Cylinder final : public Scene {
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
     const auto r = solver_.run(
         {.velocity = {{0, uniform}, {1, uniform}, {2, uniform}, {3, uniform}, {4, zero}},
-         .characteristic_rate = speed / diameter_,
+         .characteristic_rate = characteristic_rate(speed),
          .force_boundary = 4});
     const auto power_drag = [speed](const fe::StokesOutputs& o) { return o.dissipation / speed; };
     return report(r, estimate(r, power_drag),
                   {power_drag(r.value) / (viscosity_ * speed), drag(r.value)});
   }
-  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+  double characteristic_rate(double speed) const override { return speed / diameter_; }
 
  private:
   // deal.II's plate with a hole: the hole (id 4, polar manifold) in a square
@@ -253,14 +275,13 @@ class Cylinder final : public Scene {
   }
 
   double diameter_, box_, viscosity_;
-  fe::StokesFlowSolver solver_;
 };
 
-class Contraction final : public Scene {
+class Contraction final : public StokesScene {
  public:
   Contraction(double height, unsigned ratio, const HerschelBulkley& law,
               const fe::SolverSettings& settings)
-      : h_(height), ratio_(ratio), solver_(mesh(height, ratio), shear_law(law), settings) {}
+      : StokesScene(mesh(height, ratio), law, settings), h_(height), ratio_(ratio) {}
 
   std::string description() const override {
     return fmt::format(
@@ -278,14 +299,14 @@ class Contraction final : public Scene {
       return Tensor<1, 2>({6.0 * speed * p[1] * (H - p[1]) / (H * H), 0.0});
     };
     const auto zero = [](const Point<2>&) { return Tensor<1, 2>(); };
-    // γ̇_c: the Newtonian wall rate downstream, 6 U_down/h with U_down = R U.
     const auto r = solver_.run({.velocity = {{0, inflow}, {2, zero}},
                                 .straight_outflow = {1},
-                                .characteristic_rate = 6.0 * ratio_ * speed / h_,
+                                .characteristic_rate = characteristic_rate(speed),
                                 .pressure_boundary = 0});
     return report(r, estimate(r, mean_pressure), {speed * H});
   }
-  void write_vtu(const std::filesystem::path& file) const override { solver_.output_results(file); }
+  // The Newtonian wall rate downstream, 6 U_down/h with U_down = R U.
+  double characteristic_rate(double speed) const override { return 6.0 * ratio_ * speed / h_; }
 
  private:
   // Square cells of side h/2 on [0, 20h] × [0, R h]; downstream (x > 10h)
@@ -312,7 +333,6 @@ class Contraction final : public Scene {
 
   double h_;
   unsigned ratio_;
-  fe::StokesFlowSolver solver_;
 };
 
 }  // namespace

@@ -186,6 +186,97 @@ TEST_F(MacroCli, MissingIncludeIsNamed) {
   EXPECT_NE(error_.find("nowhere.prm"), std::string::npos) << error_;
 }
 
+// Issue 19, class 3: values that pass their own range but overflow what a
+// solve derives from them were computation failures (exit 1, "rate scale =
+// inf", a failed factorisation). Now bad input naming the entry, its file and
+// line, before anything is written.
+TEST_F(MacroCli, AbsurdValuesAreBadInputNamingTheEntry) {
+  EXPECT_EQ(run(couette(" set length = 1e300\n")), 2);
+  EXPECT_NE(error_.find("couette/length = 1e+300 (line 6 of file 'scene.prm')"), std::string::npos)
+      << error_;
+  // A finite yield stress whose viscosity scale tau_y/eps is not, from the
+  // included material file.
+  write("material.prm",
+        "subsection material\n set model = herschel-bulkley\n set yield stress = 1e99\n"
+        " set consistency = 5\n set flow index = 0.5\nend\n");
+  EXPECT_EQ(run(couette("")), 2);
+  for (const char* part : {"viscosity scale", "material/yield stress = 1e+99 (line 3 of file",
+                           "material.prm"})
+    EXPECT_NE(error_.find(part), std::string::npos) << part << " in " << error_;
+  SetUp();
+  // A Stokes scene whose mesh (40 diameters across) has no representable volume.
+  EXPECT_EQ(run("set scene = cylinder\ninclude material.prm\nsubsection cylinder\n"
+                " set diameter = 1e98\nend\n"),
+            2);
+  EXPECT_NE(error_.find("cylinder/diameter = 1e+98 (line 4 of file 'scene.prm')"),
+            std::string::npos)
+      << error_;
+  // A sweep point whose power scale overflows.
+  std::string sweep = couette("");
+  sweep.replace(sweep.find("0.1, 1"), 6, "0.1, 1e99");
+  EXPECT_EQ(run(sweep), 2);
+  EXPECT_NE(error_.find("at rotation_rate = 1e+99"), std::string::npos) << error_;
+  EXPECT_NE(error_.find("sweep/values = 1e+99 (line 8 of file 'scene.prm')"), std::string::npos)
+      << error_;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "a refused run creates nothing";
+}
+
+// Issue 19, class 5: a forced run into a used folder left the previous run's
+// extra field files beside the new ones. Now the folder holds the new run's
+// files (and what the user put there), listed in manifest.txt.
+TEST_F(MacroCli, ForcedRunLeavesOnlyTheNewRunsFiles) {
+  std::string every_point = couette("");
+  every_point += "subsection output\n set vtu = all\nend\n";
+  every_point.replace(every_point.find("0.1, 1"), 6, "0.1, 0.3, 1");
+  ASSERT_EQ(run(every_point), 0) << error_;
+  write("out/notes.txt", "the user's own\n");
+  ASSERT_EQ(softglass::testing::file_names(dir_ / "out").size(), 8u);
+  ASSERT_EQ(run(couette(""), "--force"), 0) << error_;
+  EXPECT_EQ(softglass::testing::file_names(dir_ / "out"),
+            (std::vector<std::string>{"manifest.txt", "notes.txt", "results.csv", "results.h5",
+                                      "solution_001.vtu", "summary.txt"}));
+  std::ifstream manifest(dir_ / "out" / "manifest.txt");
+  std::vector<std::string> listed;
+  for (std::string line; std::getline(manifest, line);)
+    if (!line.starts_with('#')) listed.push_back(line);
+  EXPECT_EQ(listed, (std::vector<std::string>{"results.csv", "results.h5", "solution_001.vtu",
+                                              "summary.txt"}));
+  // A forced run refused for bad input leaves that result as it was.
+  EXPECT_EQ(run(couette(" set length = -1\n"), "--force"), 2);
+  EXPECT_EQ(softglass::testing::file_names(dir_ / "out").size(), 6u);
+}
+
+// Issue 19, class 7: a misspelled subsection in an included file must be
+// named at its own line of its own file. DISABLED: deal.II 9.4 words this
+// error "Line <N> of file <F: There is no such subsection..." without the
+// closing '>', which common/parameter_input.cpp's locate() does not match, so
+// the message names line N of the expanded text and the including file (the
+// change needed is in common/, described in the report of issue 19).
+TEST_F(MacroCli, DISABLED_MisspelledSubsectionInAnIncludedFileIsLocated) {
+  write("geometry.prm", "# the bob\nsubsection couete\n set inner radius = 0.02\nend\n");
+  EXPECT_EQ(run("set scene = couette\ninclude material.prm\ninclude geometry.prm\n"), 2);
+  EXPECT_NE(error_.find("line 2 of file"), std::string::npos) << error_;
+  EXPECT_NE(error_.find("geometry.prm"), std::string::npos) << error_;
+  EXPECT_NE(error_.find("couete"), std::string::npos) << error_;
+}
+
+// Issue 19, class 8: a sweep estimated to take long is announced, with the
+// number of solves and the estimate, before the first solve.
+TEST_F(MacroCli, LongSweepStatesItsPlanFirst) {
+  write("scene.prm",
+        "set scene = cavity\ninclude material.prm\nsubsection solver\n set preset = accurate\n"
+        "end\nsubsection sweep\n set first = 1\n set last = 10\n set points = 3000\nend\n"
+        "subsection output\n set vtu = none\nend\n");
+  // Stopped after a few seconds: the plan is the first thing it says.
+  const softglass::testing::Outcome o = softglass::testing::run_tool(
+      "/usr/bin/timeout", "10 '" + std::string(MACRO_EXECUTABLE) + "' run scene.prm -o out -q",
+      dir_, dir_ / "capture");
+  EXPECT_NE(o.err.find("macro: plan: 3000 operating points"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("preset accurate: about"), std::string::npos) << o.err;
+  EXPECT_EQ(run(couette("")), 0);
+  EXPECT_EQ(error_.find("plan"), std::string::npos) << "short runs say nothing: " << error_;
+}
+
 // `mpirun -n 2 macro run` splits the operating points over the ranks; the
 // table must be the serial one. The runs differ only in the warm start of the
 // second rank's first point, and Newton stops when its update is below 1e-10

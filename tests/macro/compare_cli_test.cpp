@@ -142,6 +142,66 @@ TEST_F(MacroCompare, RefusesBadRequests) {
   EXPECT_FALSE(fs::exists(dir_.path() / "out" / "comparison.csv")) << "nothing half-written";
 }
 
+// Issue 19, class 3: a measured angular velocity whose shear-rate scale
+// overflows is bad input naming the data file, not a failed solve.
+TEST_F(MacroCompare, AbsurdMeasuredSpeedIsBadInput) {
+  write_text(dir_.path() / "absurd.csv",
+             "Angular velocity [rad/s],Torque [N.m]\n0.1,1e-3\n1,2e-3\n10,4e-3\n1e300,8e-3\n");
+  const auto o = compare("cone.prm absurd.csv -o out -q");
+  EXPECT_EQ(o.code, 2) << o.err;
+  for (const char* part : {"characteristic shear rate", "measurement/angular velocity = 1e+300",
+                           "absurd.csv"})
+    EXPECT_NE(o.err.find(part), std::string::npos) << part << " in " << o.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+}
+
+// Issue 19, class 8: a file with far more points than a flow curve is refused
+// before any solve, naming --max-points, which compares an even selection.
+TEST_F(MacroCompare, TooManyPointsAreRefusedOrThinned) {
+  std::ostringstream data;
+  data << "Angular velocity [rad/s],Torque [N.m]\n";
+  const std::size_t rows = 10001;
+  for (std::size_t i = 0; i < rows; ++i) {
+    const double omega = std::pow(10.0, -2.0 + 3.0 * double(i) / double(rows - 1));
+    data << fmt::format("{:.12g},{:.12g}\n", omega, 1e-3 * (1.0 + std::sqrt(omega)));
+  }
+  write_text(dir_.path() / "long.csv", data.str());
+  const auto refused = compare("cone.prm long.csv -o out -q");
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("has 10001 points"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--max-points"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+  const auto thinned = compare("cone.prm long.csv -o out -q --max-points 3");
+  ASSERT_EQ(thinned.code, 0) << thinned.err;
+  const std::vector<double> omega = column("angular_velocity");
+  ASSERT_EQ(omega.size(), 3u);
+  EXPECT_NEAR(omega.front(), 0.01, 1e-9);
+  EXPECT_NEAR(omega.back(), 10.0, 1e-8);
+  EXPECT_NE(read_text(dir_.path() / "out" / "summary.txt").find("9998 left out by --max-points"),
+            std::string::npos);
+}
+
+// Issue 19, class 5: on a full disk gnuplot exits with success and leaves a
+// truncated PNG, which was put in place. The disk is filled by a file-size
+// limit (SIGXFSZ ignored, so that writes fail as on a full disk): the tables
+// fit, the plot does not. No truncated plot and no temporary file remain.
+TEST_F(MacroCompare, TruncatedPlotIsNotPutInPlace) {
+  if (!fs::exists("/usr/bin/gnuplot")) GTEST_SKIP() << "no gnuplot";
+  const softglass::testing::Outcome o = softglass::testing::run_tool(
+      "/bin/bash",
+      "-c \"trap '' XFSZ; ulimit -f 24; exec '" + std::string(MACRO_EXECUTABLE) +
+          "' compare cone.prm measured.csv -o out -q\"",
+      dir_.path(), dir_.path() / "capture");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.err.find("no plot written"), std::string::npos) << o.err;
+  EXPECT_EQ(softglass::testing::file_names(dir_.path() / "out"),
+            (std::vector<std::string>{"comparison.csv", "comparison.h5", "manifest.txt",
+                                      "summary.txt"}));
+  // Without the limit the plot is complete, and the forced result has it.
+  ASSERT_EQ(compare("cone.prm measured.csv -o out -q --force").code, 0);
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "comparison.png"));
+}
+
 TEST_F(MacroCompare, ExistingResultsNeedForce) {
   ASSERT_EQ(compare("cone.prm measured.csv -o out -q").code, 0);
   EXPECT_EQ(compare("cone.prm measured.csv -o out -q").code, 3);
