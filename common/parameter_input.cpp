@@ -129,9 +129,10 @@ void expand(const std::filesystem::path& file, const std::string& kind, int dept
 }
 
 // deal.II's "Line <N> of file <F>" (N counted in the expanded text) → the
-// file and line the user wrote.
+// file and line the user wrote. For an unknown subsection deal.II 9.4 leaves
+// the '>' out ("Line <8> of file <a.prm: There is no such subsection").
 std::string locate(const std::string& message, const ExpandedText& expanded) {
-  static const std::regex place(R"(Line <(\d+)> of file <[^>]*>)");
+  static const std::regex place(R"(Line <(\d+)> of file <[^>:]*>?)");
   std::smatch match;
   if (!std::regex_search(message, match, place)) return message;
   const std::size_t line = std::stoul(match[1].str());

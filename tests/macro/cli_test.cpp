@@ -246,13 +246,10 @@ TEST_F(MacroCli, ForcedRunLeavesOnlyTheNewRunsFiles) {
   EXPECT_EQ(softglass::testing::file_names(dir_ / "out").size(), 6u);
 }
 
-// Issue 19, class 7: a misspelled subsection in an included file must be
-// named at its own line of its own file. DISABLED: deal.II 9.4 words this
-// error "Line <N> of file <F: There is no such subsection..." without the
-// closing '>', which common/parameter_input.cpp's locate() does not match, so
-// the message names line N of the expanded text and the including file (the
-// change needed is in common/, described in the report of issue 19).
-TEST_F(MacroCli, DISABLED_MisspelledSubsectionInAnIncludedFileIsLocated) {
+// Issue 19, class 7: a misspelled subsection in an included file is named at
+// its own line of its own file (deal.II 9.4 words this error "Line <N> of file
+// <F: There is no such subsection...", without the closing '>').
+TEST_F(MacroCli, MisspelledSubsectionInAnIncludedFileIsLocated) {
   write("geometry.prm", "# the bob\nsubsection couete\n set inner radius = 0.02\nend\n");
   EXPECT_EQ(run("set scene = couette\ninclude material.prm\ninclude geometry.prm\n"), 2);
   EXPECT_NE(error_.find("line 2 of file"), std::string::npos) << error_;
