@@ -163,6 +163,18 @@ std::string now_iso8601() {
   return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(now));
 }
 
+// FNV-1a over the bytes of a configuration's positions and radii.
+std::uint64_t fingerprint(const H5Group& configuration) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (const char* name : {"position", "radius"}) {
+    for (const double x : configuration.read_array(name).data) {
+      const auto* byte = reinterpret_cast<const unsigned char*>(&x);
+      for (std::size_t k = 0; k < sizeof x; ++k) hash = (hash ^ byte[k]) * 1099511628211ull;
+    }
+  }
+  return hash;
+}
+
 }  // namespace
 
 void write_run_file(const std::filesystem::path& path, const RunRecord& record) {
@@ -264,6 +276,7 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
   StoredRunSummary s;
   s.file = path;
   const std::string where = path.string();
+  s.packing_fingerprint = fingerprint(packing.group("configuration"));
   // Every number goes into the flow-curve tables, which refuse NaN and inf.
   const auto positive = [&](const H5Group& g, const char* name) {
     const double v = g.read_scalar(name);

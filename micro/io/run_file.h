@@ -8,6 +8,7 @@
 // stresses E*, strain for time; every dataset carries a `units` attribute.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -88,6 +89,9 @@ struct StoredRunSummary {
   double averaged_strain = 0.0, coordination = 0.0, layering = 0.0;
   std::vector<ObservableEstimate> observables;  // shear_observable_names() order
   std::optional<Estimate> r_m, f_m;             // when the run has /structure
+  /// A hash of the packing it started from (its particle positions and
+  /// radii): equal for two runs of one packing, a run and its copy included.
+  std::uint64_t packing_fingerprint = 0;
 };
 StoredRunSummary read_run_summary(const std::filesystem::path& path);
 

@@ -62,6 +62,15 @@ PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) 
     }
   }
 
+  for (std::size_t i = 0; i < runs.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (runs[i].packing_fingerprint == runs[j].packing_fingerprint) {
+        throw InputError(fmt::format(
+            "'{}' and '{}' start from the same packing (one run given twice, or a copy of it): "
+            "averaging them would count one packing twice; average runs of different packings",
+            runs[j].file.string(), runs[i].file.string()));
+      }
+
   PackingAverage a;
   a.runs = runs.size();
   a.particles = first.particles;

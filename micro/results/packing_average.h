@@ -37,7 +37,9 @@ struct PackingAverage {
   const AveragedObservable& operator[](const std::string& name) const;
 };
 
-/// Throws InputError unless the runs share γ̃, φ and N.
+/// Throws InputError unless the runs share γ̃, φ and N and start from
+/// different packings (one run given twice, or a copy of it, would count one
+/// packing twice and shrink the error).
 PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs);
 
 }  // namespace softglass::micro

@@ -318,6 +318,31 @@ TEST_F(MicroCli, AFullDiskIsAnErrorNamingTheReasonNotACrash) {
   EXPECT_EQ(files_in_work(), std::vector<std::string>{"big.prm"});
 }
 
+// `micro summary` averages runs over packings: one run given twice, or a copy
+// of it, would count one packing twice and shrink the error bar (issue 19,
+// class 1). Refused, exit 2, naming both files.
+TEST_F(MicroCli, SummaryRefusesToAverageARunWithItself) {
+  const std::string prm = parameters(
+      "run.prm", kTiny + "subsection shear\n  set gamma dot tilde = 1e-4\n  set min strain = 0.3\n"
+                         "  set max strain = 0.3\n  set min stationary strain = 0.2\nend\n");
+  ASSERT_EQ(micro("run --quiet -o run.h5 " + prm).code, 0);
+  fs::copy_file(work() / "run.h5", work() / "copy.h5");
+  for (const char* second : {"run.h5", "copy.h5"}) {
+    const Outcome o = micro(std::string("summary run.h5 ") + second);
+    EXPECT_EQ(o.code, 2) << second;
+    EXPECT_NE(o.err.find("start from the same packing"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find(second), std::string::npos) << o.err;
+  }
+  ASSERT_EQ(micro("run --quiet -o other.h5 " +
+                  parameters("other.prm", tiny_with("particles", "seed", "2") +
+                                              "subsection shear\n  set gamma dot tilde = 1e-4\n"
+                                              "  set min strain = 0.3\n  set max strain = 0.3\n"
+                                              "  set min stationary strain = 0.2\nend\n"))
+                .code,
+            0);
+  EXPECT_EQ(micro("summary run.h5 other.h5").code, 0) << "two packings average";
+}
+
 TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
   // A short run stores snapshots every 0.02 strain; `analyze` adds /structure
   // and the CSV tables, refuses to replace them without --force (exit 3) and a
