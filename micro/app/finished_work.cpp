@@ -18,7 +18,8 @@ namespace {
 // a tool puts before the listing (the quasi-static case's strain step), then
 // every entry as "subsection/…/name = value". The listing's documentation
 // comments are left out (they change with the software's wording, not with
-// the computation), and so are the entries that only say where files are.
+// the computation), and so are the entries that only say where files are and
+// the model preset (it only sets entries that are compared themselves).
 std::vector<std::string> computation_of(const std::string& text) {
   std::vector<std::string> out;
   std::istringstream in(text);
@@ -26,7 +27,8 @@ std::vector<std::string> computation_of(const std::string& text) {
                          line.find("Listing of Parameters") == std::string::npos;)
     out.push_back(line);
   for (const SetEntry& e : entries_set_in(text, ""))
-    if (e.name != "file" && e.name != "input file") out.push_back(e.key() + " = " + e.value);
+    if (e.name != "file" && e.name != "input file" && e.key() != "model/preset")
+      out.push_back(e.key() + " = " + e.value);
   return out;
 }
 
