@@ -23,7 +23,7 @@
 #include "common/errors.h"
 #include "common/progress.h"
 #include "common/version.h"
-#include "micro/app/finished_work.h"
+#include "micro/input/finished_work.h"
 #include "micro/app/run_steps.h"
 #include "micro/results/flow_curve_table.h"
 #include "micro/sweep/directory_lock.h"

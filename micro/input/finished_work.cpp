@@ -1,4 +1,4 @@
-#include "micro/app/finished_work.h"
+#include "micro/input/finished_work.h"
 
 #include <fmt/format.h>
 
