@@ -4,8 +4,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -41,7 +41,7 @@ void remove_dead_temporaries(const std::filesystem::path& final) {
 
 }  // namespace
 
-void write_text_file(const std::filesystem::path& path, const std::string& shown,
+void write_file(const std::filesystem::path& path, const std::string& shown,
                      const std::function<void(std::ostream&)>& body) {
   errno = 0;
   std::ofstream file(path, std::ios::binary);
@@ -54,7 +54,7 @@ void write_text_file(const std::filesystem::path& path, const std::string& shown
 }
 
 void AtomicOutput::write_and_commit(const std::function<void(std::ostream&)>& body) {
-  write_text_file(temporary_, final_.string(), body);
+  write_file(temporary_, final_.string(), body);
   commit();
 }
 

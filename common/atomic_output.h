@@ -15,10 +15,11 @@
 
 namespace softglass {
 
-/// Writes what `body` puts into the stream to `path` (truncated first);
-/// NumericalError naming `shown` (the file the user asked for) and the
-/// system's reason (a full disk, a quota) if any of it cannot be written.
-void write_text_file(const std::filesystem::path& path, const std::string& shown,
+/// Writes what `body` puts into the stream to `path` (truncated first; text
+/// or binary alike); NumericalError naming `shown` (the file the user asked
+/// for) and the system's reason (a full disk, a quota) if any of it cannot be
+/// written. Every file softglass writes goes through it.
+void write_file(const std::filesystem::path& path, const std::string& shown,
                      const std::function<void(std::ostream&)>& body);
 
 class AtomicOutput {
@@ -36,7 +37,7 @@ class AtomicOutput {
   const std::filesystem::path& temporary_path() const { return temporary_; }
   const std::filesystem::path& final_path() const { return final_; }
 
-  /// Writes the temporary file with `body` (write_text_file) and commits.
+  /// Writes the temporary file with `body` (write_file) and commits.
   void write_and_commit(const std::function<void(std::ostream&)>& body);
 
   /// Renames the temporary file onto the final path (atomic on POSIX) and

@@ -4,21 +4,16 @@
 // explicitly (H5Dcreate2, H5Eset_auto2, ...) rather than through their macros.
 #include "common/h5_file.h"
 
-#include <fcntl.h>
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <functional>
 #include <new>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
 
-#include <fmt/format.h>
-
+#include "common/atomic_output.h"
 #include "common/errors.h"
 
 namespace softglass {
@@ -542,9 +537,10 @@ std::string H5Group::attribute_string(const std::string& name) const {
 namespace {
 
 // Files written by softglass live in memory (HDF5's core driver, no backing
-// store) until close() writes their image in one checked write. HDF5 itself
-// never writes to the disk: when its own write fails (a full disk) it leaves
-// the file half-closed, and its exit handler then crashes closing it.
+// store) until close() writes their image through the one checked writer
+// (atomic_output.h). HDF5 itself never writes to the disk: when its own write
+// fails (a full disk) it leaves the file half-closed, and its exit handler
+// then crashes closing it.
 H5Id in_memory_access() {
   H5Id fapl = own(H5Pcreate(H5P_FILE_ACCESS), "cannot create an HDF5 property list");
   check(H5Pset_fapl_core(fapl.get(), 1 << 20, /*backing_store=*/false),
@@ -552,35 +548,11 @@ H5Id in_memory_access() {
   return fapl;
 }
 
-// Writes `size` bytes to `path` (truncated first); NumericalError naming the
-// file and the system's reason otherwise.
-void write_image(const std::filesystem::path& path, const char* data, std::size_t size) {
-  const auto fail = [&](const char* step) {
-    throw NumericalError(
-        fmt::format("cannot {} '{}': {}", step, path.string(), std::strerror(errno)));
-  };
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
-  if (fd < 0) fail("create");
-  std::size_t written = 0;
-  while (written < size) {
-    const ssize_t n = ::write(fd, data + written, size - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int reason = errno;
-      ::close(fd);
-      errno = reason;
-      fail("write");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) fail("write");
-}
-
 }  // namespace
 
 H5File H5File::create(const std::filesystem::path& path) {
   silence_hdf5_errors();
-  write_image(path, nullptr, 0);  // claims (and truncates) it now: a bad path fails here
+  write_file(path, path.string(), [](std::ostream&) {});  // claimed now: a bad path fails here
   const H5Id fapl = in_memory_access();
   H5File file(own(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()),
                   "cannot create HDF5 file '" + path.native() + "'"));
@@ -627,7 +599,9 @@ void H5File::close() {
     const auto size = check(H5Fget_file_image(id_.get(), nullptr, 0), what);
     std::vector<char> image(static_cast<std::size_t>(size));
     check(H5Fget_file_image(id_.get(), image.data(), image.size()), what);
-    write_image(image_path_, image.data(), image.size());
+    write_file(image_path_, image_path_.string(), [&](std::ostream& out) {
+      out.write(image.data(), static_cast<std::streamsize>(image.size()));
+    });
   }
   id_ = detail::H5Id();
 }

@@ -10,7 +10,7 @@ namespace softglass {
 
 void write_csv(const std::filesystem::path& path, const std::filesystem::path& shown_path,
                const std::vector<std::string>& comments, const UnitTable& table, int digits) {
-  write_text_file(path, shown_path.string(), [&](std::ostream& csv) {
+  write_file(path, shown_path.string(), [&](std::ostream& csv) {
     for (const std::string& line : comments) csv << "# " << line << "\n";
     for (std::size_t c = 0; c < table.columns.size(); ++c)
       csv << (c ? "," : "") << table.columns[c].name << " [" << table.columns[c].unit << "]";

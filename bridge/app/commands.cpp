@@ -33,7 +33,7 @@ std::filesystem::path beside(const std::filesystem::path& main, const std::strin
 }
 
 void write(AtomicOutput& out, const std::string& text) {
-  write_text_file(out.temporary_path(), out.final_path().string(),
+  write_file(out.temporary_path(), out.final_path().string(),
                   [&](std::ostream& f) { f << text; });
 }
 

@@ -3,7 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>
 
-#include <utility>
+#include <algorithm>
 #include <vector>
 
 #include "common/errors.h"
@@ -58,10 +58,18 @@ std::string model_preset_documentation() {
   return text;
 }
 
-void apply_model_preset(dealii::ParameterHandler& prm, const std::string& preset) {
+void apply_model_preset(dealii::ParameterHandler& prm, const std::vector<SetEntry>& set_by_file) {
+  const auto set = [&](const std::string& subsection, const std::string& name) {
+    return std::find_if(set_by_file.begin(), set_by_file.end(), [&](const SetEntry& e) {
+      return e.subsections == std::vector<std::string>{subsection} && e.name == name;
+    });
+  };
+  const auto chosen = set("model", "preset");
+  const std::string preset = chosen != set_by_file.end() ? chosen->value : kDefaultModelPreset;
   for (const ModelPreset& p : presets()) {
     if (preset != p.name) continue;
     for (const PresetEntry& e : p.entries) {
+      if (set(e.subsection, e.name) != set_by_file.end()) continue;
       prm.enter_subsection(e.subsection);
       prm.set(e.name, std::string(e.value));
       prm.leave_subsection();

@@ -10,11 +10,14 @@
 //              emulsions), and the Stokes friction against the neighbours'
 //              motion (pair dashpots; the exponent m and the universal k).
 //
-// A preset sets entries of subsections `contact law` and `drag`; any entry the
-// file sets itself wins over the preset's.
+// A preset sets entries of subsections `contact law` and `drag` that the file
+// does not set itself.
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "common/parameter_input.h"
 
 namespace dealii {
 class ParameterHandler;
@@ -29,8 +32,9 @@ std::string model_preset_names();
 /// One line per preset, for the entry's documentation.
 std::string model_preset_documentation();
 
-/// Sets the preset's entries in `prm` (declared by parameter_file.cpp), before
-/// the file is parsed. Throws InputError for an unknown name.
-void apply_model_preset(dealii::ParameterHandler& prm, const std::string& preset);
+/// After a file is parsed into `prm` (declared by parameter_file.cpp): sets
+/// the entries of the preset the file chooses (`model/preset` among
+/// `set_by_file`, else the default) that the file does not set itself.
+void apply_model_preset(dealii::ParameterHandler& prm, const std::vector<SetEntry>& set_by_file);
 
 }  // namespace softglass::micro

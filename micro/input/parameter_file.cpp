@@ -416,18 +416,13 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
 
 }  // namespace
 
-// A file is read twice: once for the model preset it chooses, then with that
-// preset's entries in place of the defaults, so that the file's own entries
-// override the preset's wherever they stand in it.
-// Returns the entries the file sets.
+// Parses `file`, then fills in what its model preset sets and the file does
+// not; returns the entries the file sets.
 std::vector<SetEntry> parse_with_model_preset(ParameterHandler& prm,
                                               const std::filesystem::path& file) {
-  std::string preset = kDefaultModelPreset;
-  for (const SetEntry& set : parse_parameter_file(prm, file, "parameter file"))
-    if (set.subsections == std::vector<std::string>{"model"} && set.name == "preset")
-      preset = set.value;
-  apply_model_preset(prm, preset);
-  return parse_parameter_file(prm, file, "parameter file");
+  std::vector<SetEntry> set = parse_parameter_file(prm, file, "parameter file");
+  apply_model_preset(prm, set);
+  return set;
 }
 
 MicroParameters read_parameter_file(const std::filesystem::path& file) {
@@ -447,8 +442,10 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   const std::vector<SetEntry> set = parse_with_model_preset(prm, file);
   // A run file given to `micro sweep` would start the default preset's hours
   // of work: a sweep file says at least which sweep it is.
-  if (std::none_of(set.begin(), set.end(),
-                   [](const SetEntry& e) { return !e.subsections.empty() && e.subsections.front() == "sweep"; })) {
+  const auto in_sweep = [](const SetEntry& e) {
+    return !e.subsections.empty() && e.subsections.front() == "sweep";
+  };
+  if (std::none_of(set.begin(), set.end(), in_sweep)) {
     throw InputError(fmt::format(
         "'{}' sets nothing in subsection 'sweep': it is not a sweep file (a run file is for "
         "`micro run`); a sweep file names at least its preset, e.g. 'subsection sweep / set "

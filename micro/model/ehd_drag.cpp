@@ -356,9 +356,11 @@ DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde,
     Vec3 film = Vec3::Zero(), dashpot_force = Vec3::Zero();  // on i from j
     if (settings_.enabled && speed > 0.0)
       film = -drag_coefficient(c, k, gamma_tilde) / std::sqrt(speed) * w;
-    if (!dashpot.empty()) dashpot_force = -dashpot[k] * relative_velocity(q, c.separation[k]);
     sum.film += c.separation[k] * film.transpose();
-    sum.friction += c.separation[k] * dashpot_force.transpose();
+    if (!dashpot.empty()) {
+      dashpot_force = -dashpot[k] * relative_velocity(q, c.separation[k]);
+      sum.friction += c.separation[k] * dashpot_force.transpose();
+    }
     const Vec3 f = film + dashpot_force;
     if (!drag.empty()) {
       drag[c.i[k]] += f;
