@@ -19,18 +19,23 @@ namespace {
 
 const std::string kTemporarySuffix = ".tmp";
 
-// Removes `<final>.tmp<PID>` files beside `final` whose process is gone (kill
-// with signal 0 reports ESRCH). A live process's temporary is kept, whoever
-// owns it; only the file name decides, so nothing else is ever removed.
-void remove_dead_temporaries(const std::filesystem::path& final) {
-  const auto dir = final.has_parent_path() ? final.parent_path() : std::filesystem::path(".");
-  const std::string prefix = final.filename().string() + kTemporarySuffix;
+std::filesystem::path directory_of(const std::filesystem::path& file) {
+  return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+}
+
+}  // namespace
+
+void remove_dead_temporaries(const std::filesystem::path& directory, const std::string& name) {
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
-    const std::string name = entry.path().filename().string();
-    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error)) {
+    const std::string file = entry.path().filename().string();
+    const auto suffix = file.rfind(kTemporarySuffix);
+    if (suffix == std::string::npos || suffix == 0) continue;
+    if (!name.empty() && file.compare(0, suffix, name) != 0) continue;
+    const std::string digits = file.substr(suffix + kTemporarySuffix.size());
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      continue;
     const pid_t pid = static_cast<pid_t>(std::stol(digits));
     if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH) {
       std::error_code ignored;
@@ -38,8 +43,6 @@ void remove_dead_temporaries(const std::filesystem::path& final) {
     }
   }
 }
-
-}  // namespace
 
 void write_file(const std::filesystem::path& path, const std::string& shown,
                      const std::function<void(std::ostream&)>& body) {
@@ -65,7 +68,7 @@ AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
     throw OutputExistsError("output file '" + final_.string() +
                             "' exists; pass --force to overwrite it");
   }
-  const auto dir = final_.has_parent_path() ? final_.parent_path() : std::filesystem::path(".");
+  const auto dir = directory_of(final_);
   if (!std::filesystem::is_directory(dir)) {
     throw InputError("output directory '" + dir.string() + "' does not exist");
   }
@@ -92,7 +95,7 @@ AtomicOutput::~AtomicOutput() {
   }
 }
 
-void AtomicOutput::commit() {
+void AtomicOutput::commit(bool tidy) {
   std::error_code error;
   std::filesystem::rename(temporary_, final_, error);
   if (error) {
@@ -100,7 +103,7 @@ void AtomicOutput::commit() {
                                      temporary_.string(), final_.string(), error.message()));
   }
   committed_ = true;
-  remove_dead_temporaries(final_);
+  if (tidy) remove_dead_temporaries(directory_of(final_), final_.filename().string());
 }
 
 }  // namespace softglass

@@ -22,6 +22,12 @@ namespace softglass {
 void write_file(const std::filesystem::path& path, const std::string& shown,
                      const std::function<void(std::ostream&)>& body);
 
+/// Removes, in `directory`, the temporaries (`<name>.tmp<PID>`) of processes
+/// no longer alive on this machine (kill with signal 0 reports ESRCH); with
+/// `name`, only that output's. A live process's temporary is kept, whoever
+/// owns it; only the file name decides, so nothing else is ever removed.
+void remove_dead_temporaries(const std::filesystem::path& directory, const std::string& name = "");
+
 class AtomicOutput {
  public:
   /// Refuses (OutputExistsError) when `final_path` exists and `overwrite` is
@@ -40,10 +46,12 @@ class AtomicOutput {
   /// Writes the temporary file with `body` (write_file) and commits.
   void write_and_commit(const std::function<void(std::ostream&)>& body);
 
-  /// Renames the temporary file onto the final path (atomic on POSIX) and
-  /// removes the temporaries of this output left by dead processes;
-  /// NumericalError naming both paths and the reason if it cannot.
-  void commit();
+  /// Renames the temporary file onto the final path (atomic on POSIX) and,
+  /// with `tidy`, removes the temporaries of this output left by dead
+  /// processes (a caller committing many files of one folder tidies it once,
+  /// with remove_dead_temporaries); NumericalError naming both paths and the
+  /// reason if it cannot.
+  void commit(bool tidy = true);
 
  private:
   std::filesystem::path final_;

@@ -150,6 +150,15 @@ std::string SetEntry::key() const {
   return key + name;
 }
 
+std::vector<SetEntry> in_effect(std::vector<SetEntry> entries) {
+  std::map<std::string, std::size_t> last;
+  for (std::size_t k = 0; k < entries.size(); ++k) last[entries[k].key()] = k;
+  std::vector<SetEntry> kept;
+  for (std::size_t k = 0; k < entries.size(); ++k)
+    if (last[entries[k].key()] == k) kept.push_back(std::move(entries[k]));
+  return kept;
+}
+
 std::vector<SetEntry> entries_set_in(const std::string& text, const std::string& file) {
   Statements statements;
   std::vector<SetEntry> entries;

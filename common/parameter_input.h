@@ -33,6 +33,10 @@ struct SetEntry {
   std::string key() const;
 };
 
+/// Of `entries` (in the order they were set), the ones in effect: the last
+/// `set` of each entry, in order.
+std::vector<SetEntry> in_effect(std::vector<SetEntry> entries);
+
 /// The entries `text` sets, in order (its `include` lines are not followed);
 /// `file` names it in the entries.
 std::vector<SetEntry> entries_set_in(const std::string& text, const std::string& file);

@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "common/atomic_output.h"
 #include "common/csv_table.h"
 #include "common/errors.h"
 #include "common/version.h"
@@ -207,7 +207,7 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
 }
 
 // Predicted against measured torque (and normal force) over Ω into `file`;
-// false if gnuplot is missing or failed.
+// false if gnuplot is missing, failed, or wrote an incomplete PNG.
 bool write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
                 const std::filesystem::path& file) {
   const MeasuredTorques& m = c.measured;
@@ -226,14 +226,14 @@ bool write_plot(const Comparison& c, const CompareOptions& o, const std::string&
 void write_summary(const std::filesystem::path& file, const std::vector<std::string>& header_lines,
                    const std::vector<std::string>& report, double wall, unsigned ranks_per_point,
                    bool plotted) {
-  std::ofstream summary(file);
-  for (const std::string& line : header_lines) summary << line << "\n";
-  for (const std::string& line : report) summary << line << "\n";
-  summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
-                         dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD), ranks_per_point);
-  if (!plotted) summary << "no plot: " << kNoPlot << "\n";
-  summary.close();
-  if (!summary) throw NumericalError("cannot write summary.txt");
+  write_file(file, "summary.txt", [&](std::ostream& summary) {
+    for (const std::string& line : header_lines) summary << line << "\n";
+    for (const std::string& line : report) summary << line << "\n";
+    summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
+                           dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+                           ranks_per_point);
+    if (!plotted) summary << "no plot: " << kNoPlot << "\n";
+  });
 }
 
 std::filesystem::path default_directory(const std::filesystem::path& data_file,
@@ -286,6 +286,10 @@ int compare(const CompareOptions& o) {
   dealii::ParameterHandler prm;
   auto [material, settings, entries] = read_scene_input(prm, o.scene_file, o.preset, o.material);
   const std::string scene_name = prm.get("scene");
+  // The operating points are the measured ones: the scene file's sweep is not used.
+  std::erase_if(entries, [](const SetEntry& e) {
+    return !e.subsections.empty() && e.subsections.front() == "sweep";
+  });
   check_entry_scales(entries, o.scene_file);
   std::unique_ptr<Scene> scene = make_scene(prm, material, settings, o.scene_file.parent_path());
   const InstrumentConstants constants = instrument_constants(*scene, scene_name, o);

@@ -32,7 +32,8 @@ unsigned source_of(const SetEntry& e) {
   if (e.subsections.empty()) return 0;
   const std::string& s = e.subsections.front();
   if (s == "material") return material;
-  if (s == "sweep" || s == "measurement") return drive;
+  if (s == "sweep" || s == "measurement")
+    return e.name == "points" ? 0 : drive;  // a number of points is no scale
   if (s == "solver" || s == "output") return 0;
   return geometry;  // the scene's own subsection (another scene's is refused)
 }

@@ -54,20 +54,23 @@ ResultFolder::ResultFolder(std::filesystem::path directory, const std::vector<st
     : directory_(std::move(directory)) {
   const MPI_Comm world = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(world) == 0;
-  std::string refusal;
+  // Whatever stops rank 0 here (an existing result, a folder it cannot write,
+  // a file where the folder should be) must stop the other ranks too, or they
+  // would wait for it for ever.
+  std::exception_ptr failure;
   if (root) {
-    std::filesystem::create_directories(directory_);
     try {
+      std::filesystem::create_directories(directory_);
       for (const std::string& name : names)
         files_[name] = std::make_unique<AtomicOutput>(directory_ / name, force);
       files_[kManifest] = std::make_unique<AtomicOutput>(directory_ / kManifest, force);
-    } catch (const OutputExistsError& error) {
-      refusal = error.what();
+    } catch (const std::exception&) {
+      failure = std::current_exception();
       files_.clear();
     }
   }
-  if (broadcast_flag(world, !refusal.empty())) {
-    if (root) throw OutputExistsError(refusal);
+  if (broadcast_flag(world, failure != nullptr)) {
+    if (root) std::rethrow_exception(failure);
     refused_ = true;
     return;
   }
@@ -90,21 +93,19 @@ void ResultFolder::commit() {
   previous.insert(discarded_.begin(), discarded_.end());
   std::unique_ptr<AtomicOutput> manifest = std::move(files_.at(kManifest));
   files_.erase(kManifest);
-  {
-    std::ofstream out(manifest->temporary_path());
+  write_file(manifest->temporary_path(), manifest->final_path().string(), [&](std::ostream& out) {
     out << "# softglass macro: the files of one result, listed when all were in place "
            "(docs/macro.md)\n";
     for (const auto& [name, file] : files_) out << name << "\n";
-    out.close();
-    if (!out) throw NumericalError(fmt::format("cannot write {}", manifest->final_path().string()));
-  }
-  for (const auto& [name, file] : files_) file->commit();
+  });
+  for (const auto& [name, file] : files_) file->commit(/*tidy=*/false);  // tidied once below
   for (const std::string& name : previous) {
     if (files_.contains(name)) continue;
     std::error_code ignored;  // already gone: nothing to remove
     std::filesystem::remove(directory_ / name, ignored);
   }
-  manifest->commit();
+  manifest->commit(/*tidy=*/false);
+  remove_dead_temporaries(directory_);
 }
 
 }  // namespace softglass::macro::app

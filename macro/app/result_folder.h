@@ -32,10 +32,11 @@ class ResultFolder {
  public:
   /// Collective over MPI_COMM_WORLD. Rank 0 creates `directory` and claims
   /// `names` and the manifest: OutputExistsError on rank 0 when one exists and
-  /// `force` is false; the other ranks then see refused().
+  /// `force` is false (InputError when the folder cannot be written); the
+  /// other ranks then see refused().
   ResultFolder(std::filesystem::path directory, const std::vector<std::string>& names, bool force);
 
-  /// On ranks other than 0, after rank 0's refusal: stop with kExitOutputExists.
+  /// On ranks other than 0, after rank 0 could not claim the folder: stop.
   bool refused() const { return refused_; }
   /// The same on every rank: where the file `name` is to be written.
   const std::string& temporary(const std::string& name) const;

@@ -6,6 +6,7 @@
 
 #include "common/errors.h"
 #include "common/h5_file.h"
+#include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
 

@@ -29,13 +29,9 @@ struct RunProvenance {
   unsigned mpi_ranks = 1, ranks_per_point = 1;
 };
 
-/// The column whose value is undefined, and written NaN, where the ideal
-/// geometry's value is 0 (below the yield point of a pressure-driven flow).
-inline constexpr const char* kUndefinedWhereIdealIsZero = "relative_deviation_from_ideal";
-
 /// Writes `temporary` (common/unit_table.h's CSV form, numbers with `digits`
 /// significant digits), to become the file `shown`. Every number must be
-/// finite (NaN only in kUndefinedWhereIdealIsZero): otherwise NumericalError
+/// finite (NaN only in kUndefinedWhereIdealIsZero, scenes/scene.h): otherwise NumericalError
 /// naming the file, the column, the row and its operating point, and nothing
 /// is written. NumericalError naming `shown` if it cannot be written.
 void write_results_csv(const std::filesystem::path& temporary, const std::filesystem::path& shown,

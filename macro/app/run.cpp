@@ -4,11 +4,11 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
 
+#include "common/atomic_output.h"
 #include "common/errors.h"
 #include "common/version.h"
 #include "macro/app/input_scales.h"
@@ -70,15 +70,14 @@ std::string error_summary(const std::string& quantity, const std::vector<SceneRe
 void write_summary(const std::string& file, const std::filesystem::path& scene_file,
                    const Scene& scene, const std::vector<SceneResult>& results,
                    const std::string& sweep, const std::string& parameters) {
-  std::ofstream summary(file);
-  summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
-  summary << "scene file: " << scene_file.string() << "\n";
-  summary << scene.description() << "\n";
-  summary << sweep;
-  summary << error_summary(scene.columns()[0].name, results);
-  summary << "\nfull parameter set:\n" << parameters;
-  summary.close();
-  if (!summary) throw NumericalError("cannot write summary.txt");
+  write_file(file, "summary.txt", [&](std::ostream& summary) {
+    summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
+    summary << "scene file: " << scene_file.string() << "\n";
+    summary << scene.description() << "\n";
+    summary << sweep;
+    summary << error_summary(scene.columns()[0].name, results);
+    summary << "\nfull parameter set:\n" << parameters;
+  });
 }
 
 // The field files of `output = vtu`: none, the last point's, or every point's.
@@ -110,7 +109,8 @@ int run(const RunOptions& options) {
           : options.output;
   // Every rank parses and validates the input (building the scene checks its
   // entries), so bad input stops all of them alike and leaves no folder
-  // behind; rank 0 alone then claims the output and writes the tables.
+  // behind; rank 0 then claims the output and writes the tables, every rank
+  // the field files of its points (result_folder.h).
   check_entry_scales(entries, options.scene_file);
   std::unique_ptr<Scene> scene =
       make_scene(prm, material, settings, options.scene_file.parent_path());

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "common/parameter_input.h"
 #include "common/errors.h"
@@ -60,28 +58,19 @@ std::vector<SetEntry> parse_scene_file(dealii::ParameterHandler& prm,
 
 namespace {
 
-// The scene's material, or the fragment file `override` when it is not empty
-// (`prm` then states it instead, for the summary's parameter listing).
-Material read_scene_material(dealii::ParameterHandler& prm, const std::filesystem::path& override) {
+// The scene's material, or the fragment file `override` when it is not empty:
+// `prm` then states it instead (for the summary's parameter listing), and its
+// entries replace the scene file's material entries in `entries`.
+Material read_scene_material(dealii::ParameterHandler& prm, const std::filesystem::path& override,
+                             std::vector<SetEntry>& entries) {
   if (override.empty()) return read_material(prm);
-  const Material material = read_material_file(override);
-  set_material(prm, material);
-  return material;
-}
-
-// The scene file's entries with those of its material replaced by what the
-// fragment `override` sets, when it is not empty.
-std::vector<SetEntry> material_entries_replaced(std::vector<SetEntry> entries,
-                                                const std::filesystem::path& override) {
-  if (override.empty()) return entries;
+  MaterialFile fragment = read_material_file(override);
+  set_material(prm, fragment.material);
   std::erase_if(entries, [](const SetEntry& e) {
     return !e.subsections.empty() && e.subsections.front() == "material";
   });
-  std::ifstream in(override);
-  std::ostringstream text;
-  text << in.rdbuf();
-  for (SetEntry& e : entries_set_in(text.str(), override.string())) entries.push_back(std::move(e));
-  return entries;
+  entries.insert(entries.end(), fragment.entries.begin(), fragment.entries.end());
+  return fragment.material;
 }
 
 // Sets `solver/preset` unless `preset` is empty (the command line's --preset).
@@ -102,12 +91,12 @@ void override_preset(dealii::ParameterHandler& prm, const std::string& preset) {
 SceneInput read_scene_input(dealii::ParameterHandler& prm, const std::filesystem::path& file,
                             const std::string& preset, const std::filesystem::path& material) {
   declare_scene_file(prm);
-  std::vector<SetEntry> entries = parse_scene_file(prm, file);
+  std::vector<SetEntry> entries = in_effect(parse_scene_file(prm, file));
   override_preset(prm, preset);
-  // Braced initialisers run in order: the material is read (and checked) first.
-  return {.material = read_scene_material(prm, material),
+  Material scene_material = read_scene_material(prm, material, entries);
+  return {.material = std::move(scene_material),
           .settings = fe::read_solver_settings(prm),
-          .entries = material_entries_replaced(std::move(entries), material)};
+          .entries = std::move(entries)};
 }
 
 std::vector<double> read_sweep(dealii::ParameterHandler& prm) {

@@ -5,7 +5,6 @@
 #include <fmt/ranges.h>
 
 #include <array>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -124,12 +123,11 @@ Material parse_material(const std::string& text, const std::string& source) {
   return read_material(prm);
 }
 
-Material read_material_file(const std::filesystem::path& file) {
-  std::ifstream input(file);
-  require(input.good(), fmt::format("material file '{}' cannot be read", file.string()));
-  std::ostringstream text;
-  text << input.rdbuf();
-  return parse_material(text.str(), file.string());
+MaterialFile read_material_file(const std::filesystem::path& file) {
+  dealii::ParameterHandler prm;
+  declare_material(prm);
+  std::vector<SetEntry> entries = parse_parameter_file(prm, file, "material file");
+  return {read_material(prm), std::move(entries)};
 }
 
 }  // namespace softglass::macro

@@ -14,7 +14,9 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "common/parameter_input.h"
 #include "macro/material/material.h"
 
 namespace dealii {
@@ -37,7 +39,13 @@ void set_material(dealii::ParameterHandler& prm, const Material& material);
 /// Parses fragment text; `source` names it in messages.
 Material parse_material(const std::string& text, const std::string& source);
 
-/// Reads a file holding the fragment and nothing else.
-Material read_material_file(const std::filesystem::path& file);
+/// A file holding the fragment and nothing else, read like every parameter
+/// file (common/parameter_input.h: includes, byte-order mark, entries set
+/// twice), with the entries it sets.
+struct MaterialFile {
+  Material material;
+  std::vector<SetEntry> entries;
+};
+MaterialFile read_material_file(const std::filesystem::path& file);
 
 }  // namespace softglass::macro

@@ -43,7 +43,7 @@ class ReducedScene final : public Scene {
                           {name + "_regularisation_error", unit}};
     if (spec_.reference) {
       c.push_back({name + "_ideal_geometry", unit});
-      c.push_back({"relative_deviation_from_ideal", "1"});
+      c.push_back({kUndefinedWhereIdealIsZero, "1"});
     }
     if (rotation && spec_.normal_force.integrand) c.push_back({"normal_force", "N"});
     if (!rotation) c.push_back({"max_velocity", "m/s"});

@@ -25,6 +25,11 @@ class ParameterHandler;
 
 namespace softglass::macro {
 
+/// The column whose value is undefined, and written NaN, where the ideal
+/// geometry's value is 0 (below the yield point of a pressure-driven flow):
+/// the reduced scenes make it, the results file lets its NaN through.
+inline constexpr const char* kUndefinedWhereIdealIsZero = "relative_deviation_from_ideal";
+
 /// How a rotational rheometer reports what it measures (angular velocity Ω,
 /// torque M) as a shear rate and a stress: γ̇ = strain_constant · Ω and
 /// τ = stress_constant · M, the standard conversions of the geometry (what the

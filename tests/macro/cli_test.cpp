@@ -297,6 +297,21 @@ TEST_F(MacroCli, TwoRanksGiveTheSerialTable) {
   }
 }
 
+// Whatever stops rank 0 from claiming the output folder (here `-o` names a
+// file) stops the other ranks too: they waited for it for ever before.
+TEST_F(MacroCli, TwoRanksStopTogetherWhenTheFolderCannotBeClaimed) {
+  if (!mpi_available()) GTEST_SKIP() << "no " << kMpirun;
+  write("scene.prm", couette(""));
+  write("taken", "a file, not a folder\n");
+  const auto o = softglass::testing::run_tool(
+      "/usr/bin/timeout", "300 " + std::string(kMpirun) + " -n 2 --oversubscribe '" +
+                              std::string(MACRO_EXECUTABLE) + "' run scene.prm -q -o taken",
+      dir_, dir_ / "capture2");
+  EXPECT_NE(o.code, 0);
+  EXPECT_NE(o.code, 124) << "timed out: a rank waited for rank 0";
+  EXPECT_NE(o.err.find("taken"), std::string::npos) << o.err;
+}
+
 // Two ranks sharing one point's mesh (the Couette cell with its bottom: a 2D
 // meridian section, distributed over both ranks) follow the serial run's path
 // — same refinements, same Newton steps, every decision taken on global
