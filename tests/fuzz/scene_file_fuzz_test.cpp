@@ -1,14 +1,9 @@
 // Fuzzing the macro scene file (macro/app/scene_file.h) with mutations of the
-// scenes of cases/, read as `macro run` reads them: parse (includes
-// expanded), then the material, the solver settings, the operating points and
-// the scene itself, whose constructor validates its entries.
+// scenes of cases/, read as `macro run` reads them (scene_reading.h).
 #include <gtest/gtest.h>
 
 #include "fuzz_check.h"
-#include "macro/app/scene_file.h"
-#include "macro/fe/solver_settings.h"
-#include "macro/material/material_parameters.h"
-#include "macro/scenes/scene.h"
+#include "scene_reading.h"
 #include "tests/common/test_files.h"
 
 namespace softglass::macro {
@@ -34,16 +29,7 @@ TEST(SceneFileFuzz, RefusesOrReadsEveryMutation) {
   fuzz_text(seeds, 81, 400, [&](const std::string& text, const std::string& input) {
     write_text(file, text);
     return read_and_check(
-        [&] {
-          dealii::ParameterHandler prm;
-          app::declare_scene_file(prm);
-          app::parse_scene_file(prm, file);
-          const Material m = read_material(prm);
-          const fe::SolverSettings settings = fe::read_solver_settings(prm);
-          std::vector<double> points = app::read_sweep(prm);
-          make_scene(prm, m, settings, dir.path());
-          return points;
-        },
+        [&] { return testing::read_scene_as_macro_run(file).points; },
         [&](const std::vector<double>& points) {
           EXPECT_FALSE(points.empty()) << input;
           expect_all_finite(points, "an operating point", input);

@@ -1,0 +1,157 @@
+// Scene files that are valid, entry by entry, but say something else than the
+// user meant (issue 19, class 2): a file without `set scene` beside a
+// subsection channel ran the default cone and plate, taking the channel's
+// pressure gradients for angular velocities. The campaign builds every such
+// file from the scenes of cases/ and the subsection of every registered scene,
+// and reads each as `macro run` does (scene_reading.h):
+//   - another scene's subsection added (one per registered scene);
+//   - `set scene` pointed at another scene, the file's own subsection left;
+//   - `set scene` removed (the default scene then applies);
+//   - an entry set a second time with another value;
+// each must be refused with an InputError naming the offending entry. Its
+// control, which a reader refusing everything would fail: the scene switched
+// whole (`set scene` and the subsection both replaced) must be read.
+#include <gtest/gtest.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "fuzz_check.h"
+#include "scene_reading.h"
+#include "tests/common/test_files.h"
+
+namespace softglass::macro {
+namespace {
+
+using softglass::testing::read_text;
+using softglass::testing::write_text;
+
+// The subsection of every registered scene, each entry at its default, as
+// deal.II prints a declared parameter set.
+std::map<std::string, std::string> default_scene_blocks() {
+  dealii::ParameterHandler prm;
+  declare_scenes(prm);
+  std::ostringstream printed;
+  prm.print_parameters(printed, dealii::ParameterHandler::ShortPRM);
+  std::map<std::string, std::string> blocks;
+  std::istringstream in(printed.str());
+  std::string line, current;
+  static const std::regex opening(R"(^subsection (.+)$)");
+  for (std::smatch m; std::getline(in, line);) {
+    if (std::regex_match(line, m, opening)) current = m[1].str();
+    if (!current.empty()) blocks[current] += line + "\n";
+    if (line == "end") current.clear();
+  }
+  return blocks;
+}
+
+std::string default_scene() {
+  dealii::ParameterHandler prm;
+  declare_scenes(prm);
+  return prm.get("scene");
+}
+
+// The file's subsection `name` ... end, and the file without it.
+std::string block_of(const std::string& text, const std::string& name, std::string* rest) {
+  const std::regex block("\\nsubsection " + name + "\\n[\\s\\S]*?\\nend\\n");
+  std::smatch m;
+  if (!std::regex_search(text, m, block)) return {};
+  *rest = m.prefix().str() + "\n" + m.suffix().str();
+  return m.str();
+}
+
+struct Variant {
+  std::string description;
+  std::string text;
+  std::string named;  // what the refusal must name; empty: must be read
+};
+
+std::vector<Variant> variants(const std::string& seed, const std::string& scene,
+                              const std::map<std::string, std::string>& blocks) {
+  std::vector<Variant> out;
+  const std::string chosen = "set scene = " + scene + "\n";
+  std::string without_own;
+  const std::string own = block_of(seed, scene, &without_own);
+  EXPECT_FALSE(own.empty()) << "the seed of " << scene << " has no subsection " << scene;
+  for (const auto& [other, block] : blocks) {
+    if (other == scene) continue;
+    out.push_back({"subsection " + other + " added", seed + block, "'" + other + "/"});
+    std::string retargeted = seed;
+    retargeted.replace(retargeted.find(chosen), chosen.size(), "set scene = " + other + "\n");
+    out.push_back({"scene set to " + other + ", subsection " + scene + " kept", retargeted,
+                   "'" + scene + "/"});
+    std::string switched = without_own + block;
+    switched.replace(switched.find(chosen), chosen.size(), "set scene = " + other + "\n");
+    out.push_back({"switched whole to " + other, switched, ""});
+  }
+  if (scene != default_scene()) {
+    std::string defaulted = seed;
+    defaulted.erase(defaulted.find(chosen), chosen.size());
+    out.push_back({"set scene removed", defaulted, "does not set scene"});
+  }
+  // The first entry of the scene's subsection, set again with another value.
+  static const std::regex first_entry(R"((\n\s*set ([^=\n]+?)\s*=)[^\n]*\n)");
+  std::smatch m;
+  if (std::regex_search(own, m, first_entry)) {
+    std::string repeated = seed;
+    const std::string again = m[1].str() + " 1e-3\n";
+    repeated.insert(seed.find(own) + m.position(0) + m.length(0), again.substr(1));
+    out.push_back({"'" + m[2].str() + "' set twice", repeated, "set a second time"});
+  }
+  return out;
+}
+
+TEST(SceneSemanticsFuzz, EveryMisreadingIsRefusedNamingItsEntry) {
+  softglass::testing::TemporaryDirectory dir;
+  const auto cases = std::filesystem::path(SOFTGLASS_SOURCE_DIR) / "cases";
+  for (const auto& entry : std::filesystem::directory_iterator(cases))
+    if (entry.path().filename().string().find("material") != std::string::npos)
+      std::filesystem::copy_file(entry.path(), dir / entry.path().filename());
+  const std::map<std::string, std::string> blocks = default_scene_blocks();
+  ASSERT_GE(blocks.size(), 4u);
+  const std::map<std::string, std::string> seeds = {{"couette", "couette.prm"},
+                                                    {"channel", "channel.prm"},
+                                                    {"cone-plate", "cone_plate.prm"},
+                                                    {"duct", "duct.prm"}};
+  std::size_t tried = 0, refused = 0, read = 0;
+  const auto file = dir / "scene.prm";
+  for (const auto& [scene, name] : seeds) {
+    for (const Variant& v : variants(read_text(cases / name), scene, blocks)) {
+      ++tried;
+      write_text(file, v.text);
+      const std::string input = name + ": " + v.description + "\n---- input\n" + v.text;
+      try {
+        testing::read_scene_as_macro_run(file);
+        ++read;
+        EXPECT_TRUE(v.named.empty()) << "read, not refused\n" << input;
+      } catch (const InputError& e) {
+        ++refused;
+        if (v.named.empty()) {
+          ADD_FAILURE() << "a consistent file refused: " << e.what() << "\n" << input;
+        } else {
+          EXPECT_NE(std::string(e.what()).find(v.named), std::string::npos)
+              << "the refusal does not name " << v.named << ": " << e.what() << "\n"
+              << input;
+        }
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << "threw " << typeid(e).name() << " instead of InputError: " << e.what()
+                      << "\n"
+                      << input;
+      }
+      if (softglass::testing::fuzz::enough_failures()) return;
+    }
+  }
+  // Every registered scene grafted into and switched to from every seed; the
+  // scene removed from the seeds that do not choose the default; one entry
+  // repeated in each.
+  EXPECT_EQ(tried, seeds.size() * 3 * (blocks.size() - 1) + (seeds.size() - 1) + seeds.size());
+  EXPECT_EQ(read, seeds.size() * (blocks.size() - 1));
+  EXPECT_EQ(refused, tried - read);
+}
+
+}  // namespace
+}  // namespace softglass::macro
