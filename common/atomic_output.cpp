@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <iterator>
 #include <fstream>
 #include <string>
 #include <system_error>
@@ -21,6 +22,65 @@ const std::string kTemporarySuffix = ".tmp";
 
 std::filesystem::path directory_of(const std::filesystem::path& file) {
   return file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+}
+
+// The temporaries this process holds, for the handler of the terminating
+// signals (SIGINT: Ctrl-C, SIGTERM: a batch system's time limit, SIGHUP: a
+// closed terminal): it may only call async-signal-safe functions, so the
+// paths sit in fixed slots, each published by its flag after it is written.
+// A temporary beyond the slots is left to remove_dead_temporaries, as after
+// SIGKILL.
+constexpr std::size_t kSlots = 256;
+constexpr std::size_t kPathBytes = 4096;
+char temporary_slots[kSlots][kPathBytes];
+volatile std::sig_atomic_t slot_used[kSlots];
+constexpr int kTerminatingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+struct sigaction previous_actions[std::size(kTerminatingSignals)];
+
+// Removes every held temporary, then gives the signal back to the action it
+// had before (the default: termination) and raises it again — delivered when
+// this handler returns — so that the exit status still names the signal.
+void remove_temporaries_and_terminate(int signal) {
+  for (std::size_t k = 0; k < kSlots; ++k)
+    if (slot_used[k] != 0) ::unlink(temporary_slots[k]);
+  for (std::size_t s = 0; s < std::size(kTerminatingSignals); ++s)
+    if (kTerminatingSignals[s] == signal) ::sigaction(signal, &previous_actions[s], nullptr);
+  ::raise(signal);
+}
+
+void install_signal_cleanup() {
+  static const bool installed = [] {
+    for (std::size_t s = 0; s < std::size(kTerminatingSignals); ++s) {
+      const int signal = kTerminatingSignals[s];
+      ::sigaction(signal, nullptr, &previous_actions[s]);
+      // An ignored signal (nohup, a background job of a script) ends nothing.
+      if (previous_actions[s].sa_handler == SIG_IGN) continue;
+      struct sigaction action {};
+      action.sa_handler = remove_temporaries_and_terminate;
+      sigemptyset(&action.sa_mask);
+      ::sigaction(signal, &action, nullptr);
+    }
+    return true;
+  }();
+  (void)installed;
+}
+
+// The slot holding `path`, or kSlots when none was free.
+std::size_t hold(const std::filesystem::path& path) {
+  install_signal_cleanup();
+  const std::string text = path.string();
+  if (text.size() >= kPathBytes) return kSlots;
+  for (std::size_t k = 0; k < kSlots; ++k) {
+    if (slot_used[k] != 0) continue;
+    std::memcpy(temporary_slots[k], text.c_str(), text.size() + 1);
+    slot_used[k] = 1;
+    return k;
+  }
+  return kSlots;
+}
+
+void release(std::size_t slot) {
+  if (slot < kSlots) slot_used[slot] = 0;
 }
 
 }  // namespace
@@ -86,9 +146,11 @@ AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
                                  std::strerror(errno)));
   }
   ::close(fd);
+  slot_ = hold(temporary_);
 }
 
 AtomicOutput::~AtomicOutput() {
+  release(slot_);
   if (!committed_) {
     std::error_code ignored;
     std::filesystem::remove(temporary_, ignored);
@@ -103,6 +165,8 @@ void AtomicOutput::commit(bool tidy) {
                                      temporary_.string(), final_.string(), error.message()));
   }
   committed_ = true;
+  release(slot_);
+  slot_ = kSlots;
   if (tidy) remove_dead_temporaries(directory_of(final_), final_.filename().string());
 }
 

@@ -2,10 +2,11 @@
 //
 // The file is written under a temporary name in the same directory and renamed
 // onto the final path only when `commit()` is called; an exception or a kill
-// before that leaves any earlier file at the final path untouched. A killed
-// process cannot remove its temporary file (`<final>.tmp<PID>`); the next
-// process that completes the same output removes those of processes no longer
-// alive on this machine.
+// before that leaves any earlier file at the final path untouched. A process
+// ended by SIGINT, SIGTERM or SIGHUP removes its temporary files
+// (`<final>.tmp<PID>`) before it terminates by the signal; one killed by
+// SIGKILL cannot, and the next process that completes the same output removes
+// those of processes no longer alive on this machine.
 #pragma once
 
 #include <filesystem>
@@ -57,6 +58,7 @@ class AtomicOutput {
   std::filesystem::path final_;
   std::filesystem::path temporary_;
   bool committed_ = false;
+  std::size_t slot_ = static_cast<std::size_t>(-1);  // among the temporaries a signal removes
 };
 
 }  // namespace softglass

@@ -186,5 +186,40 @@ TEST_F(AtomicOutputTest, TheNextCompletedOutputRemovesTheTemporariesOfKilledProc
   EXPECT_EQ(read_text(result()), "complete");
 }
 
+// Ctrl-C, a batch system's SIGTERM at its time limit, a closed terminal: the
+// process removes what it was writing, earlier results stay, and it still
+// ends by the signal (the shell and the batch system see 130, 143, 129).
+TEST_F(AtomicOutputTest, ATerminatingSignalRemovesTheTemporariesAndStillEndsTheProcess) {
+  write_text(result(), "earlier");
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    int ready[2];
+    ASSERT_EQ(::pipe(ready), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      AtomicOutput first(result(), true);
+      AtomicOutput second(dir_ / "table.csv", false);
+      std::ofstream(first.temporary_path()) << "half";
+      const char byte = 1;
+      if (::write(ready[1], &byte, 1) != 1) ::_exit(3);
+      for (;;) ::pause();
+    }
+    ::close(ready[1]);
+    char byte = 0;
+    ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+    ::close(ready[0]);
+    const fs::path temporary = result().string() + ".tmp" + std::to_string(child);
+    ASSERT_TRUE(fs::exists(temporary));
+    ASSERT_EQ(::kill(child, signal), 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "signal " << signal;
+    EXPECT_EQ(WTERMSIG(status), signal);
+    EXPECT_FALSE(fs::exists(temporary)) << "signal " << signal;
+    EXPECT_FALSE(fs::exists(dir_ / ("table.csv.tmp" + std::to_string(child))));
+    EXPECT_EQ(read_text(result()), "earlier");
+  }
+}
+
 }  // namespace
 }  // namespace softglass
