@@ -7,8 +7,8 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <iterator>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -65,22 +65,24 @@ void install_signal_cleanup() {
   (void)installed;
 }
 
-// The slot holding `path`, or kSlots when none was free.
+// The slot holding `path`, or AtomicOutput::kNoSlot when none was free.
 std::size_t hold(const std::filesystem::path& path) {
   install_signal_cleanup();
   const std::string text = path.string();
-  if (text.size() >= kPathBytes) return kSlots;
+  if (text.size() >= kPathBytes) return AtomicOutput::kNoSlot;
   for (std::size_t k = 0; k < kSlots; ++k) {
     if (slot_used[k] != 0) continue;
     std::memcpy(temporary_slots[k], text.c_str(), text.size() + 1);
     slot_used[k] = 1;
     return k;
   }
-  return kSlots;
+  return AtomicOutput::kNoSlot;
 }
 
-void release(std::size_t slot) {
+// Frees the slot (once: it may be held by another output afterwards).
+void release(std::size_t& slot) {
   if (slot < kSlots) slot_used[slot] = 0;
+  slot = AtomicOutput::kNoSlot;
 }
 
 }  // namespace
@@ -166,7 +168,6 @@ void AtomicOutput::commit(bool tidy) {
   }
   committed_ = true;
   release(slot_);
-  slot_ = kSlots;
   if (tidy) remove_dead_temporaries(directory_of(final_), final_.filename().string());
 }
 

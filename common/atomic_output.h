@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <cstddef>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -54,11 +55,14 @@ class AtomicOutput {
   /// reason if it cannot.
   void commit(bool tidy = true);
 
+  /// A temporary not among those a signal removes (all slots taken).
+  static constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
+
  private:
   std::filesystem::path final_;
   std::filesystem::path temporary_;
   bool committed_ = false;
-  std::size_t slot_ = static_cast<std::size_t>(-1);  // among the temporaries a signal removes
+  std::size_t slot_ = kNoSlot;  // among the temporaries a signal removes
 };
 
 }  // namespace softglass

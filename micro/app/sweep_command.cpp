@@ -122,7 +122,9 @@ void check_cases_before_work(const Sweep& sweep) {
 
 // The wall time of the cases not yet done, from the plan's cost model (core
 // seconds per 5 strain, docs/sweeps.md) at the runs' shortest length, spread
-// over the workers: a lower estimate, within about a factor 2.
+// over the workers: a lower estimate. The model is calibrated on the literal
+// model (within about a factor 2 there); the Stokes friction against the
+// neighbours costs about 3× more per case (docs/integrators.md).
 double estimated_hours(const Sweep& sweep, std::size_t workers) {
   const double strain = sweep.plan.run ? sweep.plan.run->min_strain
                                        : sweep.parameters.base.protocol.min_strain;

@@ -36,13 +36,14 @@ using namespace softglass::testing::fuzz;
 using softglass::testing::read_text;
 using softglass::testing::write_text;
 
-// The seed scene with its material inlined (so that every entry is set once,
-// in this file), in the 1D variant, at the fast preset.
+// The seed scene with the file it includes inlined (so that every entry is
+// set once, in this file), in the 1D variant, at the fast preset.
 std::string one_dimensional(const std::string& scene) {
   const auto cases = std::filesystem::path(SOFTGLASS_SOURCE_DIR) / "cases";
   std::string text = read_text(cases / scene);
-  text = std::regex_replace(text, std::regex(R"(include (\S+)\n)"),
-                            read_text(cases / "macro_material_castoroil85.prm"));
+  std::smatch include;
+  if (std::regex_search(text, include, std::regex(R"(include (\S+)\n)")))
+    text = include.prefix().str() + read_text(cases / include[1].str()) + include.suffix().str();
   text = std::regex_replace(text, std::regex(R"(set end effects\s*=\s*true)"),
                             "set end effects = false");
   return std::regex_replace(text, std::regex(R"(set preset\s*=\s*\S+)"), "set preset = fast");
@@ -77,7 +78,7 @@ TEST(SceneExtremesFuzz, CombinedExtremesAreRefusedOrSolvedToFiniteNumbers) {
     ASSERT_GE(numbers.size(), 5u) << scene;
     const std::size_t budget = iterations(60);
     for (std::size_t iteration = 0; iteration < budget; ++iteration) {
-      Mutator mutator(19'3, iteration);
+      Mutator mutator(91, iteration);
       // Two or three entries, each set to 10^±(20 ... 99): within every
       // entry's own range of magnitudes (input_scales.h), extreme together.
       std::vector<std::pair<NumberAt, std::string>> changes;

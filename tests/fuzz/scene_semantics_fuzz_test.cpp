@@ -30,29 +30,37 @@ namespace {
 using softglass::testing::read_text;
 using softglass::testing::write_text;
 
-// The subsection of every registered scene, each entry at its default, as
-// deal.II prints a declared parameter set.
-std::map<std::string, std::string> default_scene_blocks() {
+// The declared scenes: the default of `set scene`, and the subsection of
+// every registered scene with each entry at its default, as deal.II prints a
+// declared parameter set.
+struct DeclaredScenes {
+  std::string default_scene;
+  std::map<std::string, std::string> blocks;
+};
+
+DeclaredScenes declared_scenes() {
   dealii::ParameterHandler prm;
   declare_scenes(prm);
   std::ostringstream printed;
   prm.print_parameters(printed, dealii::ParameterHandler::ShortPRM);
-  std::map<std::string, std::string> blocks;
+  DeclaredScenes declared{.default_scene = prm.get("scene"), .blocks = {}};
   std::istringstream in(printed.str());
   std::string line, current;
   static const std::regex opening(R"(^subsection (.+)$)");
   for (std::smatch m; std::getline(in, line);) {
     if (std::regex_match(line, m, opening)) current = m[1].str();
-    if (!current.empty()) blocks[current] += line + "\n";
+    if (!current.empty()) declared.blocks[current] += line + "\n";
     if (line == "end") current.clear();
   }
-  return blocks;
+  return declared;
 }
 
-std::string default_scene() {
-  dealii::ParameterHandler prm;
-  declare_scenes(prm);
-  return prm.get("scene");
+// `text` with its line `set scene = <from>` made `set scene = <to>`, or
+// removed when `to` is empty.
+std::string with_scene(std::string text, const std::string& from, const std::string& to) {
+  const std::string line = "set scene = " + from + "\n";
+  text.replace(text.find(line), line.size(), to.empty() ? "" : "set scene = " + to + "\n");
+  return text;
 }
 
 // The file's subsection `name` ... end, and the file without it.
@@ -71,36 +79,29 @@ struct Variant {
 };
 
 std::vector<Variant> variants(const std::string& seed, const std::string& scene,
-                              const std::map<std::string, std::string>& blocks) {
+                              const DeclaredScenes& declared) {
   std::vector<Variant> out;
-  const std::string chosen = "set scene = " + scene + "\n";
   std::string without_own;
   const std::string own = block_of(seed, scene, &without_own);
   EXPECT_FALSE(own.empty()) << "the seed of " << scene << " has no subsection " << scene;
-  for (const auto& [other, block] : blocks) {
+  for (const auto& [other, block] : declared.blocks) {
     if (other == scene) continue;
     out.push_back({"subsection " + other + " added", seed + block, "'" + other + "/"});
-    std::string retargeted = seed;
-    retargeted.replace(retargeted.find(chosen), chosen.size(), "set scene = " + other + "\n");
-    out.push_back({"scene set to " + other + ", subsection " + scene + " kept", retargeted,
-                   "'" + scene + "/"});
-    std::string switched = without_own + block;
-    switched.replace(switched.find(chosen), chosen.size(), "set scene = " + other + "\n");
-    out.push_back({"switched whole to " + other, switched, ""});
+    out.push_back({"scene set to " + other + ", subsection " + scene + " kept",
+                   with_scene(seed, scene, other), "'" + scene + "/"});
+    out.push_back({"switched whole to " + other, with_scene(without_own + block, scene, other),
+                   ""});
   }
-  if (scene != default_scene()) {
-    std::string defaulted = seed;
-    defaulted.erase(defaulted.find(chosen), chosen.size());
-    out.push_back({"set scene removed", defaulted, "does not set scene"});
-  }
-  // The first entry of the scene's subsection, set again with another value.
-  static const std::regex first_entry(R"((\n\s*set ([^=\n]+?)\s*=)[^\n]*\n)");
+  if (scene != declared.default_scene)
+    out.push_back({"set scene removed", with_scene(seed, scene, ""), "does not set scene"});
+  // The first entry of the scene's subsection, set again on the next line.
+  static const std::regex first_entry(R"(\n\s*set ([^=\n]+?)\s*=[^\n]*\n)");
   std::smatch m;
   if (std::regex_search(own, m, first_entry)) {
     std::string repeated = seed;
-    const std::string again = m[1].str() + " 1e-3\n";
-    repeated.insert(seed.find(own) + m.position(0) + m.length(0), again.substr(1));
-    out.push_back({"'" + m[2].str() + "' set twice", repeated, "set a second time"});
+    repeated.insert(seed.find(own) + m.position(0) + m.length(0),
+                    "  set " + m[1].str() + " = 1e-3\n");
+    out.push_back({"'" + m[1].str() + "' set twice", repeated, "set a second time"});
   }
   return out;
 }
@@ -111,8 +112,9 @@ TEST(SceneSemanticsFuzz, EveryMisreadingIsRefusedNamingItsEntry) {
   for (const auto& entry : std::filesystem::directory_iterator(cases))
     if (entry.path().filename().string().find("material") != std::string::npos)
       std::filesystem::copy_file(entry.path(), dir / entry.path().filename());
-  const std::map<std::string, std::string> blocks = default_scene_blocks();
-  ASSERT_GE(blocks.size(), 4u);
+  const DeclaredScenes declared = declared_scenes();
+  const std::size_t registered = declared.blocks.size();
+  ASSERT_GE(registered, 4u);
   const std::map<std::string, std::string> seeds = {{"couette", "couette.prm"},
                                                     {"channel", "channel.prm"},
                                                     {"cone-plate", "cone_plate.prm"},
@@ -120,7 +122,7 @@ TEST(SceneSemanticsFuzz, EveryMisreadingIsRefusedNamingItsEntry) {
   std::size_t tried = 0, refused = 0, read = 0;
   const auto file = dir / "scene.prm";
   for (const auto& [scene, name] : seeds) {
-    for (const Variant& v : variants(read_text(cases / name), scene, blocks)) {
+    for (const Variant& v : variants(read_text(cases / name), scene, declared)) {
       ++tried;
       write_text(file, v.text);
       const std::string input = name + ": " + v.description + "\n---- input\n" + v.text;
@@ -148,8 +150,8 @@ TEST(SceneSemanticsFuzz, EveryMisreadingIsRefusedNamingItsEntry) {
   // Every registered scene grafted into and switched to from every seed; the
   // scene removed from the seeds that do not choose the default; one entry
   // repeated in each.
-  EXPECT_EQ(tried, seeds.size() * 3 * (blocks.size() - 1) + (seeds.size() - 1) + seeds.size());
-  EXPECT_EQ(read, seeds.size() * (blocks.size() - 1));
+  EXPECT_EQ(tried, seeds.size() * 3 * (registered - 1) + (seeds.size() - 1) + seeds.size());
+  EXPECT_EQ(read, seeds.size() * (registered - 1));
   EXPECT_EQ(refused, tried - read);
 }
 
