@@ -14,24 +14,28 @@ namespace softglass::macro::app {
 namespace {
 
 // What a scale is made from, to look for its cause among the entries.
-enum Source : unsigned { geometry = 1, drive = 2, material = 4 };
+enum Source : unsigned { geometry = 1, drive = 2, material = 4, flow_index = 8 };
 
 struct Scale {
   std::string name, unit;
   double value;
   unsigned sources;
   bool may_vanish = false;  // zero is a legitimate value (no normal stresses)
+  double largest = kScaleRange;
+  double smallest = 1.0 / kScaleRange;
 };
 
-bool representable(double value, bool may_vanish) {
+bool within(double value, double smallest, double largest, bool may_vanish) {
   const double a = std::abs(value);
-  return std::isfinite(a) && a <= kScaleRange && (a >= 1.0 / kScaleRange || (may_vanish && a == 0.0));
+  return std::isfinite(a) && a <= largest && (a >= smallest || (may_vanish && a == 0.0));
 }
+
+bool within(const Scale& s) { return within(s.value, s.smallest, s.largest, s.may_vanish); }
 
 unsigned source_of(const SetEntry& e) {
   if (e.subsections.empty()) return 0;
   const std::string& s = e.subsections.front();
-  if (s == "material") return material;
+  if (s == "material") return e.name == "flow index" ? material | flow_index : material;
   if (s == "sweep" || s == "measurement")
     return e.name == "points" ? 0 : drive;  // a number of points is no scale
   if (s == "solver" || s == "output") return 0;
@@ -78,13 +82,24 @@ std::optional<std::string> likely_cause(const Scale& scale, const std::vector<Se
                          const std::vector<SetEntry>& entries,
                          const std::filesystem::path& scene_file) {
   const std::optional<std::string> cause = likely_cause(scale, entries);
-  throw InputError(fmt::format(
-      "scene file '{}': {} = {:.3g} [{}]{} is beyond what a solve can represent; {}; allowed: "
-      "values whose derived scales (mesh sizes, rates, stresses, viscosity, power, output) "
-      "stay between {:g} and {:g} in SI units",
-      scene_file.string(), scale.name, scale.value, scale.unit, where,
-      cause ? "it comes from " + *cause : "it comes from the scene's entries", 1.0 / kScaleRange,
-      kScaleRange));
+  const bool representable_range = scale.largest == kScaleRange;
+  const std::string beyond = representable_range
+                                 ? "what a solve can represent"
+                                 : "the range the solver is measured to converge on";
+  const std::string allowed =
+      representable_range
+          ? fmt::format("values whose derived scales (mesh sizes, rates, stresses, viscosity, "
+                        "power, output) stay between {:g} and {:g} in SI units",
+                        1.0 / kScaleRange, kScaleRange)
+          : scale.smallest > 0.0
+                ? fmt::format("{} from {:g} to {:g}", scale.name, scale.smallest, scale.largest)
+                : fmt::format("{} up to {:g}", scale.name, scale.largest);
+  throw InputError(fmt::format("scene file '{}': {} = {:.3g} [{}]{} is beyond {}; {}; allowed: {}",
+                               scene_file.string(), scale.name, scale.value, scale.unit, where,
+                               beyond,
+                               cause ? "it comes from " + *cause
+                                     : "it comes from the scene's entries",
+                               allowed));
 }
 
 // The scales of one operating point.
@@ -95,6 +110,10 @@ std::vector<Scale> point_scales(const Scene& scene, const Material& m,
   const double stress = m.shear.stress(rate);
   const double power = stress * rate * volume;
   const Column output = scene.columns().front();
+  // K γ̇ⁿ as such: τ(γ̇_c) − τ_y would lose it entirely beyond Bi ~ 1e16.
+  const double tau_y = m.shear.yield_stress;
+  const double bingham =
+      tau_y == 0.0 ? 0.0 : tau_y / (m.shear.consistency * std::pow(rate, m.shear.flow_index));
   return {
       {"characteristic shear rate gamma_c", "1/s", rate, geometry | drive},
       {"regularisation rate scale eps", "1/s", epsilon, geometry | drive},
@@ -107,6 +126,8 @@ std::vector<Scale> point_scales(const Scene& scene, const Material& m,
        std::abs(m.first_normal_stress_difference(rate)) +
            std::abs(m.second_normal_stress_difference(rate)),
        geometry | drive | material, true},
+      {"Bingham number tau_y/(K gamma_c^n)", "1", bingham, geometry | drive | material,
+       true, kLargestBinghamNumber, 0.0},
   };
 }
 
@@ -117,7 +138,7 @@ void check_entry_scales(const std::vector<SetEntry>& entries,
   for (const SetEntry& e : entries) {
     if (source_of(e) == 0) continue;
     for (const double v : numbers_in(e.value)) {
-      if (representable(v, true)) continue;
+      if (within(v, 1.0 / kScaleRange, kScaleRange, true)) continue;
       throw InputError(fmt::format(
           "scene file '{}': {} is beyond what a solve can represent; allowed: 0 or magnitudes "
           "between {:g} and {:g} in SI units",
@@ -134,17 +155,19 @@ void check_derived_scales(const Scene& scene, const Material& material,
   std::vector<Scale> scales{{"smallest mesh cell", "m", mesh.smallest_cell, geometry},
                             {"mesh extent", "m", mesh.largest_extent, geometry},
                             {"volume", "m^3", mesh.volume, geometry}};
+  scales.push_back({"flow index n", "1", material.shear.flow_index, flow_index, false,
+                    kLargestFlowIndex, kSmallestFlowIndex});
   if (const auto instrument = scene.instrument()) {
     scales.push_back({"instrument strain constant", "1/rad", instrument->strain_constant, geometry});
     scales.push_back(
         {"instrument stress constant", "Pa/(N m)", instrument->stress_constant, geometry});
   }
   for (const Scale& s : scales)
-    if (!representable(s.value, s.may_vanish)) refuse(s, "", entries, scene_file);
+    if (!within(s)) refuse(s, "", entries, scene_file);
   const Column drive = scene.drive();
   for (const double point : points) {
     for (const Scale& s : point_scales(scene, material, settings, point, mesh.volume)) {
-      if (!representable(s.value, s.may_vanish))
+      if (!within(s))
         refuse(s, fmt::format(" at {} = {:g} [{}]", drive.name, point, drive.unit), entries,
                scene_file);
     }

@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <map>
@@ -41,41 +42,73 @@ UnitTable results_table(const Scene& scene, const std::vector<double>& points,
 // Points where nothing yields (below the yield point) are left out: there the
 // regularised material only creeps at rates ~ε and the exact output is zero,
 // so a relative error means nothing; they are counted instead.
-std::string error_summary(const std::string& quantity, const std::vector<SceneResult>& results) {
+struct ErrorEstimates {
+  double discretisation = 0.0, regularisation = 0.0;
+  double worst_point = 0.0;  ///< the drive where the larger of the two peaks
   std::size_t unyielded = 0;
-  double disc = 0.0, reg = 0.0;
-  for (const SceneResult& r : results) {
+  double largest() const { return std::max(discretisation, regularisation); }
+};
+
+ErrorEstimates largest_errors(const std::vector<double>& points,
+                              const std::vector<SceneResult>& results) {
+  ErrorEstimates e;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const SceneResult& r = results[k];
     if (r.yielded_fraction == 0.0) {
-      ++unyielded;
+      ++e.unyielded;
       continue;
     }
     if (r.main.value == 0.0) continue;
-    disc = std::max(disc, std::abs(r.main.discretisation_error / r.main.value));
-    reg = std::max(reg, std::abs(r.main.regularisation_error / r.main.value));
+    const double before = e.largest();
+    e.discretisation = std::max(e.discretisation, std::abs(r.main.discretisation_error / r.main.value));
+    e.regularisation = std::max(e.regularisation, std::abs(r.main.regularisation_error / r.main.value));
+    if (e.largest() > before) e.worst_point = points[k];
   }
+  return e;
+}
+
+std::string error_summary(const std::string& quantity, const ErrorEstimates& e) {
   std::string text = fmt::format(
       "largest estimated relative {} error: discretisation {:.2e}, regularisation {:.2e}\n",
-      quantity, disc, reg);
-  if (unyielded > 0) {
+      quantity, e.discretisation, e.regularisation);
+  if (e.unyielded > 0) {
     text += fmt::format(
         "{} operating point(s) below the yield point: nothing yields, the output is creep "
         "of order eps (zero for the exact law)\n",
-        unyielded);
+        e.unyielded);
   }
   return text;
+}
+
+// A result whose own error estimate is this large is not a prediction: the
+// mesh or ε does not resolve the flow (a yielded layer thinner than a cell, a
+// thin gap's plug). The run still writes it, with the estimate beside it, and
+// says so on stderr even when quiet. (The fast preset aims at about 1e-2.)
+constexpr double kUnresolvedRelativeError = 0.1;
+
+void warn_if_unresolved(const std::string& quantity, const Column& drive,
+                        const ErrorEstimates& e) {
+  if (e.largest() <= kUnresolvedRelativeError) return;
+  std::cerr << fmt::format(
+      "macro: warning: the estimated relative {} error reaches {:.3g} ({} error) at {} = {:g} "
+      "[{}]: the solve does not resolve this flow; use a finer preset, more cells or more "
+      "adaptive cycles (subsection solver)\n",
+      quantity, e.largest(),
+      e.discretisation >= e.regularisation ? "discretisation" : "regularisation", drive.name,
+      e.worst_point, drive.unit);
 }
 
 // summary.txt: the scene, the sweep's cost, the largest error estimates and
 // the full parameter set.
 void write_summary(const std::string& file, const std::filesystem::path& scene_file,
-                   const Scene& scene, const std::vector<SceneResult>& results,
-                   const std::string& sweep, const std::string& parameters) {
+                   const Scene& scene, const ErrorEstimates& errors, const std::string& sweep,
+                   const std::string& parameters) {
   write_file(file, "summary.txt", [&](std::ostream& summary) {
     summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
     summary << "scene file: " << scene_file.string() << "\n";
     summary << scene.description() << "\n";
     summary << sweep;
-    summary << error_summary(scene.columns()[0].name, results);
+    summary << error_summary(scene.columns()[0].name, errors);
     summary << "\nfull parameter set:\n" << parameters;
   });
 }
@@ -135,7 +168,8 @@ int run(const RunOptions& options) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
-  write_summary(folder.temporary("summary.txt"), options.scene_file, *scene, results,
+  const ErrorEstimates errors = largest_errors(points, results);
+  write_summary(folder.temporary("summary.txt"), options.scene_file, *scene, errors,
                 fmt::format("operating points: {} on {} MPI rank(s), {} per point's mesh; wall "
                             "time {:.3f} s\n",
                             points.size(), ranks, groups.ranks_per_point(), wall),
@@ -150,6 +184,7 @@ int run(const RunOptions& options) {
                     .mpi_ranks = ranks,
                     .ranks_per_point = groups.ranks_per_point()});
   folder.commit();
+  warn_if_unresolved(scene->columns()[0].name, scene->drive(), errors);
   if (!options.quiet) {
     std::cout << fmt::format("{} operating points in {:.2f} s; results in {}\n", points.size(),
                              wall, directory.string());

@@ -30,10 +30,17 @@ double yield_radius(const HerschelBulkley& law, const CouetteCell& cell, double 
 
 double angular_velocity(const HerschelBulkley& law, const CouetteCell& cell, double torque,
                         double r) {
-  const double tau_lo = std::max(law.yield_stress, shear_stress(cell, torque, cell.outer_radius));
+  const double tau_y = law.yield_stress;
+  const double tau_lo = std::max(tau_y, shear_stress(cell, torque, cell.outer_radius));
   const double tau_r = shear_stress(cell, torque, r);
   if (tau_r <= tau_lo) return 0.0;
-  return 0.5 * numerics::integrate([&](double tau) { return law.rate(tau) / tau; }, tau_lo, tau_r);
+  // In the excess stress e = τ − τ_y (HerschelBulkley::rate_at_excess). A rate
+  // that overflows at the upper end makes ω larger than any representable
+  // rotation rate: +inf, which the torque's root finding takes as "too high".
+  const double e_lo = tau_lo - tau_y, e_r = tau_r - tau_y;
+  if (std::isinf(law.rate_at_excess(e_r))) return std::numeric_limits<double>::infinity();
+  return 0.5 * numerics::integrate(
+                   [&](double e) { return law.rate_at_excess(e) / (tau_y + e); }, e_lo, e_r);
 }
 
 double rotation_rate(const HerschelBulkley& law, const CouetteCell& cell, double torque) {

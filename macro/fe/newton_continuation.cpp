@@ -54,7 +54,7 @@ unsigned NewtonContinuation::solve(const RegularisedLaw& law, VectorType& u,
     homogeneous_constraints_.distribute(update);
     const double alpha = step_length(law, u, update, residual_norm, trial);
     u.add(alpha, update);
-    damped = allow_damping && alpha < kFullStep;
+    damped = allow_damping && (damped || alpha < kFullStep);
     // SOFTGLASS_MACRO_DEBUG=1 traces every Newton step (convergence problems).
     if (std::getenv("SOFTGLASS_MACRO_DEBUG"))
       fmt::print(stderr, "{} eps={:.3g} it={} |R|={:.3e} alpha={:.3g} |du|={:.3e}\n", problem_,

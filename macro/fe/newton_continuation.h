@@ -28,10 +28,14 @@
 // given). Where the material has just yielded, τ' is orders of magnitude below η
 // (n < 1, small ε), so the Newton step along the flow direction is huge and its
 // region of validity tiny; the floor keeps the matrix positive definite in the
-// velocity (the step stays a descent direction) and the step moderate. Full
-// Newton resumes, with its quadratic convergence, once steps are accepted
-// whole. It is the fallback of a failed solve: where pure Newton converges it is
-// faster.
+// velocity (the step stays a descent direction) and the step moderate. Once
+// needed, the floor stays for the rest of the solve: dropping it after a whole
+// step (as first done) let the next full-Newton step overshoot by 10⁴ |u| again,
+// and at Bingham numbers of 10³ and more the solve alternated between the two
+// until it ran out of iterations (bench/solver_envelope.sh). The floor changes
+// the Jacobian only, not the residual: the converged solution is the same, the
+// convergence linear instead of quadratic. It is the fallback of a failed
+// solve: where pure Newton converges it is faster.
 //
 // Continuation. The smaller ε, the more η_ε varies (from τ_y/ε in a plug to
 // K γ̇ⁿ⁻¹ in the flow) and the narrower the region where Newton converges

@@ -12,8 +12,11 @@ double HerschelBulkley::stress(double rate) const {
 }
 
 double HerschelBulkley::rate(double stress) const {
-  if (stress <= yield_stress) return 0.0;
-  return std::pow((stress - yield_stress) / consistency, 1.0 / flow_index);
+  return stress <= yield_stress ? 0.0 : rate_at_excess(stress - yield_stress);
+}
+
+double HerschelBulkley::rate_at_excess(double excess) const {
+  return std::pow(excess / consistency, 1.0 / flow_index);
 }
 
 double HerschelBulkley::viscosity(double rate) const {

@@ -40,6 +40,12 @@ struct HerschelBulkley {
   /// γ̇(τ) = ((τ − τ_y)/K)^{1/n} for τ > τ_y and 0 for 0 ≤ τ ≤ τ_y.
   double rate(double stress) const;
 
+  /// γ̇ at τ = τ_y + excess, excess ≥ 0: (excess/K)^{1/n}. Integrals over a
+  /// thinly yielded layer (τ − τ_y ≪ τ_y) take the excess as their variable, so
+  /// that it is not formed as the difference of two nearly equal stresses,
+  /// which would leave it only a few significant digits.
+  double rate_at_excess(double excess) const;
+
   /// The secant viscosity η(γ̇) = τ(γ̇)/γ̇ = τ_y/γ̇ + K γ̇^{n−1}, γ̇ > 0. It is
   /// unbounded as γ̇ → 0 when τ_y > 0 or n < 1 (+inf at γ̇ = 0): solvers need a
   /// regularised law (regularised_law.h) or an augmented Lagrangian.

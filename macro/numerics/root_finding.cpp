@@ -17,6 +17,8 @@ namespace {
 constexpr int kMaxWidening = 100;
 // TOMS 748 needs a handful of iterations at full precision; this is a safety cap.
 constexpr std::uintmax_t kMaxIterations = 200;
+// The widest bracket handed to TOMS 748 (below).
+constexpr double kMaxBracketRatio = 4.0;
 
 }  // namespace
 
@@ -25,6 +27,15 @@ double solve_increasing(const std::function<double(double)>& f, double lo, doubl
   double f_lo = f(lo), f_hi = f(hi);
   for (int k = 0; f_lo > 0.0 && k < kMaxWidening; ++k) f_lo = f(lo *= 0.5);
   for (int k = 0; f_hi < 0.0 && k < kMaxWidening; ++k) f_hi = f(hi *= 2.0);
+  // TOMS 748 interpolates f across the bracket; over many orders of magnitude
+  // (an f of 1e-3 at lo and 1e268 or +inf where it overflows at hi) its
+  // interpolants overflow to NaN. Bisect geometrically, keeping the root
+  // bracketed, until hi/lo is modest: log(hi/lo) halves at every step.
+  for (int k = 0; lo > 0.0 && hi > kMaxBracketRatio * lo && k < kMaxWidening; ++k) {
+    const double mid = std::sqrt(lo) * std::sqrt(hi), f_mid = f(mid);
+    (f_mid < 0.0 ? lo : hi) = mid;
+    (f_mid < 0.0 ? f_lo : f_hi) = f_mid;
+  }
   if (f_lo == 0.0) return lo;
   if (f_hi == 0.0) return hi;
   if (!(f_lo < 0.0 && f_hi > 0.0)) {

@@ -21,7 +21,9 @@ inline constexpr double kRootTolerance = 1e-13;
 
 /// The root x* of an increasing f on [lo, hi], 0 ≤ lo ≤ hi. If f(lo) > 0 or
 /// f(hi) < 0 the bracket is first widened geometrically (lo halved towards 0, hi
-/// doubled), so a bracket that is only almost right does no harm. `what` names
+/// doubled), so a bracket that is only almost right does no harm; a bracket
+/// over orders of magnitude is first narrowed by geometric bisection, and f may
+/// be +inf where it overflows. `what` names
 /// the problem in the NumericalError thrown if no root is found.
 double solve_increasing(const std::function<double(double)>& f, double lo, double hi,
                         std::string_view what);

@@ -63,15 +63,40 @@ TEST(Couette, QuadratureMatchesTheHalfPowerClosedForm) {
 }
 
 // Near onset the reference is Gauss–Kronrod in the excess stress u = τ − τ_y,
-// which is exact at u → 0: Ω = ½ ∫₀^δ (u/K)²/(τ_y + u) du. The library works in
-// τ, and rounding τ near τ_y costs ε·τ_y/δ relative (the conditioning of Ω(T)
-// there): 1e-11 at δ/τ_y ≥ 1e-3.
+// which is exact at u → 0: Ω = ½ ∫₀^δ (u/K)²/(τ_y + u) du. The library too
+// integrates in the excess (HerschelBulkley::rate_at_excess), whose upper end
+// δ = τ1 − τ_y it forms once, exactly (Sterbenz: τ_y ≤ τ1 ≤ 2τ_y); so the
+// reference takes δ from the same τ1, and the quadrature must converge even in
+// a layer yielded by δ/τ_y = 1e-9, where integrating in τ left the integrand
+// seven significant digits and the quadrature never reached its tolerance (a
+// Bingham number of 1e8, issue 19 class 3).
 TEST(Couette, NearOnset) {
-  for (double delta : {0.01, 0.027, 0.3}) {
-    const double torque = 2.0 * std::numbers::pi * kCell.length * 0.02 * 0.02 * (10.0 + delta);
+  for (double excess : {1e-8, 1e-5, 0.01, 0.027, 0.3}) {
+    const double torque = 2.0 * std::numbers::pi * kCell.length * 0.02 * 0.02 * (10.0 + excess);
+    const double delta = shear_stress(kCell, torque, kCell.inner_radius) - 10.0;
     const double reference =
         0.5 * testing::gauss_kronrod([](double u) { return u * u / 25.0 / (10.0 + u); }, 0.0, delta);
-    EXPECT_LT(relative_error(rotation_rate(kLaw, kCell, torque), reference), 1e-11) << delta;
+    EXPECT_LT(relative_error(rotation_rate(kLaw, kCell, torque), reference), 1e-11) << excess;
+  }
+}
+
+// A thin bob in a wide cup with a small flow index: the rate (Δτ/K)^{1/n}
+// overflows at the upper end of the torque's first bracket [s, (R2/R1)² s],
+// which spans twelve orders of magnitude here. rotation_rate() then says +inf
+// and the root finding narrows the bracket geometrically before its
+// interpolation (which overflowed to NaN on such brackets): the torque comes
+// out finite and inverts the rotation rate.
+TEST(Couette, TorqueOfAThinBobWithAnOverflowingRate) {
+  const CouetteCell thin{.inner_radius = 1e-5, .outer_radius = 0.0152, .length = 0.042};
+  for (const double n : {0.02, 0.05, 0.3}) {
+    const HerschelBulkley law{.yield_stress = 15.36, .consistency = 4.72, .flow_index = n};
+    // τ1 ≈ 4e16 Pa at 1e6 N m: (τ1/K)^{1/n} ≈ 1e318 for n = 0.05.
+    if (n < 0.1) EXPECT_TRUE(std::isinf(rotation_rate(law, thin, 1e6))) << n;
+    for (const double omega : {1e-3, 50.0}) {
+      const double t = exact::torque(law, thin, omega);
+      ASSERT_TRUE(std::isfinite(t)) << n << " " << omega;
+      EXPECT_LT(relative_error(rotation_rate(law, thin, t), omega), 1e-9) << n << " " << omega;
+    }
   }
 }
 
