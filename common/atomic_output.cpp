@@ -1,6 +1,7 @@
 #include "common/atomic_output.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -169,6 +170,26 @@ void AtomicOutput::commit(bool tidy) {
   committed_ = true;
   release(slot_);
   if (tidy) remove_dead_temporaries(directory_of(final_), final_.filename().string());
+}
+
+TerminatingSignalsHeld::TerminatingSignalsHeld() {
+  sigset_t held;
+  sigemptyset(&held);
+  for (const int signal : kTerminatingSignals) sigaddset(&held, signal);
+  ::pthread_sigmask(SIG_BLOCK, &held, &previous_);
+}
+
+TerminatingSignalsHeld::~TerminatingSignalsHeld() {
+  ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+}
+
+void AtomicOutput::commit_together(const std::vector<AtomicOutput*>& outputs) {
+  {
+    const TerminatingSignalsHeld held;
+    for (AtomicOutput* out : outputs) out->commit(/*tidy=*/false);
+  }
+  for (AtomicOutput* out : outputs)
+    remove_dead_temporaries(directory_of(out->final_), out->final_.filename().string());
 }
 
 }  // namespace softglass

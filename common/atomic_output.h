@@ -9,11 +9,13 @@
 // those of processes no longer alive on this machine.
 #pragma once
 
+#include <csignal>
 #include <filesystem>
 #include <cstddef>
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace softglass {
 
@@ -29,6 +31,21 @@ void write_file(const std::filesystem::path& path, const std::string& shown,
 /// `name`, only that output's. A live process's temporary is kept, whoever
 /// owns it; only the file name decides, so nothing else is ever removed.
 void remove_dead_temporaries(const std::filesystem::path& directory, const std::string& name = "");
+
+/// Holds back the terminating signals (SIGINT, SIGTERM, SIGHUP) of the calling
+/// thread for its lifetime; one arriving meanwhile is delivered when released.
+/// Around the renames that put one result's files in place, so that a signal
+/// cannot leave new files beside old ones.
+class TerminatingSignalsHeld {
+ public:
+  TerminatingSignalsHeld();
+  ~TerminatingSignalsHeld();
+  TerminatingSignalsHeld(const TerminatingSignalsHeld&) = delete;
+  TerminatingSignalsHeld& operator=(const TerminatingSignalsHeld&) = delete;
+
+ private:
+  sigset_t previous_;
+};
 
 class AtomicOutput {
  public:
@@ -54,6 +71,14 @@ class AtomicOutput {
   /// with remove_dead_temporaries); NumericalError naming both paths and the
   /// reason if it cannot.
   void commit(bool tidy = true);
+
+  /// Commits every output of one result (a law and its tables, a run folder)
+  /// as a set: the terminating signals are held back while the temporaries
+  /// are renamed, so Ctrl-C or a time limit arriving in between ends the
+  /// process after the last rename rather than leaving new files beside old
+  /// ones. Only SIGKILL (and a failing rename, reported as by commit()) can
+  /// still split a set. Tidies each output's dead temporaries afterwards.
+  static void commit_together(const std::vector<AtomicOutput*>& outputs);
 
   /// A temporary not among those a signal removes (all slots taken).
   static constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);

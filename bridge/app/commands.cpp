@@ -75,10 +75,9 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
   write(phi_out, phi_table(a, lines));
   write(points_out, points_table(a, lines));
   write(constants_out, constants_table(a, lines));
-  for (AtomicOutput* out : {&law_out, &phi_out, &points_out, &constants_out}) {
-    out->commit();
+  AtomicOutput::commit_together({&law_out, &phi_out, &points_out, &constants_out});
+  for (const AtomicOutput* out : {&law_out, &phi_out, &points_out, &constants_out})
     fmt::print("written  {}\n", out->final_path().string());
-  }
 }
 
 void material_command(const MaterialOptions& o, const std::string& command_line) {
@@ -164,10 +163,9 @@ void rescale_command(const RescaleOptions& o, const std::string& command_line) {
   lines.push_back("constants: " + constants);
   write(points_out, rescaled_points_table(curves, rescaled, lines));
   write(curves_out, rescaled_curves_table(rescaled, settings, lines));
-  for (AtomicOutput* out : {&points_out, &curves_out}) {
-    out->commit();
+  AtomicOutput::commit_together({&points_out, &curves_out});
+  for (const AtomicOutput* out : {&points_out, &curves_out})
     fmt::print("written  {}\n", out->final_path().string());
-  }
 }
 
 }  // namespace softglass::bridge

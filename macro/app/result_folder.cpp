@@ -98,13 +98,17 @@ void ResultFolder::commit() {
            "(docs/macro.md)\n";
     for (const auto& [name, file] : files_) out << name << "\n";
   });
-  for (const auto& [name, file] : files_) file->commit(/*tidy=*/false);  // tidied once below
-  for (const std::string& name : previous) {
-    if (files_.contains(name)) continue;
-    std::error_code ignored;  // already gone: nothing to remove
-    std::filesystem::remove(directory_ / name, ignored);
+  {
+    // A signal in between would leave the new files beside the old ones.
+    const TerminatingSignalsHeld held;
+    for (const auto& [name, file] : files_) file->commit(/*tidy=*/false);  // tidied once below
+    for (const std::string& name : previous) {
+      if (files_.contains(name)) continue;
+      std::error_code ignored;  // already gone: nothing to remove
+      std::filesystem::remove(directory_ / name, ignored);
+    }
+    manifest->commit(/*tidy=*/false);
   }
-  manifest->commit(/*tidy=*/false);
   remove_dead_temporaries(directory_);
 }
 

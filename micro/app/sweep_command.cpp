@@ -253,9 +253,7 @@ std::size_t write_tables(const Sweep& sweep, const Workers& workers) {
   write_table_csv(packings_csv.temporary_path(), sweep.plan.packing_table_csv, per_packing, lines);
   write_tables_h5(h5.temporary_path(),
                   {{"flow_curve", &table}, {"flow_curve_packings", &per_packing}}, lines);
-  csv.commit();
-  packings_csv.commit();
-  h5.commit();
+  AtomicOutput::commit_together({&csv, &packings_csv, &h5});
   log(workers, "table    {} state points ({} runs) -> {}, {}, {}", averages.size(), runs.size(),
       sweep.plan.table_csv.string(), sweep.plan.packing_table_csv.string(),
       sweep.plan.table_h5.string());

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
+#include <memory>
 
 #include "common/errors.h"
 
@@ -218,6 +220,50 @@ TEST_F(AtomicOutputTest, ATerminatingSignalRemovesTheTemporariesAndStillEndsTheP
     EXPECT_FALSE(fs::exists(temporary)) << "signal " << signal;
     EXPECT_FALSE(fs::exists(dir_ / ("table.csv.tmp" + std::to_string(child))));
     EXPECT_EQ(read_text(result()), "earlier");
+  }
+}
+
+// One result is several files (a law and its tables, a sweep's CSV and HDF5
+// tables): a signal that arrives while they are put in place must not leave
+// some new and some old. The child renames 200 files as a set right after
+// telling the parent, which sends SIGTERM at once, inside the renames; with
+// the signals not held back the folder was left mixed.
+TEST_F(AtomicOutputTest, ASignalDuringTheCommitOfASetLeavesItWholeOldOrWholeNew) {
+  constexpr int kFiles = 200;  // within the slots a signal handler cleans
+  const auto name = [&](int k) { return dir_ / ("part" + std::to_string(k) + ".csv"); };
+  for (int trial = 0; trial < 10; ++trial) {
+    for (int k = 0; k < kFiles; ++k) write_text(name(k), "old");
+    int ready[2];
+    ASSERT_EQ(::pipe(ready), 0);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      std::vector<std::unique_ptr<AtomicOutput>> outputs;
+      std::vector<AtomicOutput*> set;
+      for (int k = 0; k < kFiles; ++k) {
+        outputs.push_back(std::make_unique<AtomicOutput>(name(k), true));
+        std::ofstream(outputs.back()->temporary_path()) << "new";
+        set.push_back(outputs.back().get());
+      }
+      const char byte = 1;
+      if (::write(ready[1], &byte, 1) != 1) ::_exit(3);
+      AtomicOutput::commit_together(set);
+      for (;;) ::pause();  // the held signal ends it here at the latest
+    }
+    ::close(ready[1]);
+    char byte = 0;
+    ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+    ::close(ready[0]);
+    ASSERT_EQ(::kill(child, SIGTERM), 0);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status));
+    EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    int renewed = 0;
+    for (int k = 0; k < kFiles; ++k) renewed += read_text(name(k)) == "new" ? 1 : 0;
+    EXPECT_TRUE(renewed == 0 || renewed == kFiles) << renewed << " of " << kFiles << " new";
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), kFiles)
+        << "temporaries left";
   }
 }
 
