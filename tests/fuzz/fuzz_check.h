@@ -37,6 +37,40 @@ inline std::string describe(std::size_t iteration, const std::string& mutations,
   return out;
 }
 
+/// What a campaign tried: inputs, and how many of them were refused. After
+/// every test that tried any, one line on stdout,
+///     fuzz tally: <Suite.Test> tried N refused R defects D
+/// (D: the test's failed checks, at most 5: see enough_failures), which
+/// scripts/reliability_table.sh gathers into the table of docs/validation.md.
+struct Tally {
+  std::size_t tried = 0, refused = 0;
+};
+inline Tally& tally() {
+  static Tally t;
+  return t;
+}
+inline void count_input(bool read) {
+  ++tally().tried;
+  if (!read) ++tally().refused;
+}
+
+class TallyPrinter : public ::testing::EmptyTestEventListener {
+  void OnTestStart(const ::testing::TestInfo&) override { tally() = {}; }
+  void OnTestEnd(const ::testing::TestInfo& test) override {
+    if (tally().tried == 0) return;
+    int defects = 0;
+    for (int k = 0; k < test.result()->total_part_count(); ++k)
+      defects += test.result()->GetTestPartResult(k).failed() ? 1 : 0;
+    std::printf("fuzz tally: %s.%s tried %zu refused %zu defects %d\n", test.test_suite_name(),
+                test.name(), tally().tried, tally().refused, defects);
+  }
+};
+// Installed once per test program, before main() runs the tests.
+inline const bool kTallyPrinterInstalled = [] {
+  ::testing::UnitTest::GetInstance()->listeners().Append(new TallyPrinter);
+  return true;
+}();
+
 /// A campaign stops after this many failures: one bug tends to fail many
 /// mutations alike, and the first few say all.
 inline bool enough_failures() {
@@ -50,15 +84,19 @@ template <class Read>
 bool accepted(Read&& read, const std::string& input) {
   try {
     read();
+    count_input(true);
     return true;
   } catch (const InputError& e) {
     if (std::getenv("SOFTGLASS_FUZZ_VERBOSE") != nullptr)
       std::fprintf(stderr, "refused: %s\n", e.what());
+    count_input(false);
     return false;
   } catch (const std::exception& e) {
+    count_input(false);
     ADD_FAILURE() << "threw " << typeid(e).name() << " instead of InputError: " << e.what() << "\n"
                   << input;
   } catch (...) {
+    count_input(false);
     ADD_FAILURE() << "threw something that is not a std::exception\n" << input;
   }
   return false;

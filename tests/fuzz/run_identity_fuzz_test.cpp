@@ -15,6 +15,7 @@
 #include "common/h5_file.h"
 #include "common/parameter_input.h"
 #include "micro/input/finished_work.h"
+#include "fuzz_check.h"
 #include "micro/input/parameter_file.h"
 #include "tests/common/test_files.h"
 
@@ -22,6 +23,7 @@ namespace softglass::micro {
 namespace {
 
 using softglass::testing::TemporaryDirectory;
+using softglass::testing::fuzz::count_input;
 using softglass::testing::write_text;
 
 // A stand-in for a finished run: the one dataset the check reads.
@@ -54,12 +56,15 @@ void expect_every_entry_checked(const std::string& listing, const std::filesyste
     write_finished(run, changed);
     if (only_says_where_files_are(e)) {
       EXPECT_NO_THROW(require_same_computation(run, listing)) << e.key();
+      count_input(true);
       continue;
     }
     try {
       require_same_computation(run, listing);
+      count_input(true);
       ADD_FAILURE() << "a run with another " << e.key() << " was accepted";
     } catch (const InputError& error) {
+      count_input(false);
       EXPECT_NE(std::string(error.what()).find(e.key() + " = " + e.value + "7"),
                 std::string::npos)
           << error.what();

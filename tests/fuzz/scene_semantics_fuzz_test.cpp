@@ -129,9 +129,11 @@ TEST(SceneSemanticsFuzz, EveryMisreadingIsRefusedNamingItsEntry) {
       try {
         testing::read_scene_as_macro_run(file);
         ++read;
+        softglass::testing::fuzz::count_input(true);
         EXPECT_TRUE(v.named.empty()) << "read, not refused\n" << input;
       } catch (const InputError& e) {
         ++refused;
+        softglass::testing::fuzz::count_input(false);
         if (v.named.empty()) {
           ADD_FAILURE() << "a consistent file refused: " << e.what() << "\n" << input;
         } else {
