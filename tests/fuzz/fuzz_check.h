@@ -63,6 +63,7 @@ class TallyPrinter : public ::testing::EmptyTestEventListener {
       defects += test.result()->GetTestPartResult(k).failed() ? 1 : 0;
     std::printf("fuzz tally: %s.%s tried %zu refused %zu defects %d\n", test.test_suite_name(),
                 test.name(), tally().tried, tally().refused, defects);
+    std::fflush(stdout);  // kept if a later campaign hangs and is killed
   }
 };
 // Installed once per test program, before main() runs the tests.
