@@ -125,13 +125,18 @@ void check_cases_before_work(const Sweep& sweep) {
 // over the workers: a lower estimate. The model is calibrated on the literal
 // model (within about a factor 2 there); the Stokes friction against the
 // neighbours costs about 3× more per case (docs/integrators.md).
-double estimated_hours(const Sweep& sweep, std::size_t workers) {
+double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
   const double strain = sweep.plan.run ? sweep.plan.run->min_strain
                                        : sweep.parameters.base.protocol.min_strain;
   double seconds = 0.0;
   for (const SweepCase& c : sweep.plan.cases)
-    if (!std::filesystem::exists(c.file)) seconds += c.cost * std::max(strain, 1.0) / 5.0;
-  return seconds / static_cast<double>(workers) / 3600.0;
+    if (!pending_only || !std::filesystem::exists(c.file))
+      seconds += c.cost * std::max(strain, 1.0) / 5.0;
+  return seconds;
+}
+
+double estimated_hours(const Sweep& sweep, std::size_t workers) {
+  return modelled_core_seconds(sweep, true) / static_cast<double>(workers) / 3600.0;
 }
 
 void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers,
@@ -273,6 +278,12 @@ void print_plan(const Sweep& sweep) {
                rate_text(c), c.seed, std::filesystem::exists(c.file) ? "done   " : "pending",
                c.file.string());
   }
+  // The cost model's figures, which bench/sweep_cost.sh scales a measured
+  // slice by to estimate a whole sweep.
+  fmt::print("cost     {:.4g} core hours for all cases, {:.4g} for those pending (cost model, "
+             "docs/sweeps.md)\n",
+             modelled_core_seconds(sweep, false) / 3600.0,
+             modelled_core_seconds(sweep, true) / 3600.0);
 }
 
 // `--case K` of a batch array: that case alone (and its packing), no lock —
