@@ -40,12 +40,12 @@ inline constexpr double kScaleRange = 1e100;
 /// glasses reach 1e4 at the lowest rates a rheometer applies.
 inline constexpr double kLargestBinghamNumber = 1e10;
 
-/// The flow index n, whose entry admits (0, 2]: from kSmallestFlowIndex. The
-/// rate (Δτ/K)^{1/n} of smaller n overflows within any gap, and the solve
-/// fails (measured: n = 0.01 converges at every preset, 0.003 does not with
-/// R1/R2 = 1e-2); fitted flow curves of soft glasses give 0.1 … 1.
+/// The flow index n, whose entry admits (0, kLargestFlowIndex] (material.h):
+/// from kSmallestFlowIndex. The rate (Δτ/K)^{1/n} of smaller n overflows within
+/// a gap, and the solve fails (bench/solver_envelope.sh: n = 0.01 converges at
+/// every preset, 0.003 does not with a 0.1 mm bob in a 15.2 mm cup); fitted
+/// flow curves of soft glasses give 0.1 … 1.
 inline constexpr double kSmallestFlowIndex = 0.01;
-inline constexpr double kLargestFlowIndex = 2.0;
 
 /// Every number `entries` set (scene, material, sweep) is itself a scale:
 /// 0 or within kScaleRange. Called before the scene is built, whose mesh

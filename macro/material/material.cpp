@@ -56,8 +56,8 @@ void validate(const Material& material) {
   require_finite("flow index", law.flow_index);
   require_entry(law.yield_stress >= 0.0, "yield stress", law.yield_stress, ">= 0 Pa");
   require_entry(law.consistency > 0.0, "consistency", law.consistency, "> 0");
-  require_entry(law.flow_index > 0.0 && law.flow_index <= 2.0, "flow index", law.flow_index,
-                "0 < n <= 2");
+  require_entry(law.flow_index > 0.0 && law.flow_index <= kLargestFlowIndex, "flow index",
+                law.flow_index, fmt::format("0 < n <= {:g}", kLargestFlowIndex));
 
   const FlowModel model = material.model;
   if (model == FlowModel::bingham || model == FlowModel::newtonian) {

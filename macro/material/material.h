@@ -45,6 +45,10 @@ struct Material {
   NormalStressLaw second_normal_stress_difference;  ///< N2
 };
 
+/// The largest flow index a material file may give (shear thickening up to
+/// n = 2, docs/material-format.md).
+inline constexpr double kLargestFlowIndex = 2.0;
+
 /// The rules of docs/material-format.md: every value finite, yield stress ≥ 0,
 /// consistency > 0, 0 < flow index ≤ 2; bingham and newtonian require flow
 /// index 1, newtonian and power-law yield stress 0. One more, which the format

@@ -30,8 +30,10 @@ double solve_increasing(const std::function<double(double)>& f, double lo, doubl
   // TOMS 748 interpolates f across the bracket; over many orders of magnitude
   // (an f of 1e-3 at lo and 1e268 or +inf where it overflows at hi) its
   // interpolants overflow to NaN. Bisect geometrically, keeping the root
-  // bracketed, until hi/lo is modest: log(hi/lo) halves at every step.
-  for (int k = 0; lo > 0.0 && hi > kMaxBracketRatio * lo && k < kMaxWidening; ++k) {
+  // bracketed, until hi/lo is modest and f(hi) finite: log(hi/lo) halves at
+  // every step. (The solvers' own calls start at lo = 0 and never enter.)
+  for (int k = 0; lo > 0.0 && (hi > kMaxBracketRatio * lo || std::isinf(f_hi)) && k < kMaxWidening;
+       ++k) {
     const double mid = std::sqrt(lo) * std::sqrt(hi), f_mid = f(mid);
     (f_mid < 0.0 ? lo : hi) = mid;
     (f_mid < 0.0 ? f_lo : f_hi) = f_mid;
