@@ -10,7 +10,9 @@
 //   - an entry set a second time with another value;
 // each must be refused with an InputError naming the offending entry. Its
 // control, which a reader refusing everything would fail: the scene switched
-// whole (`set scene` and the subsection both replaced) must be read.
+// whole (`set scene` and the subsection both replaced) must be read. One
+// misreading of each kind per seed also goes to `macro run` itself: exit 2,
+// the entry named, no result folder left.
 #include <gtest/gtest.h>
 
 #include <deal.II/base/parameter_handler.h>
