@@ -44,11 +44,16 @@ PiecewisePowerLaw::PiecewisePowerLaw(std::vector<Branch> branches)
                      : b.exponent == 3.0 ? Kind::three
                                          : Kind::general);
   }
-  energy_at_start_.assign(branches_.size(), 0.0);
-  for (std::size_t k = 1; k < branches_.size(); ++k) {
-    const Branch& prev = branches_[k - 1];
-    energy_at_start_[k] = energy_at_start_[k - 1] + branch_energy(prev, branches_[k].start) -
-                          branch_energy(prev, prev.start);
+  // The energy at each branch's start, summed over the branches below it.
+  double at_start = 0.0;
+  for (std::size_t k = 0; k < branches_.size(); ++k) {
+    const Branch& b = branches_[k];
+    if (k > 0) {
+      const Branch& prev = branches_[k - 1];
+      at_start += branch_energy(prev, b.start) - branch_energy(prev, prev.start);
+    }
+    energy_factor_.push_back(b.prefactor / (b.exponent + 1.0));
+    energy_offset_.push_back(at_start - branch_energy(b, b.start));
   }
 }
 
@@ -85,12 +90,6 @@ std::size_t PiecewisePowerLaw::bisect(double eps) const {
   const auto it = std::lower_bound(branches_.begin() + 1, branches_.end(), eps,
                                    [](const Branch& b, double e) { return b.start < e; });
   return static_cast<std::size_t>(it - branches_.begin()) - 1;
-}
-
-double PiecewisePowerLaw::energy(double eps) const {
-  const std::size_t k = branch_of(eps);
-  const Branch& b = branches_[k];
-  return energy_at_start_[k] + branch_energy(b, eps) - branch_energy(b, b.start);
 }
 
 }  // namespace softglass::micro

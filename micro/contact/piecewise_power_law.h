@@ -39,24 +39,15 @@ class PiecewisePowerLaw {
   void evaluate(double eps, double& force, double& stiffness) const {
     const std::size_t k = branch_of(eps);
     const Branch& b = branches_[k];
-    double power_less_one;  // ε^{n−1}
-    switch (kinds_[k]) {
-      case Kind::three_halves:
-        power_less_one = std::sqrt(eps);
-        break;
-      case Kind::two:
-        power_less_one = eps;
-        break;
-      case Kind::three:
-        power_less_one = eps * eps;
-        break;
-      default:
-        power_less_one = std::pow(eps, b.exponent - 1.0);
-    }
-    force = b.prefactor * power_less_one * eps;
-    stiffness = b.prefactor * b.exponent * power_less_one;
+    const double p = power_less_one(k, eps);
+    force = b.prefactor * p * eps;
+    stiffness = b.prefactor * b.exponent * p;
   }
-  double energy(double eps) const;
+  /// ∫₀^ε F: on branch k, a ε^{n+1}/(n+1) plus the branch's constant.
+  double energy(double eps) const {
+    const std::size_t k = branch_of(eps);
+    return energy_offset_[k] + energy_factor_[k] * power_less_one(k, eps) * eps * eps;
+  }
   const std::vector<Branch>& branches() const { return branches_; }
 
  private:
@@ -74,10 +65,25 @@ class PiecewisePowerLaw {
     return bisect(eps);
   }
   std::size_t bisect(double eps) const;
+  /// ε^{n−1} on branch k; the common exponents without std::pow (the force
+  /// kernel's energy and force both go through here).
+  double power_less_one(std::size_t k, double eps) const {
+    switch (kinds_[k]) {
+      case Kind::three_halves:
+        return std::sqrt(eps);
+      case Kind::two:
+        return eps;
+      case Kind::three:
+        return eps * eps;
+      default:
+        return std::pow(eps, branches_[k].exponent - 1.0);
+    }
+  }
 
   std::vector<Branch> branches_;
   std::vector<Kind> kinds_;  // fast paths for the common exponents
-  std::vector<double> energy_at_start_;
+  std::vector<double> energy_factor_;  // a_k/(n_k + 1)
+  std::vector<double> energy_offset_;  // energy at the branch's start − a_k start^{n_k+1}/(n_k+1)
 };
 
 /// The contact law `name` whose F is `law` (its force kernel is compiled once,

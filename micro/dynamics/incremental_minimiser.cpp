@@ -182,13 +182,19 @@ int IncrementalMinimiser::newton_direction(std::span<const double> proximal, dou
   // Truncated at non-positive curvature (plastic instabilities): the caller
   // then raises the damping and tries again.
   const int limit = static_cast<int>(std::max<std::size_t>(50, 3 * gradient_.size()));
+  // A uniform translation meets only the proximal (friction) term and the
+  // damping. Without friction (quasi-static shear) it is a null mode of the
+  // elastic energy that the gradient has no part in: no coarse correction.
+  double translation_stiffness = 0.0;
+  if (!proximal.empty())
+    for (const double p : proximal) translation_stiffness += p + damping_;
   const CgOutcome outcome = solve_newton_system(
       gradient_,
       [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {
         hessian_times(proximal, in, out);
       },
-      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, eta, limit, true,
-      direction_, cg_);
+      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; },
+      translation_stiffness, eta, limit, true, direction_, cg_);
   negative_curvature_ = outcome.negative_curvature;
   return outcome.iterations;
 }

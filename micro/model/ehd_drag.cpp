@@ -159,11 +159,14 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
     gather(scratch_, out);
   };
 
-  // The drag Hessian is positive definite (ζ > 0): no truncation needed.
+  // The drag Hessian is positive definite (ζ > 0): no truncation needed. A
+  // uniform translation meets only the reservoir friction.
+  double translation_stiffness = 0.0;
+  for (const double zeta : reservoir_) translation_stiffness += zeta;
   return solve_newton_system(
              gradient_, hessian_times,
-             [&](std::size_t a, const Vec3& r) -> Vec3 { return block_inverse_[a] * r; }, eta,
-             settings_.max_cg_iterations, false, step_, cg_)
+             [&](std::size_t a, const Vec3& r) -> Vec3 { return block_inverse_[a] * r; },
+             translation_stiffness, eta, settings_.max_cg_iterations, false, step_, cg_)
       .iterations;
 }
 
