@@ -12,7 +12,8 @@
 `rescale` reads RESCALED.csv and RESCALED_curves.csv. PNG files go to DIR
 (default: beside the tables). Only the tables are read: every number on a
 figure is one that `bridge` computed and wrote, so the figures cannot disagree
-with the reports.
+with the reports — except the paper's published values (PAPER below), drawn
+in grey and labelled "the paper" for comparison.
 """
 
 import argparse
@@ -59,6 +60,13 @@ def colours(count):
     return [cmap(i / max(1, count - 1) * 0.9) for i in range(count)]
 
 
+# Seth et al., Nature Materials 10, 838 (2011): the Herschel-Bulkley exponent
+# of every phi (Fig. 2a) and the constants of the universal laws (Figs. 4a-c),
+# each with its stated error. Drawn beside ours, never used in a computation.
+PAPER_EXPONENT = (0.50, 0.02)
+PAPER_CONSTANT = {"sigma": (80.0, 3.0), "N1": (20.0, 2.0), "N2": (26.0, 2.0)}
+
+
 def log_grid(low, high, points=200):
     a, b = math.log10(low), math.log10(high)
     return [10 ** (a + (b - a) * i / (points - 1)) for i in range(points)]
@@ -87,15 +95,17 @@ def flow_curves(points, phis, quantity, units, directory, name, title):
         x = [number(r, "gamma_tilde [1]") for r in rows]
         y = [abs(number(r, f"{quantity} [{units}]")) for r in rows]
         e = [number(r, f"{quantity}_se [{units}]") for r in rows]
-        ax.errorbar(x, y, yerr=e, fmt="o", ms=4, color=colour, label=f"φ = {phi:g}")
         fit = next(p for p in phis if number(p, "phi [1]") == phi)
         if quantity == "f_m" and "f_y [E*R^2]" in fit:
             # The paper's force law, exponent fixed at 1/2 (Fig. 3c).
             yield_, k, m = number(fit, "f_y [E*R^2]"), number(fit, "k_f [E*R^2]"), 0.5
+            label = f"φ = {phi:g}"
         else:
             yield_ = number(fit, f"{quantity}_yield [{units}]")
             k = number(fit, f"{quantity}_consistency [{units}]")
             m = number(fit, f"{quantity}_exponent [1]")
+            label = f"φ = {phi:g}, m = {m:.2f}"
+        ax.errorbar(x, y, yerr=e, fmt="o", ms=4, color=colour, label=label)
         grid = log_grid(min(x), max(x))
         ax.plot(grid, [abs(yield_ + k * g**m) for g in grid], "-", color=colour, lw=1)
     ax.set_xscale("log")
@@ -103,6 +113,8 @@ def flow_curves(points, phis, quantity, units, directory, name, title):
     ax.set_xlabel("γ̃ = γ̇ η_s / E*")
     label = {"sigma": "σ / E*", "N1": "|N1| / E*", "N2": "|N2| / E*", "f_m": "f_m / (E* R²)"}
     ax.set_ylabel(label[quantity])
+    if quantity == "sigma":
+        title += f"\n(the paper: m = {PAPER_EXPONENT[0]:.2f} ± {PAPER_EXPONENT[1]:.2f} at every φ)"
     ax.set_title(title, fontsize=9)
     ax.legend(fontsize=7, frameon=False)
     save(fig, directory, name)
@@ -144,10 +156,16 @@ def collapse(points, phis, constants, directory, name):
                     / number(row, "sigma_universal_yield [E*]")
                 ax.plot(grid, [plateau + k * math.sqrt(x) for x in grid], "-", color=colour,
                         lw=0.8)
+        paper, paper_error = PAPER_CONSTANT[quantity]
         if quantity == "sigma":
             ax.plot(grid, [1 + k * math.sqrt(x) for x in grid], "k-", lw=1,
                     label=f"1 + k x^½, k = {k:.3g} ± {error:.2g}")
+            ax.plot(grid, [1 + paper * math.sqrt(x) for x in grid], "-", color="0.6", lw=2,
+                    alpha=0.6, label=f"the paper: k = {paper:g} ± {paper_error:g}")
         else:
+            ax.plot(grid, [paper * math.sqrt(x) for x in grid], "--", color="0.6", lw=2,
+                    alpha=0.6, label=f"the paper: {letter[quantity]} = {paper:g} ± {paper_error:g}")
+        if quantity != "sigma":
             ax.plot(grid, [k * math.sqrt(x) for x in grid], "k--", lw=1,
                     label=f"{letter[quantity]} x^½, {letter[quantity]} = {k:.3g} ± {error:.2g} "
                           "(thin: φ's plateau + it)")
