@@ -295,8 +295,10 @@ IncrementalResult IncrementalMinimiser::minimise(
         field.contact_count > 0 ? field.force_magnitude_sum / double(field.contact_count) : 1.0;
     double tolerance = settings_.relative_force * mean_force;
     if (settings_.absolute_force > 0.0)
-      tolerance = settings_.loosen ? std::max(tolerance, settings_.absolute_force)
-                                   : std::min(tolerance, settings_.absolute_force);
+      tolerance = settings_.loosen
+                      ? std::max(tolerance, std::min(settings_.absolute_force,
+                                                     kLoosestRelativeForce * mean_force))
+                      : std::min(tolerance, settings_.absolute_force);
     result.residual = max_norm(gradient_);
     if (result.residual <= tolerance) {
       result.converged = true;

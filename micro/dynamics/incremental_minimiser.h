@@ -54,10 +54,17 @@
 
 namespace softglass::micro {
 
+/// The loosest residual a `loosen`ed solve accepts, relative to the mean
+/// contact force. The implicit step's absolute tolerance grows like 1/h; at
+/// very small steps it would exceed the forces themselves, the initial guess
+/// would pass unchanged, and the step would be no step at all.
+inline constexpr double kLoosestRelativeForce = 1e-3;
+
 struct IncrementalSettings {
   /// Converged when max_α |∂Φ/∂u_α| ≤ this × the mean contact force, and ≤
   /// `absolute_force` if that is set (> 0) — or, with `loosen`, ≤ the larger
-  /// of the two (the caller knows that `absolute_force` is accurate enough).
+  /// of the two (the caller knows that `absolute_force` is accurate enough),
+  /// but never above kLoosestRelativeForce × the mean contact force.
   double relative_force = 1e-9;
   double absolute_force = 0.0;
   bool loosen = false;

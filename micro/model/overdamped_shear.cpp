@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <numbers>
 #include <stdexcept>
 
@@ -74,6 +75,24 @@ void OverdampedShear::evaluate() {
   }
   evaluated_ = true;
   ++evaluations_;
+}
+
+void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
+  std::vector<Vec3>& v = system_.particles().velocity;
+  std::copy(velocity.begin(), velocity.end(), v.begin());
+  if (strain() >= stress_from_) {
+    evaluate();
+    return;
+  }
+  double speed2 = 0.0;
+  for (const Vec3& va : v) speed2 = std::max(speed2, va.squaredNorm());
+  max_speed_ = std::sqrt(speed2);
+  if (!std::isfinite(max_speed_)) {
+    throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
+  }
+  stress_valid_ = false;
+  last_solve_ = {};
+  evaluated_ = true;
 }
 
 StressSample OverdampedShear::stress() const {

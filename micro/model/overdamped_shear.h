@@ -61,6 +61,14 @@ class OverdampedShear {
   /// Forces, velocities and stiffness bound at the current configuration, and
   /// the stress if the strain has reached the one set by `sample_stress_from`.
   void evaluate();
+  /// After an implicit step to this configuration: takes `velocity` (the
+  /// step's own u/h, which solve its equation of motion with the drag of the
+  /// step's start) as the velocities here instead of solving for them — unless
+  /// the stress is due here, which gets a full evaluate() warm-started by them.
+  /// Between samples nothing reads the forces or the solved velocities, so the
+  /// velocity solve would only replace u/h by v(x) in the next step's guess
+  /// and error estimate (backward_euler.cpp).
+  void accept_step_velocities(std::span<const Vec3> velocity);
   /// Evaluations at strains ≥ `strain` compute the stress (by default all do);
   /// a run sets its next sample strain so that steps between samples skip it.
   void sample_stress_from(double strain) { stress_from_ = strain; }

@@ -18,19 +18,23 @@
 // measures it), order 1 with a robust nonlinear solver is the chosen trade. Runge–Kutta–Chebyshev (stabilised explicit) would still need
 // ∝ √(λh) stages per step, a cost per strain growing like γ̃^{-1/2}.
 //
-// Step. From x_n with velocities v_n (the last evaluation): x⁰ = x_n sheared
+// Step. From x_n with velocities v_n (the last step's u/h): x⁰ = x_n sheared
 // affinely by h, plus ½h²v_{n,y} e_x (the affine advection of the particles'
 // own y-motion over the step, to second order); then u = argmin Φ, starting
 // from the guess u = h v_n; x_{n+1} = x⁰ + u, and the flow is evaluated there
 // (forces, EHD velocities, stress), which the caller and the next step read.
 //
 // Error. Backward Euler's local error is −½h² ẍ; with v_{n+1} ≈ u/h (the
-// backward-Euler velocity, the ODE's at x_{n+1}) and v_n the ODE's at x_n,
-// e = ½|u − h v_n| per particle (Milne's device for BDF1: the difference
-// between the implicit step and the explicit predictor x_n + h v_n). Both
-// velocities are on the slow manifold — the backward-Euler point satisfies the
+// backward-Euler velocity, the ODE's at x_{n+1}) and v_n the previous step's
+// u/h, e = ½|u − h v_n| per particle (the difference between the implicit step
+// and the explicit predictor x_n + h v_n; ½h²|ẍ| to leading order). Both
+// velocities are on the slow manifold — each backward-Euler point satisfies the
 // equation of motion — so the estimate is not polluted by the stiff modes (the
-// estimate ½h|v(x_{n+1}) − v(x_n)| of an explicit step would be). The step is
+// estimate ½h|v(x_{n+1}) − v(x_n)| of an explicit step would be). v_n is the
+// step's u/h rather than the velocity solved at x_n: that solve (the EHD drag
+// and pair dashpots at x_n, a nonlinear system) cost about a quarter of the
+// run, and nothing else needs it between the stress samples, where it still
+// runs (OverdampedShear::accept_step_velocities). The step is
 // accepted when max_α e_α ≤ tolerance (units of R); the next step is
 // h · min(2, max(0.2, 0.9 √(tol/e))). A step whose nonlinear solve fails is
 // retried with h/4.
@@ -149,10 +153,10 @@ class BackwardEuler final : public Integrator {
         h *= std::max(0.2, factor);
         continue;
       }
-      // Accepted: the flow at x_{n+1}, warm-started with the step's velocity.
-      auto& v = system.particles().velocity;
-      for (std::size_t a = 0; a < n; ++a) v[a] = guess_[a] / h;
-      flow.evaluate();
+      // Accepted: the step's velocity u/h stands for the flow's at x_{n+1}
+      // (solved there only where the stress is sampled; see the header).
+      for (std::size_t a = 0; a < n; ++a) velocity_[a] = guess_[a] / h;
+      flow.accept_step_velocities(velocity_);
       record_accepted(h);
       // No growth right after a rejection (Hairer & Wanner, Solving ODEs II,
       // IV.8): the rejected size was too large a moment ago.
