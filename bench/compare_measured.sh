@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Predicted against measured torques with the bundled law
-# (cases/bridge_law_fast_sweep.prm, or the law file named by LAW), for
+# (cases/bridge_law_paper_sweep.prm, or the law file named by LAW), for
 # docs/validation.md:
 #
 #  1. the 85 % castor-oil emulsion in its Couette cell (TA HR-3, DIN cylinders):
@@ -18,7 +18,7 @@ build=${1:?usage: bench/compare_measured.sh BUILD_DIR [OUTPUT_DIR]}
 out=${2:-out/compare_measured}
 root=$(cd "$(dirname "$0")/.." && pwd)
 data="$root/../shared/data/rheometry"
-law=${LAW:-"$root/cases/bridge_law_fast_sweep.prm"}
+law=${LAW:-"$root/cases/bridge_law_paper_sweep.prm"}
 bridge="$build/bridge/bridge" macro="$build/macro/macro"
 [ -d "$data" ] || { echo "compare_measured: $data is absent; nothing to compare" >&2; exit 2; }
 mkdir -p "$out"

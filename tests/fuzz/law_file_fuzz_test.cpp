@@ -47,7 +47,7 @@ TEST(LawFileFuzz, RefusesOrReadsEveryMutation) {
   const auto file = dir / "law.prm";
   const auto cases = std::filesystem::path(SOFTGLASS_SOURCE_DIR) / "cases";
   const std::vector<std::string> seeds = {read_text(cases / "bridge_synthetic_law.prm"),
-                                          read_text(cases / "bridge_law_fast_sweep.prm")};
+                                          read_text(cases / "bridge_law_paper_sweep.prm")};
   fuzz_text(seeds, 61, 400, [&](const std::string& text, const std::string& input) {
     write_text(file, text);
     return read_and_check([&] { return read_law_file(file); },

@@ -355,7 +355,7 @@ TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
   ASSERT_EQ(micro("run --quiet -o run.h5 " + prm).code, 0);
   const StoredSnapshots stored = read_stationary_snapshots(work() / "run.h5");
   EXPECT_GE(stored.snapshots.size(), 2u);
-  EXPECT_EQ(stored.contact_law.name, "seth2011");
+  EXPECT_EQ(stored.contact_law.name, "piecewise");  // the softglass preset's law
 
   const Outcome again = micro("analyze run.h5 --csv run");  // the run wrote /structure already
   EXPECT_EQ(again.code, 3) << again.err;

@@ -83,7 +83,7 @@ TEST_F(MicroCli, SweepWritesTheFlowCurveTablesAndSkipsFinishedWorkOnARerun) {
   std::string longer = sweep_file("out", entries, 1.0);
   longer.replace(longer.find("set max strain = 1\n"), 19, "set max strain = 1.5\n");
   const std::map<std::string, std::string> changes = {
-      {"contact law/law = seth2011",
+      {"contact law/law = piecewise",
        sweep_file("out", entries, 1.0) + "subsection contact law\n  set law = hertz\nend\n"},
       {"shear/max strain = 1", longer}};
   for (const auto& [was, text] : changes) {
