@@ -9,7 +9,7 @@
 # σ^e grows with the rate. This bench shears the same protocol with three laws
 # that agree up to ε = 0.1 and stiffen differently beyond it:
 #   hertz     n = 3/2 throughout (no stiffening)
-#   seth2011  n = 2 on (0.1, 0.2], n = 3 beyond (the default)
+#   seth2011  n = 2 on (0.1, 0.2], n = 3 beyond (the literal preset's)
 #   stiff3    n = 3 from ε = 0.1 on (C from continuity: 0.1^{-3/2}), as a table
 # and fits each flow curve with `bridge fit` (per-φ Herschel–Bulkley, packing
 # bootstrap). Each law gets its own packings (packing depends on the law).
@@ -55,7 +55,11 @@ law_entries() {
 
 printf '%-9s %-22s %-22s %-22s %s\n' law "m (bridge fit)" "sigma_y HB [E*]" "sigma_y AQS [E*]" "wall s"
 for law in hertz seth2011 stiff3; do
+  # The literal model's friction (against the affine flow): the laws alone vary.
   cat > "$OUT/$law.prm" <<EOF
+subsection model
+  set preset = literal
+end
 subsection sweep
   set preset = custom
   set particles = $N

@@ -116,12 +116,14 @@ VARIANTS = {
 
 def resolve(name):
     """A variant's entries: a listed name, or names joined by '+' (their
-    entries together, later ones winning), e.g. nominal+neighbours."""
+    entries together, later ones winning), e.g. nominal+neighbours. Every
+    variant starts from the `literal` model preset, the paper as stated (not
+    from the default, which is one of the variants: softglass)."""
     parts = name.split("+")
     unknown = [p for p in parts if p not in VARIANTS]
     if unknown:
         return None
-    entries, texts = {}, []
+    entries, texts = {("model", "preset"): "literal"}, []
     for part in parts:
         entries.update(VARIANTS[part][0])
         texts.append(VARIANTS[part][1])

@@ -2,7 +2,7 @@
 # The microstructure issue's check: phi = 0.80, N = 1000, gamma~ = 1e-6, 1e-5,
 # 1e-4, one packing, snapshots every 0.1 strain; the structure of the stationary
 # part (written by `micro run` into each result file), its CSV tables, and the
-# figures of docs/structure.md.
+# figures of docs/structure.md. The `literal` model (whose results they show).
 #   usage: bench/structure_phi080.sh [BUILD_DIR] [OUT_DIR]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -14,6 +14,9 @@ micro="$build/micro/micro"
 for spec in "1e-4 20" "1e-5 20" "1e-6 12"; do
   read -r rate strain <<< "$spec"
   cat > "$out/run_$rate.prm" <<PRM
+subsection model
+  set preset = literal
+end
 subsection particles
   set number          = 1000
   set volume fraction = 0.80
