@@ -319,7 +319,8 @@ def static_scan(args, names):
                                           "Pi/G0", "<eps>", "Z", "seconds")))
     rows = []
     for name in names:
-        entries = {k: v for k, v in resolve(name)[0].items() if k[0] in ("contact law", "particles")}
+        entries = {k: v for k, v in resolve(name)[0].items()
+                   if k[0] in ("model", "contact law", "particles")}
         folder = os.path.join(args.out, "static", name)
         os.makedirs(folder, exist_ok=True)
         for phi in phis:
