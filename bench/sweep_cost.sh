@@ -19,7 +19,7 @@
 # Usage: bench/sweep_cost.sh BUILD [BASE_BUILD]
 #   Without BASE_BUILD, BASE_COMMIT (default: main) is built (micro only) in a
 #   temporary git worktree.
-#   env: MODEL (the model preset, default literal), N (particles, default the
+#   env: MODEL (the model preset, default softglass, the default model), N (particles, default the
 #   preset's 1000), PHIS (default "0.80, 0.90"), RATES (default the preset's),
 #   QUASI_STATIC (true|false, default true), OUT (kept results).
 #   A quick check of the script itself: N=250 RATES="1e-4, 1e-5" QUASI_STATIC=false.
@@ -47,7 +47,7 @@ fi
 sweep_file() {  # folder packings volume-fractions
   {
     echo "subsection model"
-    echo "  set preset = ${MODEL:-literal}"
+    echo "  set preset = ${MODEL:-softglass}"
     echo "end"
     echo "subsection sweep"
     echo "  set preset = paper"
