@@ -22,10 +22,10 @@ law=${LAW:-"$root/cases/bridge_law_paper_sweep.prm"}
 bridge="$build/bridge/bridge" macro="$build/macro/macro"
 [ -d "$data" ] || { echo "compare_measured: $data is absent; nothing to compare" >&2; exit 2; }
 mkdir -p "$out"
+source "$root/scripts/bundled_materials.sh"
 
 echo "== castor-oil emulsion, Couette cell, E* from G' = 143 Pa"
-"$bridge" material "$law" --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 \
-  -o "$out/material_castoroil85.prm" -f > /dev/null
+castoroil85 "$bridge" "$law" "$out/material_castoroil85.prm" > /dev/null
 "$macro" compare "$root/cases/castoroil_couette.prm" "$data/castoroil85_couette_flow_sweep.csv" \
   --material "$out/material_castoroil85.prm" -o "$out/castoroil" -f -q
 grep -E "^(torque|material)" "$out/castoroil/summary.txt"

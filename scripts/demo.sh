@@ -20,6 +20,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 micro="$build/micro/micro" bridge="$build/bridge/bridge" macro="$build/macro/macro"
 data="$root/../shared/data/rheometry/castoroil85_couette_flow_sweep.csv"
 start=$SECONDS
+source "$root/scripts/bundled_materials.sh"
 
 step() { printf '\n== %s  (%d s)\n' "$1" $((SECONDS - start)); }
 
@@ -46,10 +47,8 @@ step "2. bridge fit"
 "$bridge" fit "$out/sweep/flow_curve.csv" -o "$out/law.prm" -f -q
 
 step "3. bridge material"
-"$bridge" material "$out/law.prm" --phi 0.80 --modulus 40e3 --viscosity 1e-3 \
-  -o "$out/material_paper_emulsion.prm" -f
-"$bridge" material "$out/law.prm" --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 \
-  -o "$out/material_castoroil85.prm" -f
+paper_emulsion "$bridge" "$out/law.prm" "$out/material_paper_emulsion.prm"
+castoroil85 "$bridge" "$out/law.prm" "$out/material_castoroil85.prm"
 
 step "4. macro run: the paper's cone and plate, 20 speeds"
 "$macro" run "$root/cases/cone_plate.prm" --material "$out/material_paper_emulsion.prm" \

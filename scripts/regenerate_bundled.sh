@@ -31,10 +31,9 @@ cd "$root"
   -o cases/bridge_law_paper_sweep.prm --force
 
 law=cases/bridge_law_paper_sweep.prm
-"$bridge" material "$law" --phi 0.80 --modulus 40e3 --viscosity 1e-3 \
-  -o cases/material_paper_emulsion.prm --force
-"$bridge" material "$law" --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 \
-  -o cases/material_castoroil85_predicted.prm --force
+source scripts/bundled_materials.sh
+paper_emulsion "$bridge" "$law" cases/material_paper_emulsion.prm
+castoroil85 "$bridge" "$law" cases/material_castoroil85_predicted.prm
 
 figures=$(mktemp -d)
 trap 'rm -rf "$figures"' EXIT

@@ -63,36 +63,34 @@ void OverdampedShear::evaluate() {
   }
   elastic_virial_ = field.virial;
 
-  double rate = 0.0, speed2 = 0.0;
-  for (std::size_t a = 0; a < n; ++a) {
+  double rate = 0.0;
+  for (std::size_t a = 0; a < n; ++a)
     rate = std::max(rate, 2.0 * field.stiffness_sum[a] * mobility_[a]);
-    speed2 = std::max(speed2, p.velocity[a].squaredNorm());
-  }
   relaxation_rate_ = rate;
-  max_speed_ = std::sqrt(speed2);
-  if (!std::isfinite(max_speed_)) {
-    throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
-  }
+  update_max_speed();
   evaluated_ = true;
   ++evaluations_;
 }
 
 void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
-  std::vector<Vec3>& v = system_.particles().velocity;
-  std::copy(velocity.begin(), velocity.end(), v.begin());
+  std::copy(velocity.begin(), velocity.end(), system_.particles().velocity.begin());
   if (strain() >= stress_from_) {
     evaluate();
     return;
   }
+  update_max_speed();
+  stress_valid_ = false;
+  last_solve_ = {};
+  evaluated_ = true;
+}
+
+void OverdampedShear::update_max_speed() {
   double speed2 = 0.0;
-  for (const Vec3& va : v) speed2 = std::max(speed2, va.squaredNorm());
+  for (const Vec3& v : system_.particles().velocity) speed2 = std::max(speed2, v.squaredNorm());
   max_speed_ = std::sqrt(speed2);
   if (!std::isfinite(max_speed_)) {
     throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
   }
-  stress_valid_ = false;
-  last_solve_ = {};
-  evaluated_ = true;
 }
 
 StressSample OverdampedShear::stress() const {

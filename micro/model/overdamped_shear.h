@@ -105,6 +105,10 @@ class OverdampedShear {
   void restore(const Snapshot& from);
 
  private:
+  /// max_speed_ from the particles' velocities; throws NumericalError if one
+  /// is not finite.
+  void update_max_speed();
+
   ContactSystem system_;
   ShearModel model_;
   EhdDrag drag_;
