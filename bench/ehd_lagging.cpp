@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
       for (std::size_t a = 0; a < friction.size(); ++a)
         friction[a] = model.friction(flow.system().particles().radius[a]);
       std::vector<Vec3> v = previous;
-      lagged.solve(field.contacts, gamma_tilde, friction, field.force, v);
+      lagged.solve(field.contacts, gamma_tilde, 1.0, friction, field.force, v);
       double scale = 1.0, error = 0.0;
       for (std::size_t a = 0; a < v.size(); ++a) {
         scale = std::max(scale, flow.velocities()[a].norm());

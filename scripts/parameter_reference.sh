@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The parameter reference, docs/parameters.md, made from the tools themselves:
-# every entry of `micro template`, `micro template --sweep` and `macro template`
+# every entry of `micro template`, `micro template --sweep`, `micro template
+# --oscillation` and `macro template`
 # (one table a subsection: default, allowed values, documentation, in the
 # templates' own words) and the `--help` of micro, bridge, macro and each of
 # their subcommands (found in the tools' own list of subcommands).
@@ -226,6 +227,8 @@ template=$("${tool[micro]}" template)
 micro_run=$(parse_prm "micro template" <<<"$template")
 template=$("${tool[micro]}" template --sweep)
 micro_sweep=$(parse_prm "micro template --sweep" <<<"$template")
+template=$("${tool[micro]}" template --oscillation)
+micro_oscillation=$(parse_prm "micro template --oscillation" <<<"$template")
 template=$("${tool[macro]}" template)
 macro_scene=$(parse_prm "macro template" <<<"$template")
 
@@ -233,6 +236,8 @@ body=$(
   parameter_file "micro parameter file" micro "micro template" "$micro_run"
   parameter_file "micro sweep file" "micro sweep" "micro template --sweep" "$micro_sweep" \
     micro "$micro_run"
+  parameter_file "micro oscillation file" "micro oscillate" "micro template --oscillation" \
+    "$micro_oscillation" micro "$micro_run"
   parameter_file "macro scene file" macro "macro template" "$macro_scene"
   command_line
 )

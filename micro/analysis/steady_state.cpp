@@ -261,4 +261,11 @@ double drift_statistic(std::span<const double> x) {
   return spread > 0.0 ? (mean(x.first(first)) - tail.mean) / spread : 0.0;
 }
 
+const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list,
+                                  const std::string& name) {
+  for (const auto& o : list)
+    if (o.name == name) return o.estimate;
+  throw std::invalid_argument("no observable " + name);
+}
+
 }  // namespace softglass::micro

@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace softglass::micro {
@@ -143,5 +144,14 @@ struct SteadyStateAnalysis {
 /// Requires at least one observable, equal lengths, and n ≥ 5·kMserMinBatches.
 SteadyStateAnalysis analyse_steady_state(const std::vector<std::span<const double>>& observables,
                                          std::size_t min_stationary_samples);
+
+/// A named mean with its error, e.g. σ of a run or G′ of a cycle average.
+struct ObservableEstimate {
+  std::string name;
+  MeanEstimate estimate;
+};
+/// The estimate called `name` in `list`; std::invalid_argument if absent.
+const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list,
+                                  const std::string& name);
 
 }  // namespace softglass::micro

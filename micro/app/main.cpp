@@ -6,6 +6,7 @@
 //   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
 //   micro summary A.h5 B.h5  average runs of one state point over packings
 //   micro sweep FILE.prm     flow curves over φ, γ̃ and packings (MPI: mpirun -n K micro sweep …)
+//   micro oscillate FILE.prm amplitude and frequency sweeps of oscillatory shear: G′, G″, LAOS
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
 // 3 output exists (use --force).
@@ -19,9 +20,10 @@
 #include "common/errors.h"
 #include "common/version.h"
 #include "micro/app/commands.h"
-#include "micro/input/parameter_file.h"
+#include "micro/app/oscillate_command.h"
 #include "micro/app/sweep_command.h"
 #include "micro/app/workers.h"
+#include "micro/input/parameter_file.h"
 
 int main(int argc, char** argv) {
   using namespace softglass;
@@ -50,20 +52,29 @@ int main(int argc, char** argv) {
   add_run_options(run);
   CLI::App* tmpl =
       app.add_subcommand("template", "print a documented parameter file with all defaults");
-  bool sweep_template = false;
+  bool sweep_template = false, oscillation_template = false;
   tmpl->add_flag("--sweep", sweep_template, "the template of a sweep file (micro sweep)");
+  tmpl->add_flag("--oscillation", oscillation_template,
+                 "the template of an oscillation file (micro oscillate)")
+      ->excludes("--sweep");
   CLI::App* analyze = app.add_subcommand(
       "analyze", "structure of a run's stationary part: g(r, theta), g_lm(r), r_m, f_m Sigma_m");
   micro::AnalyzeOptions analyze_options;
   double bin_width = 0.0, slab = 0.0;
-  analyze->add_option("run_file", analyze_options.run_file, "result file of `micro run` (HDF5)")->required();
+  analyze->add_option("run_file", analyze_options.run_file, "result file of `micro run` (HDF5)")
+      ->required();
   analyze->add_option("--csv", analyze_options.csv_prefix,
                       "also write PREFIX_harmonics.csv, PREFIX_map.csv, PREFIX_summary.csv");
-  analyze->add_option("--bin-width", bin_width, "radial bin width of g_lm(r), units of R (default 0.02)")
+  analyze
+      ->add_option("--bin-width", bin_width,
+                   "radial bin width of g_lm(r), units of R (default 0.02)")
       ->check(CLI::Range(1e-4, 0.5));
-  analyze->add_option("--slab", slab, "half-width of the flow-gradient slab of g(r, theta), units of R (default 0.25)")
+  analyze
+      ->add_option("--slab", slab,
+                   "half-width of the flow-gradient slab of g(r, theta), units of R (default 0.25)")
       ->check(CLI::Range(1e-3, 1.0));
-  analyze->add_flag("-f,--force", analyze_options.force, "replace an existing analysis and CSV files");
+  analyze->add_flag("-f,--force", analyze_options.force,
+                    "replace an existing analysis and CSV files");
   CLI::App* summary =
       app.add_subcommand("summary", "average run files of one state point over their packings");
   std::vector<std::filesystem::path> run_files;
@@ -75,17 +86,43 @@ int main(int argc, char** argv) {
   micro::SweepOptions sweep_options;
   std::size_t only_case = 0;
   CLI::App* sweep = app.add_subcommand(
-      "sweep", "flow curves: packings, then every (phi, gamma~, seed) case, then the flow-curve "
-               "table; resumable (finished files are skipped), one sweep per folder");
-  sweep->add_option("parameter_file", sweep_options.parameter_file,
-                    "sweep file: a run's parameters plus subsection 'sweep'")
+      "sweep",
+      "flow curves: packings, then every (phi, gamma~, seed) case, then the flow-curve "
+      "table; resumable (finished files are skipped), one sweep per folder");
+  sweep
+      ->add_option("parameter_file", sweep_options.parameter_file,
+                   "sweep file: a run's parameters plus subsection 'sweep'")
       ->required();
-  sweep->add_flag("--list", sweep_options.list, "print the cases and whether they are done; run nothing");
-  sweep->add_flag("--gather", sweep_options.gather_only, "only rebuild the tables from the finished runs");
-  auto* case_option = sweep->add_option("--case", only_case,
-                                        "run case K alone (and its packing if missing): one task of "
-                                        "a batch array job; see --list");
+  sweep->add_flag("--list", sweep_options.list,
+                  "print the cases and whether they are done; run nothing");
+  sweep->add_flag("--gather", sweep_options.gather_only,
+                  "only rebuild the tables from the finished runs");
+  auto* case_option =
+      sweep->add_option("--case", only_case,
+                        "run case K alone (and its packing if missing): one task of "
+                        "a batch array job; see --list");
   sweep->add_flag("-q,--quiet", sweep_options.quiet, "no progress bar (the log lines stay)");
+
+  micro::OscillateOptions oscillate_options;
+  std::size_t only_oscillation_case = 0;
+  CLI::App* oscillate = app.add_subcommand(
+      "oscillate",
+      "oscillatory shear: amplitude and frequency sweeps (G', G'', I3/I1, Chebyshev "
+      "coefficients) over packings; resumable like sweep");
+  oscillate
+      ->add_option("parameter_file", oscillate_options.parameter_file,
+                   "oscillation file: a run's parameters plus subsection 'oscillation'")
+      ->required();
+  oscillate->add_flag("--list", oscillate_options.list,
+                      "print the cases and whether they are done; run nothing");
+  oscillate->add_flag("--gather", oscillate_options.gather_only,
+                      "only rebuild the tables from the finished runs");
+  auto* oscillation_case_option =
+      oscillate->add_option("--case", only_oscillation_case,
+                            "run case K alone (and its packing if missing): one task of a batch "
+                            "array job; see --list");
+  oscillate->add_flag("-q,--quiet", oscillate_options.quiet,
+                      "no progress bar (the log lines stay)");
 
   try {
     app.parse(argc, argv);
@@ -95,15 +132,24 @@ int main(int argc, char** argv) {
   if (threads > 0) omp_set_num_threads(threads);
   if (!output.empty()) options.output = output;
   if (*case_option) sweep_options.only_case = only_case;
-  for (int k = 0; k < argc; ++k) sweep_options.command_line += (k ? " " : "") + std::string(argv[k]);
+  if (*oscillation_case_option) oscillate_options.only_case = only_oscillation_case;
+  for (int k = 0; k < argc; ++k)
+    sweep_options.command_line += (k ? " " : "") + std::string(argv[k]);
+  oscillate_options.command_line = sweep_options.command_line;
   const micro::Workers workers;
 
   return run_reporting_errors("micro", [&] {
-    if (*tmpl) std::fputs(micro::parameter_template(sweep_template).c_str(), stdout);
+    if (*tmpl)
+      std::fputs(micro::parameter_template(sweep_template         ? micro::TemplateKind::sweep
+                                           : oscillation_template ? micro::TemplateKind::oscillation
+                                                                  : micro::TemplateKind::run)
+                     .c_str(),
+                 stdout);
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
     if (*summary) micro::summary_command(run_files, csv, options.force);
     if (*sweep) micro::sweep_command(sweep_options, workers);
+    if (*oscillate) micro::oscillate_command(oscillate_options, workers);
     if (*analyze) {
       if (bin_width > 0.0) analyze_options.bin_width = bin_width;
       if (slab > 0.0) analyze_options.slab = slab;

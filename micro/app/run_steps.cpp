@@ -9,9 +9,9 @@
 
 #include "common/errors.h"
 #include "common/progress.h"
-#include "micro/results/run_structure.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/io/checkpoint_file.h"
+#include "micro/results/run_structure.h"
 
 namespace softglass::micro {
 
@@ -151,6 +151,43 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
   shear.quasi_static = QuasiStaticRecord{settings.strain_step, settings.relative_force,
                                          r.stress_drops, r.unconverged_steps};
   keep_run(record, std::move(shear), resume ? resume->seconds : 0.0, start, *law, prm);
+}
+
+void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<const ContactLaw> law,
+               const OscillationProtocol& protocol,
+               const std::function<void(double, double)>& progress,
+               const CheckpointSettings& checkpoints) {
+  const auto start = Clock::now();
+  ShearModel model = prm.shear_model;
+  model.gamma_tilde = protocol.peak_gamma_tilde();
+  const auto drive = ShearDrive::oscillatory(protocol.amplitude);
+  OverdampedShear flow(
+      ContactSystem(record.packing_particles, record.packing_box, law, prm.packing.skin), model,
+      drive);
+  const IntegratorSpec scheme = oscillation_integrator(prm.integrator, protocol);
+  const auto integrator = make_integrator(scheme);
+
+  const std::optional<ShearCheckpoint> resume =
+      existing_checkpoint<ShearCheckpoint>(checkpoints, read_checkpoint);
+  auto checkpointing = checkpointing_of<ShearCheckpointing>(checkpoints, resume);
+  if (!checkpoints.file.empty())
+    checkpointing.new_integrator = [&] { return make_integrator(scheme); };
+  OscillationRecord oscillation;
+  oscillation.protocol = protocol;
+  oscillation.integrator = fmt::format("{}, tolerance {}", scheme.name, scheme.tolerance);
+  const double period = protocol.period();
+  oscillation.result = run_oscillation(
+      flow, *integrator, protocol,
+      [&](const ShearProgress& p) {
+        if (progress) progress(p.strain / period, p.worst_relative_error);
+      },
+      checkpointing);
+  oscillation.final_particles = flow.system().wrapped_in_label_order();
+  oscillation.final_box = flow.system().box();
+  const double resumed = resume ? resume->seconds : 0.0;
+  record.timings.resumed = resumed;
+  record.timings.shear = resumed + seconds_since(start);
+  record.oscillation = std::move(oscillation);
 }
 
 void write_record(AtomicOutput& out, RunRecord& record, double total_seconds) {

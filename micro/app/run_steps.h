@@ -11,6 +11,7 @@
 #include "common/atomic_output.h"
 #include "micro/input/parameter_file.h"
 #include "micro/io/run_file.h"
+#include "micro/protocol/oscillatory_run.h"
 #include "micro/protocol/quasi_static_run.h"
 
 namespace softglass::micro {
@@ -44,6 +45,14 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
                                         const QuasiStaticSettings& settings,
                                         const std::function<void(double, double)>& progress,
                                         const CheckpointSettings& checkpoints = {});
+
+/// Shears the packing of `record` in oscillation (`protocol`, at the model of
+/// `prm` with γ̃ = γ0 ω̃) until periodic. `progress` gets (cycles run, worst
+/// relative error of G′, G″).
+void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<const ContactLaw> law,
+               const OscillationProtocol& protocol,
+               const std::function<void(double, double)>& progress,
+               const CheckpointSettings& checkpoints = {});
 
 /// Writes `record` into `out`'s temporary file and renames it into place.
 void write_record(AtomicOutput& out, RunRecord& record, double total_seconds);

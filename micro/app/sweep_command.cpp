@@ -23,8 +23,9 @@
 #include "common/errors.h"
 #include "common/progress.h"
 #include "common/version.h"
-#include "micro/input/finished_work.h"
 #include "micro/app/run_steps.h"
+#include "micro/app/sweep_work.h"
+#include "micro/input/finished_work.h"
 #include "micro/results/flow_curve_table.h"
 #include "micro/sweep/directory_lock.h"
 
@@ -45,14 +46,6 @@ struct Sweep {
 
 SweepCaseSettings settings_of(const Sweep& sweep, double phi, unsigned seed, double rate) {
   return {sweep.plan.particles, phi, rate, seed, sweep.plan.run, {}, {}};
-}
-
-// One log line per finished piece of work, on stdout, prefixed by the worker.
-template <class... Args>
-void log(const Workers& workers, fmt::format_string<Args...> format, Args&&... args) {
-  const std::string prefix = workers.size() > 1 ? fmt::format("[rank {}] ", workers.rank()) : "";
-  fmt::print("{}{}\n", prefix, fmt::format(format, std::forward<Args>(args)...));
-  std::fflush(stdout);
 }
 
 // The parameters of a packing and of a case: what their files store, and what
@@ -91,27 +84,21 @@ std::string stored_parameters(const Sweep& sweep, const SweepCase& c, const std:
       aqs.strain_step, aqs.relative_force, text);
 }
 
-// Before any work: every packing's and case's parameters are built, which
-// checks them (a value wrong only in combination with the sweep's, such as N =
-// 1, is one message up front instead of one failure per packing), and every
-// packing and run already in the folder must be the computation the sweep file
-// now asks for; a changed contact law, N or run length is refused rather than
-// mixed into the table.
+// Before any work: every packing's and case's parameters are built and
+// checked (sweep_work.h), and every packing and run already in the folder must
+// be the computation the sweep file now asks for; a changed contact law, N or
+// run length is refused rather than mixed into the table.
 template <class Work>
 MicroParameters checked_parameters_of(const Sweep& sweep, const Work& work) {
-  try {
-    return parameters_of(sweep, work);
-  } catch (const InputError& error) {
-    throw InputError(fmt::format("sweep, phi = {}, packing seed {}: {}", work.volume_fraction,
-                                 work.seed, error.what()));
-  }
+  return checked_parameters("sweep", work.volume_fraction, work.seed,
+                            [&] { return parameters_of(sweep, work); });
 }
 
 void check_cases_before_work(const Sweep& sweep) {
   for (const SweepPacking& p : sweep.plan.packings) {
     const MicroParameters prm = checked_parameters_of(sweep, p);
     if (std::filesystem::exists(p.file))
-      require_same_computation(p.file, prm.text, {"particles", "packing", "contact law"});
+      require_same_computation(p.file, prm.text, kPackingSubsections);
   }
   for (const SweepCase& c : sweep.plan.cases) {
     const MicroParameters prm = checked_parameters_of(sweep, c);
@@ -127,8 +114,8 @@ void check_cases_before_work(const Sweep& sweep) {
 // the neighbours costs 1.5–3× more per case at γ̃ ≤ 3e-9, about the same from
 // 1e-7 up (its `paper` sweep, docs/bridge.md).
 double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
-  const double strain = sweep.plan.run ? sweep.plan.run->min_strain
-                                       : sweep.parameters.base.protocol.min_strain;
+  const double strain =
+      sweep.plan.run ? sweep.plan.run->min_strain : sweep.parameters.base.protocol.min_strain;
   double seconds = 0.0;
   for (const SweepCase& c : sweep.plan.cases)
     if (!pending_only || !std::filesystem::exists(c.file))
@@ -138,19 +125,6 @@ double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
 
 double estimated_hours(const Sweep& sweep, std::size_t workers) {
   return modelled_core_seconds(sweep, true) / static_cast<double>(workers) / 3600.0;
-}
-
-void make_packing(const Sweep& sweep, const SweepPacking& packing, const Workers& workers,
-                  bool quiet) {
-  const auto start = Clock::now();
-  const MicroParameters prm = parameters_of(sweep, packing);
-  std::filesystem::create_directories(packing.file.parent_path());
-  AtomicOutput out(packing.file, false);
-  RunRecord record = pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", quiet);
-  write_record(out, record, seconds_since(start));
-  log(workers, "packing  phi {:.4f} seed {}: Z {:.3f}, G0 {:.4e} E*, {:.1f} s -> {}",
-      packing.volume_fraction, packing.seed, record.packing.coordination, record.modulus.modulus,
-      seconds_since(start), packing.file.string());
 }
 
 // Where a running case keeps its checkpoint: beside its result file.
@@ -203,30 +177,11 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
       seconds_since(start), resumed ? ", resumed from its checkpoint" : "");
 }
 
-// Splits `work` (indices with costs) over the workers: longest first, each to
-// the least loaded worker (LPT), the same on every rank.
-std::vector<std::size_t> my_share(const std::vector<std::size_t>& work,
-                                  const std::vector<double>& cost, const Workers& workers) {
-  std::vector<std::size_t> order = work;
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return cost[a] > cost[b]; });
-  std::vector<double> load(static_cast<std::size_t>(workers.size()), 0.0);
-  std::vector<std::size_t> mine;
-  for (std::size_t item : order) {
-    const auto least = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    load[static_cast<std::size_t>(least)] += cost[item];
-    if (least == workers.rank()) mine.push_back(item);
-  }
-  return mine;
-}
-
 std::vector<std::string> provenance(const Sweep& sweep) {
-  const std::time_t now = std::time(nullptr);
-  char date[32];
-  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  return {fmt::format("softglass micro {} ({}), written {}", kVersion, kGitRevision, date),
-          fmt::format("command: {}", sweep.command_line),
-          fmt::format("preset {}, N = {}, {} packings per volume fraction; stresses in units of E*",
-                      sweep.parameters.spec.preset, sweep.plan.particles, sweep.plan.seeds.size())};
+  return table_provenance(
+      sweep.command_line,
+      fmt::format("preset {}, N = {}, {} packings per volume fraction; stresses in units of E*",
+                  sweep.parameters.spec.preset, sweep.plan.particles, sweep.plan.seeds.size()));
 }
 
 // Reads every finished run and writes the averaged and per-packing tables.
@@ -252,14 +207,8 @@ std::size_t write_tables(const Sweep& sweep, const Workers& workers) {
   }
   const UnitTable table = flow_curve_table(averages);
   const UnitTable per_packing = per_packing_table(runs, seeds);
-  const auto lines = provenance(sweep);
-  AtomicOutput csv(sweep.plan.table_csv, true), packings_csv(sweep.plan.packing_table_csv, true),
-      h5(sweep.plan.table_h5, true);
-  write_table_csv(csv.temporary_path(), sweep.plan.table_csv, table, lines);
-  write_table_csv(packings_csv.temporary_path(), sweep.plan.packing_table_csv, per_packing, lines);
-  write_tables_h5(h5.temporary_path(),
-                  {{"flow_curve", &table}, {"flow_curve_packings", &per_packing}}, lines);
-  AtomicOutput::commit_together({&csv, &packings_csv, &h5});
+  write_sweep_tables({sweep.plan.table_csv, sweep.plan.packing_table_csv, sweep.plan.table_h5},
+                     "flow_curve", table, per_packing, provenance(sweep));
   log(workers, "table    {} state points ({} runs) -> {}, {}, {}", averages.size(), runs.size(),
       sweep.plan.table_csv.string(), sweep.plan.packing_table_csv.string(),
       sweep.plan.table_h5.string());
@@ -281,10 +230,10 @@ void print_plan(const Sweep& sweep) {
   }
   // The cost model's figures, which bench/sweep_cost.sh scales a measured
   // slice by to estimate a whole sweep.
-  fmt::print("cost     {:.4g} core hours for all cases, {:.4g} for those pending (cost model, "
-             "docs/sweeps.md)\n",
-             modelled_core_seconds(sweep, false) / 3600.0,
-             modelled_core_seconds(sweep, true) / 3600.0);
+  fmt::print(
+      "cost     {:.4g} core hours for all cases, {:.4g} for those pending (cost model, "
+      "docs/sweeps.md)\n",
+      modelled_core_seconds(sweep, false) / 3600.0, modelled_core_seconds(sweep, true) / 3600.0);
 }
 
 // `--case K` of a batch array: that case alone (and its packing), no lock —
@@ -296,7 +245,8 @@ void run_one_case(const Sweep& sweep, std::size_t index, const Workers& workers,
         fmt::format("--case {}: the sweep has cases 0 … {}", index, plan.cases.size() - 1));
   const SweepCase& c = plan.cases[index];
   const SweepPacking& packing = plan.packings[c.packing];
-  if (!std::filesystem::exists(packing.file)) make_packing(sweep, packing, workers, quiet);
+  if (!std::filesystem::exists(packing.file))
+    make_packing(parameters_of(sweep, packing), packing, workers, quiet);
   if (std::filesystem::exists(c.file)) {
     log(workers, "case {} is done: {}", index, c.file.string());
     return;
@@ -305,79 +255,16 @@ void run_one_case(const Sweep& sweep, std::size_t index, const Workers& workers,
   run_case(sweep, c, workers, [&](double fraction) { bar.update(fraction); });
 }
 
-// Only one sweep per folder; the ranks of this one agree before going on. The
-// leader takes the lock into `lock`; when it is refused, the leader throws and
-// the others return false.
-bool lock_folder(const SweepPlan& plan, const Workers& workers,
-                 std::optional<DirectoryLock>& lock) {
-  std::string lock_error;
-  if (workers.leader()) {
-    try {
-      lock.emplace(plan.directory);
-    } catch (const InputError& e) {
-      lock_error = e.what();
-    }
-  }
-  if (workers.all(lock_error.empty())) return true;
-  if (workers.leader()) throw InputError(lock_error);
-  return false;
-}
-
-// The packings first: every case of a (φ, seed) starts from its packing.
-void make_packings(const Sweep& sweep, const Workers& workers) {
-  const SweepPlan& plan = sweep.plan;
-  std::vector<std::size_t> pending;
-  std::vector<double> cost;
-  for (std::size_t k = 0; k < plan.packings.size(); ++k) {
-    cost.push_back(static_cast<double>(plan.particles));
-    if (!std::filesystem::exists(plan.packings[k].file)) pending.push_back(k);
-  }
-  bool ok = true;
-  for (std::size_t k : my_share(pending, cost, workers)) {
-    try {
-      make_packing(sweep, plan.packings[k], workers, true);
-    } catch (const std::exception& e) {
-      log(workers, "FAILED   packing {}: {}", plan.packings[k].file.string(), e.what());
-      ok = false;
-    }
-  }
-  if (!workers.all(ok)) throw NumericalError("some packings failed (see above); rerun to retry");
-}
-
 // The pending cases, spread over the workers by cost (longest first); a failed
 // case is logged and left out, the others go on.
 void run_cases(const Sweep& sweep, const Workers& workers, bool quiet) {
   const SweepPlan& plan = sweep.plan;
-  std::vector<std::size_t> pending;
-  std::vector<double> cost;
-  for (std::size_t k = 0; k < plan.cases.size(); ++k) {
-    cost.push_back(plan.cases[k].cost);
-    if (!std::filesystem::exists(plan.cases[k].file)) pending.push_back(k);
-  }
-  const std::vector<std::size_t> mine = my_share(pending, cost, workers);
-  double total = 0.0, finished = 0.0;
-  for (std::size_t k : mine) total += cost[k];
-  // Only the leader draws: its share stands for the sweep's time left.
-  Progress bar("sweep", total, quiet || !workers.leader());
-  std::size_t failed = 0;
-  for (std::size_t k : mine) {
-    // A case resumed from its checkpoint reports its first progress part-way:
-    // that part was run before, and must not speed up the time left.
-    bool carry = std::filesystem::exists(checkpoint_file(plan.cases[k]));
-    try {
-      run_case(sweep, plan.cases[k], workers, [&](double fraction) {
-        if (carry) bar.carry(fraction * cost[k]);
-        carry = false;
-        bar.update(finished + fraction * cost[k]);
+  std::vector<SweepItem> items;
+  for (const SweepCase& c : plan.cases) items.push_back({c.file, checkpoint_file(c), c.cost});
+  const std::size_t failed =
+      run_pending(items, workers, quiet, "sweep", [&](std::size_t k, const auto& progress) {
+        run_case(sweep, plan.cases[k], workers, progress);
       });
-    } catch (const std::exception& e) {
-      log(workers, "FAILED   case {} ({}): {}", k, plan.cases[k].file.string(), e.what());
-      ++failed;
-    }
-    finished += cost[k];
-    bar.update(finished);
-  }
-  bar.finish();
   if (!workers.all(failed == 0) && workers.leader())
     log(workers, "some cases failed; the table holds the others");
   if (failed > 0 && !workers.leader())
@@ -401,7 +288,7 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
   if (options.only_case) return run_one_case(sweep, *options.only_case, workers, options.quiet);
 
   std::optional<DirectoryLock> lock;
-  if (!lock_folder(plan, workers, lock)) return;
+  if (!lock_folder(plan.directory, workers, lock)) return;
   if (!options.gather_only) {
     if (workers.leader()) {
       std::size_t done = 0;
@@ -412,7 +299,9 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
           sweep.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
           plan.directory.string(), estimated_hours(sweep, workers.size()));
     }
-    make_packings(sweep, workers);
+    make_packings(
+        plan.packings, plan.particles,
+        [&](std::size_t k) { return parameters_of(sweep, plan.packings[k]); }, workers);
     run_cases(sweep, workers, options.quiet);
   }
   if (!workers.leader()) return;

@@ -32,7 +32,7 @@ void FrozenDrag::clear() {
   shift.clear();
 }
 
-void freeze_drag(const ContactList& c, double gamma_tilde, const EhdSettings& settings,
+void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const EhdSettings& settings,
                  std::span<const double> friction, FrozenDrag& out) {
   out.clear();
   out.film = settings.film;
@@ -44,8 +44,8 @@ void freeze_drag(const ContactList& c, double gamma_tilde, const EhdSettings& se
     out.coefficient.push_back(settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
                                                                   c.force[k], c.deformation[k])
                                                : 0.0);
-    out.affine.push_back(settings.film.affine(n, c.separation[k]));
-    out.shift.push_back(c.separation[k].y());
+    out.affine.push_back(settings.film.affine(n, c.separation[k], rate));
+    out.shift.push_back(rate * c.separation[k].y());
   }
   settings.stokes.pair_coefficients(c, friction, out.dashpot);
 }
@@ -56,7 +56,7 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
                                        std::vector<Vec3>& w) {
   system.restore_positions(base_, base_strain_);
   system.restore_tracking(base_tracking_);
-  system.move(1.0, u, /*affine=*/false);
+  system.move(1.0, u);
   if (!system.neighbours().valid_for(system.max_nonaffine_displacement(), base_strain_))
     return false;
   const ContactField& field =
@@ -81,7 +81,7 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
     value.dissipation += h * (2.0 / 3.0) * drag.coefficient[k] * speed * std::sqrt(speed);
     Vec3 f = speed > 0.0 ? Vec3(w[k] * (drag.coefficient[k] / std::sqrt(speed)))  // a |w|^{1/2} ŵ
                          : Vec3::Zero();
-    if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + d_y e_x
+    if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + c d_y e_x
       const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());
       value.dissipation += h * 0.5 * b * q0.squaredNorm();
       f += b * q0;
@@ -193,8 +193,8 @@ int IncrementalMinimiser::newton_direction(std::span<const double> proximal, dou
       [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {
         hessian_times(proximal, in, out);
       },
-      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; },
-      translation_stiffness, eta, limit, true, direction_, cg_);
+      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, translation_stiffness,
+      eta, limit, true, direction_, cg_);
   negative_curvature_ = outcome.negative_curvature;
   return outcome.iterations;
 }

@@ -7,7 +7,7 @@
 // Mielke's doubly nonlinear flows): ζ_α v_α + ∂Ψ_EHD/∂v_α = F^e_α = −∂E/∂x_α,
 // with Ψ_EHD(v) = Σ_c ⅔ a_c |P_c(v_i − v_j) + w⁰_c|^{3/2} the drag potential of
 // ehd_drag.h (w⁰_c the affine tangential relative velocity), plus, with the
-// Stokes friction against the neighbours, Σ_c ½ b_c |v_i − v_j + d_y e_x|²
+// Stokes friction against the neighbours, Σ_c ½ b_c |v_i − v_j + c d_y e_x|²
 // (ζ_α is then its reservoir share). Backward Euler over
 // a strain step h from the affinely sheared configuration x⁰, with non-affine
 // displacement u = h v, is the stationarity condition of
@@ -77,17 +77,18 @@ struct FrozenDrag {
   std::vector<std::uint32_t> i, j;
   std::vector<Vec3> normal;         // n_c
   std::vector<double> coefficient;  // a_c (0 without EHD)
-  std::vector<Vec3> affine;         // w⁰_c = P_c (d_y e_x), or 0
+  std::vector<Vec3> affine;         // w⁰_c = P_c (c d_y e_x), or 0
   std::vector<double> dashpot;      // b_c of the Stokes pair dashpots (stokes_friction.h), or 0
-  std::vector<double> shift;        // d_y: the pair's affine relative velocity is d_y e_x
+  std::vector<double> shift;        // c d_y: the pair's affine relative velocity is c d_y e_x
   void clear();
   std::size_t size() const { return i.size(); }
 };
 
-/// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} (film.h), w⁰_c and the Stokes pair dashpots
-/// b_c (from the particles' Stokes frictions ζ) of every contact of `contacts`.
-void freeze_drag(const ContactList& contacts, double gamma_tilde, const EhdSettings& settings,
-                 std::span<const double> friction, FrozenDrag& out);
+/// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} (film.h), w⁰_c at shear rate c (`rate`, 1 in
+/// steady shear) and the Stokes pair dashpots b_c (from the particles' Stokes
+/// frictions ζ) of every contact of `contacts`.
+void freeze_drag(const ContactList& contacts, double gamma_tilde, double rate,
+                 const EhdSettings& settings, std::span<const double> friction, FrozenDrag& out);
 
 struct IncrementalResult {
   bool converged = false;

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "common/deal_ii_message.h"
-#include "common/parameter_input.h"
 #include "common/errors.h"
+#include "common/parameter_input.h"
 #include "micro/input/model_preset.h"
 
 namespace softglass::micro {
@@ -358,7 +358,7 @@ MicroParameters convert(const ParameterHandler& prm, const Entries& e,
 
   std::ostringstream text;
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
-  p.text = without_subsection(text.str(), "sweep");
+  p.text = without_subsection(without_subsection(text.str(), "sweep"), "oscillation");
   return p;
 }
 
@@ -414,6 +414,58 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
   prm.leave_subsection();
 }
 
+// The `oscillation` subsection of an oscillation file (micro/sweep/oscillation_plan.h).
+struct OscillationEntries {
+  OscillationSpec spec;
+  std::string directory = "oscillation";
+  unsigned long packings = 1, first_seed = 1, checkpoint_steps = 20000;
+  unsigned long samples_per_cycle = 64, min_cycles = 4, max_cycles = 40, min_periodic_cycles = 3;
+};
+
+void declare_oscillation(ParameterHandler& prm, OscillationEntries& o) {
+  prm.enter_subsection("oscillation");
+  entry(prm, "amplitudes", o.spec.amplitudes,
+        "Strain amplitudes gamma0 of gamma(t) = gamma0 sin(omega t) (comma-separated): an "
+        "amplitude sweep.",
+        Patterns::List(Patterns::Double(1e-6, 10.0), 1, 1000, ","));
+  entry(prm, "frequencies", o.spec.frequencies,
+        "Reduced angular frequencies omega~ = omega eta_s / E* (comma-separated): a frequency "
+        "sweep. The model's gamma~ is each case's peak rate gamma0 omega~, which must lie in "
+        "[1e-14, 1e-1].",
+        Patterns::List(Patterns::Double(1e-16, 1e-2), 1, 1000, ","));
+  entry(prm, "volume fractions", o.spec.volume_fractions,
+        "Volume fractions phi (comma-separated); empty: particles/volume fraction.",
+        Patterns::List(Patterns::Double(0.64, 0.95), 0, 1000, ","));
+  entry(prm, "packings", o.packings,
+        "Packings (seeds first seed, first seed + 1, ...) per volume fraction.",
+        Patterns::Integer(1, 1000));
+  entry(prm, "first seed", o.first_seed, "Seed of the first packing.", Patterns::Integer(0));
+  entry(prm, "samples per cycle", o.samples_per_cycle,
+        "Stress samples per cycle, at equally spaced phases (a multiple of 4: the strain "
+        "reversals are samples); harmonics up to the fifth need at least 16.",
+        Patterns::Integer(16, 4096));
+  entry(prm, "min cycles", o.min_cycles,
+        "Never stop before this many cycles (the first, a start-up from rest, is never used).",
+        Patterns::Integer(3, 100000));
+  entry(prm, "max cycles", o.max_cycles, "Stop (unconverged) after this many cycles.",
+        Patterns::Integer(3, 100000));
+  entry(prm, "min periodic cycles", o.min_periodic_cycles,
+        "The periodic state must span at least this many cycles.", Patterns::Integer(2, 100000));
+  entry(prm, "target relative error", o.spec.protocol.target_relative_error,
+        "Stop when the standard errors of G' and G'' over the periodic cycles are below this "
+        "fraction of |G*|.",
+        Patterns::Double(1e-6, 1.0));
+  entry(prm, "output directory", o.directory,
+        "Folder of the sweep: packings/, runs/, oscillation.csv, oscillation_packings.csv, "
+        "oscillation.h5. Relative to the current directory.",
+        Patterns::Anything());
+  entry(prm, "checkpoint steps", o.checkpoint_steps,
+        "A running case saves its state every this many accepted steps and a rerun goes on "
+        "from it; 0: no checkpoints.",
+        Patterns::Integer(0));
+  prm.leave_subsection();
+}
+
 }  // namespace
 
 // Parses `file`, then fills in what its model preset sets and the file does
@@ -433,27 +485,38 @@ MicroParameters read_parameter_file(const std::filesystem::path& file) {
   return convert(prm, e, file);
 }
 
+namespace {
+
+// Parses a file that extends a run file by subsection `extension` (declared
+// in `prm` with the run's entries). A run file given to a sweep command would
+// start hours of its defaults' work: such a file must set something in its
+// subsection; `example` says what.
+void parse_extended_file(ParameterHandler& prm, const std::filesystem::path& file,
+                         const std::string& extension, const std::string& example) {
+  const std::vector<SetEntry> set = parse_with_model_preset(prm, file);
+  const auto in_extension = [&](const SetEntry& e) {
+    return !e.subsections.empty() && e.subsections.front() == extension;
+  };
+  if (std::none_of(set.begin(), set.end(), in_extension)) {
+    throw InputError(fmt::format(
+        "'{}' sets nothing in subsection '{}': it is not {} file (a run file is for `micro "
+        "run`); {}",
+        file.string(), extension, extension == "sweep" ? "a sweep" : "an oscillation", example));
+  }
+}
+
+}  // namespace
+
 SweepParameters read_sweep_file(const std::filesystem::path& file) {
   ParameterHandler prm;
   Entries e;
   SweepEntries s;
   declare(prm, e);
   declare_sweep(prm, s);
-  const std::vector<SetEntry> set = parse_with_model_preset(prm, file);
-  // A run file given to `micro sweep` would start the default preset's hours
-  // of work: a sweep file says at least which sweep it is.
-  const auto in_sweep = [](const SetEntry& e) {
-    return !e.subsections.empty() && e.subsections.front() == "sweep";
-  };
-  if (std::none_of(set.begin(), set.end(), in_sweep)) {
-    throw InputError(fmt::format(
-        "'{}' sets nothing in subsection 'sweep': it is not a sweep file (a run file is for "
-        "`micro run`); a sweep file names at least its preset, e.g. 'subsection sweep / set "
-        "preset = fast' (docs/sweeps.md)",
-        file.string()));
-  }
-  require(s.particles != 1,
-          "sweep: particles = 1; allowed: 0 (the preset's N) or 2 ... 50000000");
+  parse_extended_file(prm, file, "sweep",
+                      "a sweep file names at least its preset, e.g. 'subsection sweep / set "
+                      "preset = fast' (docs/sweeps.md)");
+  require(s.particles != 1, "sweep: particles = 1; allowed: 0 (the preset's N) or 2 ... 50000000");
   SweepParameters sweep;
   sweep.base = convert(prm, e, file);
   sweep.spec = s.spec;
@@ -470,6 +533,44 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
           fmt::format("sweep: 'quasi-static strain step' = {} exceeds shear/'sample interval' = {}",
                       sweep.spec.quasi_static_strain_step, sweep.base.protocol.sample_interval));
   return sweep;
+}
+
+OscillationParameters read_oscillation_file(const std::filesystem::path& file) {
+  ParameterHandler prm;
+  Entries e;
+  OscillationEntries o;
+  declare(prm, e);
+  declare_oscillation(prm, o);
+  parse_extended_file(prm, file, "oscillation",
+                      "an oscillation file names at least its amplitudes, e.g. 'subsection "
+                      "oscillation / set amplitudes = 1e-3, 1e-2, 0.1' (docs/oscillation.md)");
+  OscillationParameters osc;
+  osc.base = convert(prm, e, file);
+  OscillationSpec& spec = osc.spec;
+  spec = o.spec;
+  if (spec.volume_fractions.empty()) spec.volume_fractions = {osc.base.packing.volume_fraction};
+  spec.packings = static_cast<unsigned>(o.packings);
+  spec.first_seed = static_cast<unsigned>(o.first_seed);
+  spec.particles = osc.base.packing.particles;
+  spec.protocol.samples_per_cycle = static_cast<unsigned>(o.samples_per_cycle);
+  spec.protocol.min_cycles = static_cast<unsigned>(o.min_cycles);
+  spec.protocol.max_cycles = static_cast<unsigned>(o.max_cycles);
+  spec.protocol.min_periodic_cycles = static_cast<unsigned>(o.min_periodic_cycles);
+  spec.checkpoint_steps = o.checkpoint_steps;
+  spec.scheme = osc.base.integrator.name;
+  require(!o.directory.empty(), "oscillation: output directory is empty");
+  spec.directory = o.directory;
+  // The protocol's own checks (multiple of 4, cycles), at the first case's
+  // amplitude and frequency; make_oscillation_plan checks every case.
+  OscillationProtocol first = spec.protocol;
+  first.amplitude = spec.amplitudes.front();
+  first.frequency = spec.frequencies.front();
+  try {
+    first.validate();
+  } catch (const InputError& error) {
+    throw InputError(fmt::format("oscillation: {}", error.what()));
+  }
+  return osc;
 }
 
 MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSettings& c) {
@@ -507,16 +608,22 @@ MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSett
   return p;
 }
 
-std::string parameter_template(bool sweep) {
+std::string parameter_template(TemplateKind kind) {
   ParameterHandler prm;
   Entries e;
   SweepEntries s;
+  OscillationEntries o;
   declare(prm, e);
-  if (sweep) declare_sweep(prm, s);
+  if (kind == TemplateKind::sweep) declare_sweep(prm, s);
+  if (kind == TemplateKind::oscillation) declare_oscillation(prm, o);
   std::ostringstream text;
-  text << (sweep ? "# softglass micro: sweep file for `micro sweep` (docs/sweeps.md).\n"
-                 : "# softglass micro: parameter file for `micro pack` and `micro run`.\n")
-       << "# Reduced units: lengths R (mean radius), stresses E*, time 1/gamma_dot (strain).\n";
+  text
+      << (kind == TemplateKind::sweep
+              ? "# softglass micro: sweep file for `micro sweep` (docs/sweeps.md).\n"
+          : kind == TemplateKind::oscillation
+              ? "# softglass micro: oscillation file for `micro oscillate` (docs/oscillation.md).\n"
+              : "# softglass micro: parameter file for `micro pack` and `micro run`.\n")
+      << "# Reduced units: lengths R (mean radius), stresses E*, time 1/gamma_dot (strain).\n";
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
   return text.str();
 }

@@ -13,6 +13,7 @@
 #include "micro/model/overdamped_shear.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
+#include "micro/sweep/oscillation_plan.h"
 #include "micro/sweep/sweep_plan.h"
 
 namespace softglass::micro {
@@ -57,8 +58,18 @@ struct SweepCaseSettings {
 /// `micro run` file) updated.
 MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSettings& settings);
 
-/// The documented template with all defaults; with `sweep`, that of a sweep
-/// file (the same plus subsection `sweep`).
-std::string parameter_template(bool sweep = false);
+/// An oscillation file (`micro oscillate`): a parameter file for every case
+/// plus an `oscillation` subsection. The case's γ̃ is its peak rate γ0 ω̃;
+/// subsection `shear`'s run length does not apply (the oscillation's does).
+struct OscillationParameters {
+  MicroParameters base;
+  OscillationSpec spec;
+};
+OscillationParameters read_oscillation_file(const std::filesystem::path& file);
+
+/// The documented template with all defaults: of a run file, or of a sweep or
+/// an oscillation file (the same plus subsection `sweep` or `oscillation`).
+enum class TemplateKind { run, sweep, oscillation };
+std::string parameter_template(TemplateKind kind = TemplateKind::run);
 
 }  // namespace softglass::micro

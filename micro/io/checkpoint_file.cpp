@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <functional>
 
 #include "common/atomic_output.h"
@@ -89,9 +90,10 @@ struct ReadParts {
 };
 
 // The parts of a checkpoint of `kind` with state and counters of the given
-// lengths.
+// lengths (the state's at least `state_size`, at most `longest_state`).
 ReadParts read_parts(const H5Group& root, const std::string& where, const char* kind,
-                     std::size_t state_size, std::size_t counters_size) {
+                     std::size_t state_size, std::size_t counters_size,
+                     std::size_t longest_state = 0) {
   if (!root.has_attribute("kind") || root.attribute_string("kind") != kind) {
     const bool other =
         root.has_attribute("kind") && (root.attribute_string("kind") == kShearKind ||
@@ -106,7 +108,8 @@ ReadParts read_parts(const H5Group& root, const std::string& where, const char* 
               root.read_array("counters").data,
               {},
               {}};
-  if (p.state.size() != state_size || p.counters.size() != counters_size)
+  const std::size_t longest = std::max(state_size, longest_state);
+  if (p.state.size() < state_size || p.state.size() > longest || p.counters.size() != counters_size)
     throw InputError(fmt::format("'{}': state or counters of the wrong length", where));
   if (root.has_child("timeseries")) p.series = read_time_series(root.group("timeseries"), where);
   if (root.has_child("snapshots"))
@@ -121,8 +124,8 @@ void write_checkpoint(const std::filesystem::path& path, const ShearCheckpoint& 
               {kShearKind,
                c.particles,
                c.box,
-               {c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds},
-               "start, next sample, next check, next snapshot, worst error, seconds",
+               {c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds, c.time},
+               "start, next sample, next check, next snapshot, worst error, seconds, time",
                counter_values(c.counters),
                "ShearCounters in declaration order",
                c.series,
@@ -137,7 +140,8 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   const std::string where = path.string();
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
-  ReadParts parts = read_parts(root, where, kShearKind, 6, 9);
+  // The time was added after the first six entries (a steady run's is unused).
+  ReadParts parts = read_parts(root, where, kShearKind, 6, 9, 7);
   ShearCheckpoint c;
   c.particles = std::move(parts.configuration.particles);
   c.box = parts.configuration.box;
@@ -165,6 +169,7 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   c.next_snapshot = parts.finite_state(3);
   c.worst = parts.worst_error(4);
   c.seconds = parts.finite_state(5);
+  if (parts.state.size() > 6) c.time = parts.finite_state(6);
   c.counters = {parts.count_at(0), parts.count_at(1),       parts.count_at(2),
                 parts.count_at(3), parts.count_at(4),       parts.count_at(5),
                 parts.count_at(6), parts.finite_counter(7), parts.finite_counter(8)};

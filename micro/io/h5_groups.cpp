@@ -18,7 +18,8 @@ std::vector<double> flatten(const std::vector<Vec3>& v) {
 
 std::vector<Vec3> unflatten(const std::vector<double>& flat) {
   std::vector<Vec3> v(flat.size() / 3);
-  for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    v[i] = Vec3(flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]);
   return v;
 }
 
@@ -51,6 +52,18 @@ std::vector<Vec3> read_vectors(const H5Group& g, const std::string& name,
 }
 
 }  // namespace
+
+// FNV-1a over the bytes of a configuration's positions and radii.
+std::uint64_t configuration_fingerprint(const H5Group& configuration) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (const char* name : {"position", "radius"}) {
+    for (const double x : configuration.read_array(name).data) {
+      const auto* byte = reinterpret_cast<const unsigned char*>(&x);
+      for (std::size_t k = 0; k < sizeof x; ++k) hash = (hash ^ byte[k]) * 1099511628211ull;
+    }
+  }
+  return hash;
+}
 
 void write_configuration(H5Group&& g, const Particles& p, const LeesEdwardsBox& box) {
   g.write("position", flatten(p.position), {p.size(), 3},
@@ -122,8 +135,9 @@ void write_time_series(H5Group&& ts, const TimeSeries& t) {
   ts.write("stress_elastic", flatten(t.elastic), {t.size(), 3, 3},
            {"E*", "elastic stress tensor sigma^e_ij = -(1/V) sum d_i f_j, [sample][i][j]"});
   ts.write("stress_viscous", flatten(t.viscous), {t.size(), 3, 3},
-           {"E*", "viscous stress tensor sigma^v_ij (EHD films and Stokes pair dashpots), "
-                  "not symmetric, [sample][i][j]"});
+           {"E*",
+            "viscous stress tensor sigma^v_ij (EHD films and Stokes pair dashpots), "
+            "not symmetric, [sample][i][j]"});
   ts.write("stress_film", flatten(t.film), {t.size(), 3, 3},
            {"E*", "the EHD films' part of sigma^v_ij, [sample][i][j]"});
   ts.write("coordination", t.coordination, {}, {"1", "Z = 2 x contacts / N"});
@@ -153,12 +167,14 @@ TimeSeries read_time_series(const H5Group& ts, const std::string& where) {
   t.elastic = tensors("stress_elastic");
   t.viscous = tensors("stress_viscous");
   if (!ts.has_child("stress_film")) {
-    throw InputError(fmt::format("'{}': no dataset 'stress_film' (the films' part of the viscous "
-                                 "stress): written before softglass recorded it; run it again",
-                                 where));
+    throw InputError(
+        fmt::format("'{}': no dataset 'stress_film' (the films' part of the viscous "
+                    "stress): written before softglass recorded it; run it again",
+                    where));
   }
   t.film = tensors("stress_film");
-  if (t.coordination.size() != t.size() || t.step.size() != t.size() || t.layering.size() != t.size()) {
+  if (t.coordination.size() != t.size() || t.step.size() != t.size() ||
+      t.layering.size() != t.size()) {
     throw InputError(fmt::format("'{}': time-series datasets differ in length", where));
   }
   return t;
@@ -187,7 +203,8 @@ std::vector<Snapshot> read_snapshots(const H5Group& g, std::size_t n, const std:
   for (std::size_t k = 0; k < strain.size(); ++k) {
     Snapshot snap{strain[k], std::vector<Vec3>(n)};
     const double* p = &position.data[k * 3 * n];
-    for (std::size_t i = 0; i < n; ++i) snap.position[i] = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    for (std::size_t i = 0; i < n; ++i)
+      snap.position[i] = Vec3(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
     snapshots.push_back(std::move(snap));
   }
   return snapshots;

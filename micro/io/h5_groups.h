@@ -3,13 +3,14 @@
 // file (`where`) and dataset in their errors.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "common/h5_file.h"
-#include "micro/protocol/shear_run.h"
 #include "micro/geometry/lees_edwards_box.h"
 #include "micro/geometry/particles.h"
+#include "micro/protocol/shear_run.h"
 
 namespace softglass::micro {
 
@@ -39,11 +40,16 @@ struct StoredConfiguration {
 };
 StoredConfiguration read_configuration(const H5Group& g, const std::string& where);
 
+/// A hash of a stored configuration (FNV-1a over its positions and radii):
+/// equal for two runs of one packing, a run and its copy included.
+std::uint64_t configuration_fingerprint(const H5Group& configuration);
+
 void write_time_series(H5Group&& g, const TimeSeries& t);
 TimeSeries read_time_series(const H5Group& g, const std::string& where);
 
 void write_snapshots(H5Group&& g, const std::vector<Snapshot>& snapshots);
 /// Snapshots of `particles` particles each.
-std::vector<Snapshot> read_snapshots(const H5Group& g, std::size_t particles, const std::string& where);
+std::vector<Snapshot> read_snapshots(const H5Group& g, std::size_t particles,
+                                     const std::string& where);
 
 }  // namespace softglass::micro

@@ -20,16 +20,6 @@ namespace {
 // (format 1 held the x–y shear alone, a different number for the same packing).
 constexpr std::int64_t kFormatVersion = 2;
 
-void require_format(const H5Group& root, const std::filesystem::path& path) {
-  const std::int64_t format =
-      root.has_attribute("format_version") ? root.attribute_int("format_version") : 0;
-  if (format != kFormatVersion) {
-    throw InputError(fmt::format(
-        "'{}' has run-file format {}, this version reads {} (G0 is now the mean over six "
-        "simple shears: rerun the case)",
-        path.string(), format, kFormatVersion));
-  }
-}
 // The attribute `protocol` of /shear; files written before it existed are overdamped.
 constexpr const char* kOverdamped = "overdamped";
 constexpr const char* kQuasiStatic = "aqs";
@@ -163,19 +153,18 @@ std::string now_iso8601() {
   return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(now));
 }
 
-// FNV-1a over the bytes of a configuration's positions and radii.
-std::uint64_t fingerprint(const H5Group& configuration) {
-  std::uint64_t hash = 1469598103934665603ull;
-  for (const char* name : {"position", "radius"}) {
-    for (const double x : configuration.read_array(name).data) {
-      const auto* byte = reinterpret_cast<const unsigned char*>(&x);
-      for (std::size_t k = 0; k < sizeof x; ++k) hash = (hash ^ byte[k]) * 1099511628211ull;
-    }
-  }
-  return hash;
-}
-
 }  // namespace
+
+void require_run_file_format(const H5Group& root, const std::filesystem::path& path) {
+  const std::int64_t format =
+      root.has_attribute("format_version") ? root.attribute_int("format_version") : 0;
+  if (format != kFormatVersion) {
+    throw InputError(fmt::format(
+        "'{}' has run-file format {}, this version reads {} (G0 is now the mean over six "
+        "simple shears: rerun the case)",
+        path.string(), format, kFormatVersion));
+  }
+}
 
 void write_run_file(const std::filesystem::path& path, const RunRecord& record) {
   H5File file = H5File::create(path);
@@ -215,6 +204,11 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
       shear.write_string("contact_law_table", table, {"", "the table law's data"});
     write_shear(std::move(shear), *record.shear);
   }
+  if (record.oscillation) {
+    H5Group oscillation = root.create_group("oscillation");
+    oscillation.set_attribute("contact_law", record.contact_law.name);
+    write_oscillation(std::move(oscillation), *record.oscillation);
+  }
   if (record.structure) write_structure(root.create_group("structure"), *record.structure);
   file.close();
 }
@@ -222,7 +216,7 @@ void write_run_file(const std::filesystem::path& path, const RunRecord& record) 
 StoredPacking read_packing(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
-  require_format(root, path);
+  require_run_file_format(root, path);
   const H5Group p = root.group("packing");
   const std::string where = path.string();
   StoredConfiguration configuration = read_configuration(p.group("configuration"), where);
@@ -265,7 +259,7 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
 StoredRunSummary read_run_summary(const std::filesystem::path& path) {
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
-  require_format(root, path);
+  require_run_file_format(root, path);
   if (!root.has_child("shear")) {
     throw InputError(
         fmt::format("'{}' holds no sheared run (made by `micro pack`?)", path.string()));
@@ -276,7 +270,7 @@ StoredRunSummary read_run_summary(const std::filesystem::path& path) {
   StoredRunSummary s;
   s.file = path;
   const std::string where = path.string();
-  s.packing_fingerprint = fingerprint(packing.group("configuration"));
+  s.packing_fingerprint = configuration_fingerprint(packing.group("configuration"));
   // Every number goes into the flow-curve tables, which refuse NaN and inf.
   const auto positive = [&](const H5Group& g, const char* name) {
     const double v = g.read_scalar(name);

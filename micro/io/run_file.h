@@ -13,8 +13,10 @@
 #include <optional>
 #include <string>
 
+#include "common/h5_file.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/analysis/structure.h"
+#include "micro/io/oscillation_group.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
 
@@ -51,17 +53,21 @@ struct StructureRecord {
 };
 
 struct RunRecord {
-  std::string command;     // "pack" or "run"
+  std::string command;     // "pack", "run" or "oscillate"
   std::string parameters;  // the complete parameter file, defaults included
   PackingReport packing;
   ShearModulus modulus;
   Particles packing_particles;  // the relaxed packing, label order
   LeesEdwardsBox packing_box;
   std::optional<ShearRecord> shear;
+  std::optional<OscillationRecord> oscillation;  // `micro oscillate`
   std::optional<StructureRecord> structure;
   ContactLawSpec contact_law;  // stored so that structure can be analysed again
   Timings timings;
 };
+
+/// InputError unless the file's root says it has this version's run-file format.
+void require_run_file_format(const H5Group& root, const std::filesystem::path& path);
 
 /// Writes `record` to `path` (which must not exist or is replaced: the caller
 /// decides, see common/atomic_output.h).

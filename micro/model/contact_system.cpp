@@ -23,7 +23,7 @@ ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
   rebuild();
 }
 
-void ContactSystem::move(double dt, std::span<const Vec3> v, bool affine) {
+void ContactSystem::move(double dt, std::span<const Vec3> v) {
   const std::size_t n = size();
   Vec3* x = particles_.position.data();
   Vec3* tracked = nonaffine_.data();
@@ -31,12 +31,16 @@ void ContactSystem::move(double dt, std::span<const Vec3> v, bool affine) {
 #pragma omp parallel for schedule(static) reduction(max : max2) if (n >= 4096)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 step = dt * v[i];
-    if (affine) x[i].x() += dt * x[i].y();
     x[i] += step;
     tracked[i] += step;
     max2 = std::max(max2, tracked[i].squaredNorm());
   }
   max_nonaffine_ = std::sqrt(max2);
+}
+
+void ContactSystem::shear(double increment) {
+  for (Vec3& x : particles_.position) x.x() += increment * x.y();
+  box_.advance_strain(increment);
 }
 
 void ContactSystem::rebuild() {

@@ -49,13 +49,13 @@ class ContactSystem {
     return ensure_neighbours(extra_nonaffine, box_.strain());
   }
 
-  /// Moves every particle by dt v_i, plus the affine displacement dt y_i e_x if
-  /// `affine` (shear at unit rate); v_i dt is the non-affine part the list
+  /// Moves every particle by dt v_i, the non-affine displacement the list
   /// tracks. Positions move continuously (they are wrapped into the cell when
-  /// the list is rebuilt); the caller advances the strain.
-  void move(double dt, std::span<const Vec3> v, bool affine);
-
-  void advance_strain(double increment) { box_.advance_strain(increment); }
+  /// the list is rebuilt).
+  void move(double dt, std::span<const Vec3> v);
+  /// Shears the cell and the particles affinely by `increment` of strain
+  /// (x_i += increment · y_i e_x; either sign).
+  void shear(double increment);
   void set_strain(double strain);
   /// Scales positions and cell by `factor` (compression when < 1).
   void rescale(double factor);

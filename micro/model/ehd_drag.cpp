@@ -20,10 +20,10 @@ constexpr int kMaxHalvings = 50;
 inline double drag_coefficient(const ContactList& c, std::size_t k, double gamma_tilde) {
   return film_coefficient(gamma_tilde, c.contact_radius[k], c.force[k], c.deformation[k]);
 }
-// The whole relative velocity q⁰ = v_i − v_j + d_y e_x of a contact with
-// non-affine part q: what the Stokes pair dashpots act on.
-inline Vec3 relative_velocity(const Vec3& q, const Vec3& d) {
-  return Vec3(q.x() + d.y(), q.y(), q.z());
+// The whole relative velocity q⁰ = v_i − v_j + c d_y e_x of a contact with
+// non-affine part q at shear rate c: what the Stokes pair dashpots act on.
+inline Vec3 relative_velocity(const Vec3& q, const Vec3& d, double rate) {
+  return Vec3(q.x() + rate * d.y(), q.y(), q.z());
 }
 }  // namespace
 
@@ -53,8 +53,10 @@ EhdDrag::EhdDrag(EhdSettings settings) : settings_(settings) {
   settings_.validate();
 }
 
-void EhdDrag::prepare(const ContactList& c, double gamma_tilde, std::span<const double> friction) {
+void EhdDrag::prepare(const ContactList& c, double gamma_tilde, double rate,
+                      std::span<const double> friction) {
   const std::size_t m = c.size();
+  rate_ = rate;
   geometry_.normal.resize(m);
   geometry_.coefficient.resize(m);
   geometry_.affine.resize(m);
@@ -69,7 +71,7 @@ void EhdDrag::prepare(const ContactList& c, double gamma_tilde, std::span<const 
   for (std::size_t k = 0; k < m; ++k) {
     geometry_.normal[k] = c.separation[k].normalized();
     geometry_.coefficient[k] = ehd ? drag_coefficient(c, k, gamma_tilde) : 0.0;
-    geometry_.affine[k] = settings_.film.affine(geometry_.normal[k], c.separation[k]);
+    geometry_.affine[k] = settings_.film.affine(geometry_.normal[k], c.separation[k], rate);
   }
 }
 
@@ -115,7 +117,8 @@ void EhdDrag::gradient_at(const ContactList& c, std::span<const Vec3> force,
     const double speed = w[k].norm();
     // ∂/∂w of ⅔ a |w|^{3/2} = a |w|^{1/2} ŵ = a w / |w|^{1/2}; of ½ b |q⁰|², b q⁰
     const double secant = speed > 0.0 ? geometry_.coefficient[k] / std::sqrt(speed) : 0.0;
-    scratch_[k] = w[k] * secant + geometry_.dashpot[k] * relative_velocity(q, c.separation[k]);
+    scratch_[k] =
+        w[k] * secant + geometry_.dashpot[k] * relative_velocity(q, c.separation[k], rate_);
     secant_[k] = secant;
   }
   for (std::size_t a = 0; a < v.size(); ++a) gradient[a] = reservoir_[a] * v[a] - force[a];
@@ -197,7 +200,7 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
     scratch_[k] = speed > 0.0 ? Vec3(w_trial_[k] * (a / root)) : Vec3::Zero();
     // ½ b |q⁰|² changes by b (t q⁰·δq + ½ t² |δq|²) along the step δq
     if (const double b = geometry_.dashpot[k]; b > 0.0) {
-      const Vec3 q0 = relative_velocity(v[c.i[k]] - v[c.j[k]], c.separation[k]);
+      const Vec3 q0 = relative_velocity(v[c.i[k]] - v[c.j[k]], c.separation[k], rate_);
       const Vec3 dq = step_[c.i[k]] - step_[c.j[k]];
       const double pair = b * t * (q0.dot(dq) + 0.5 * t * dq.squaredNorm());
       change += pair;
@@ -212,12 +215,12 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
   return {change, 64.0 * std::numeric_limits<double>::epsilon() * magnitude};
 }
 
-VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde,
+VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde, double rate,
                                   std::span<const double> friction, std::span<const Vec3> force,
                                   std::span<Vec3> v) {
   const std::size_t n = v.size();
   const std::size_t m = c.size();
-  prepare(c, gamma_tilde, friction);
+  prepare(c, gamma_tilde, rate, friction);
   build_incidence(c, n);
   for (auto* vec : {&w_trial_, &unit_w_}) vec->resize(m);
   secant_.resize(m);
@@ -342,7 +345,7 @@ void EhdDrag::line_search(const ContactList& c, std::span<const Vec3> force,
   }
 }
 
-DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde,
+DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde, double rate,
                                   std::span<const Vec3> v, std::span<Vec3> drag,
                                   std::span<const double> friction) const {
   std::vector<double> dashpot;
@@ -354,14 +357,14 @@ DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde,
   DissipativeVirial sum;
   for (std::size_t k = 0; k < c.size(); ++k) {
     const Vec3 q = v[c.i[k]] - v[c.j[k]];
-    const Vec3 w = settings_.film.sliding(c.separation[k].normalized(), q, c.separation[k]);
+    const Vec3 w = settings_.film.sliding(c.separation[k].normalized(), q, c.separation[k], rate);
     const double speed = w.norm();
     Vec3 film = Vec3::Zero(), dashpot_force = Vec3::Zero();  // on i from j
     if (settings_.enabled && speed > 0.0)
       film = -drag_coefficient(c, k, gamma_tilde) / std::sqrt(speed) * w;
     sum.film += c.separation[k] * film.transpose();
     if (!dashpot.empty()) {
-      dashpot_force = -dashpot[k] * relative_velocity(q, c.separation[k]);
+      dashpot_force = -dashpot[k] * relative_velocity(q, c.separation[k], rate);
       sum.friction += c.separation[k] * dashpot_force.transpose();
     }
     const Vec3 f = film + dashpot_force;

@@ -12,11 +12,12 @@
 // m_α = f_r/(6π R_α). Writing v = u − u∞ for the non-affine velocity and
 // ζ_α = γ̃/m_α for the friction, v solves
 //     ζ_α v_α − F^EHD_α(v) = F^e_α ,
-// in which the relative velocity of a contact is v_i − v_j + d_y e_x. This is the
+// in which the relative velocity of a contact is v_i − v_j + c d_y e_x (c the
+// shear rate in units of that of γ̃, shear_drive.h; 1 in steady shear). This is the
 // stationarity condition of the strictly convex function
-//     Φ(v) = Σ_α ½ ζ_α |v_α|² + Σ_c ⅔ a_c |P_c(v_i − v_j + d_y e_x)|^{3/2} − Σ_α F^e_α·v_α ,
+//     Φ(v) = Σ_α ½ ζ_α |v_α|² + Σ_c ⅔ a_c |P_c(v_i − v_j + c d_y e_x)|^{3/2} − Σ_α F^e_α·v_α ,
 // (with the Stokes friction against the neighbours, stokes_friction.h, ζ_α is
-// its reservoir share and Φ gains Σ_c ½ b_c |v_i − v_j + d_y e_x|²: quadratic,
+// its reservoir share and Φ gains Σ_c ½ b_c |v_i − v_j + c d_y e_x|²: quadratic,
 // convex, one more term of the same kind in every step below)
 // (P_c projects on the contact plane), so the solution exists, is unique, and is
 // found in two phases. First nonlinear Jacobi sweeps, v_α ← v_α − ∇_αΦ / D_α with
@@ -105,17 +106,18 @@ class EhdDrag {
   const EhdSettings& settings() const { return settings_; }
 
   /// Non-affine velocities v for the given contacts, Stokes frictions ζ
-  /// (6π γ̃ R/f_r) and elastic forces; `v` holds the initial guess on entry.
-  /// Throws NumericalError if Newton fails.
-  VelocitySolveStats solve(const ContactList& contacts, double gamma_tilde,
+  /// (6π γ̃ R/f_r) and elastic forces, under the affine flow c y e_x at shear
+  /// rate c (`rate`, in units of the rate of γ̃: 1 in steady shear); `v` holds
+  /// the initial guess on entry. Throws NumericalError if Newton fails.
+  VelocitySolveStats solve(const ContactList& contacts, double gamma_tilde, double rate,
                            std::span<const double> friction, std::span<const Vec3> elastic_force,
                            std::span<Vec3> v);
 
-  /// Σ_c d ⊗ f at velocities v of the pair forces that dissipate, each part
-  /// apart (σ^v = −(film + friction)/V); also the sum of those forces on each
-  /// particle if `drag` is not empty. `friction` (ζ) is needed for the
-  /// dashpots only.
-  DissipativeVirial virial(const ContactList& contacts, double gamma_tilde,
+  /// Σ_c d ⊗ f at velocities v and shear rate c of the pair forces that
+  /// dissipate, each part apart (σ^v = −(film + friction)/V); also the sum of
+  /// those forces on each particle if `drag` is not empty. `friction` (ζ) is
+  /// needed for the dashpots only.
+  DissipativeVirial virial(const ContactList& contacts, double gamma_tilde, double rate,
                            std::span<const Vec3> v, std::span<Vec3> drag = {},
                            std::span<const double> friction = {}) const;
 
@@ -126,7 +128,8 @@ class EhdDrag {
     std::vector<Vec3> affine;         // w⁰_c
     std::vector<double> dashpot;      // b_c (stokes_friction.h; 0 for `affine`)
   };
-  void prepare(const ContactList& contacts, double gamma_tilde, std::span<const double> friction);
+  void prepare(const ContactList& contacts, double gamma_tilde, double rate,
+               std::span<const double> friction);
   void build_incidence(const ContactList& contacts, std::size_t n);
   /// ∇Φ(v); leaves the tangential relative velocities in `w`.
   void gradient_at(const ContactList& contacts, std::span<const Vec3> force,
@@ -162,6 +165,7 @@ class EhdDrag {
 
   EhdSettings settings_;
   Geometry geometry_;
+  double rate_ = 1.0;          // c of the solve in progress
   std::vector<Vec3> scratch_;  // per-contact vectors
   std::vector<std::size_t> incidence_start_;
   std::vector<std::uint32_t> incidence_;  // contact index × 2 + (0: i side, 1: j side)

@@ -5,8 +5,9 @@
 //     a_c = (γ̃ C R_c³ ε^{(2n+1)/2})^{1/2} = (¾ γ̃ R_c |f^e| √ε)^{1/2},
 // the second form because C ε^n = ¾ F(ε) for every contact law. The velocity w
 // is a projection of the relative velocity q = v_α − v_β + u∞_α − u∞_β, where v
-// is the non-affine velocity and u∞_α − u∞_β = γ̇ d_y e_x (γ̇ = 1 in strain
-// units) the affine one:
+// is the non-affine velocity and u∞_α − u∞_β = c d_y e_x the affine one, c the
+// shear rate in units of the run's reference rate (1 in steady shear;
+// shear_drive.h):
 //
 //   `tangential` (the paper)  w = (I − n nᵀ) q: the film resists sliding of the
 //                             facets only; approach and separation are free.
@@ -18,7 +19,7 @@
 //                             the affine flow only (a diagnostic variant).
 //
 // Every variant is w = P q⁰ + P(v_α − v_β) with a constant projector P (per
-// contact) and an affine part w⁰ = P(d_y e_x) or 0; the drag potential
+// contact) and an affine part w⁰ = P(c d_y e_x) or 0; the drag potential
 // ⅔ a_c |w|^{3/2} then stays convex in v, which the velocity solve and the
 // implicit integrator rely on.
 #pragma once
@@ -56,14 +57,14 @@ struct FilmModel {
     if (velocity != FilmVelocity::full) p -= n * n.transpose();
     return p;
   }
-  /// w⁰ = P(d_y e_x) for the separation d (zero for `nonaffine`).
-  Vec3 affine(const Vec3& n, const Vec3& d) const {
+  /// w⁰ = P(c d_y e_x) for the separation d at shear rate c (zero for `nonaffine`).
+  Vec3 affine(const Vec3& n, const Vec3& d, double rate) const {
     if (velocity == FilmVelocity::nonaffine) return Vec3::Zero();
-    return project(n, Vec3(d.y(), 0.0, 0.0));
+    return project(n, Vec3(rate * d.y(), 0.0, 0.0));
   }
   /// w = P(v_α − v_β) + w⁰ for the non-affine relative velocity dv.
-  Vec3 sliding(const Vec3& n, const Vec3& dv, const Vec3& d) const {
-    return project(n, dv) + affine(n, d);
+  Vec3 sliding(const Vec3& n, const Vec3& dv, const Vec3& d, double rate) const {
+    return project(n, dv) + affine(n, d, rate);
   }
 };
 

@@ -28,15 +28,16 @@ ShearObservables observables(const Eigen::Matrix3d& s) {
   return {s(1, 0), s(0, 0) - s(1, 1), s(1, 1) - s(2, 2), -s.trace() / 3.0};
 }
 
-OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model)
-    : system_(std::move(system)), model_(model), drag_(model.drag) {
+OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model, ShearDrive drive,
+                                 double time)
+    : system_(std::move(system)), model_(model), drive_(drive), time_(time), drag_(model.drag) {
   model_.validate();
 }
 
 void OverdampedShear::evaluate() {
   // The velocities are implicit with the EHD drag or the Stokes pair dashpots.
   const bool with_drag = model_.drag.enabled || model_.drag.stokes.has_pairs();
-  stress_valid_ = strain() >= stress_from_;
+  stress_valid_ = time() >= stress_from_;
   const ContactField& field =
       system_.compute_forces({.energy = false, .contacts = with_drag, .virial = stress_valid_});
   Particles& p = system_.particles();
@@ -53,10 +54,12 @@ void OverdampedShear::evaluate() {
   }
 
   if (with_drag) {
+    const double c = rate();
     last_solve_ =
-        drag_.solve(field.contacts, model_.gamma_tilde, friction_, field.force, p.velocity);
+        drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, field.force, p.velocity);
     if (stress_valid_)
-      viscous_virial_ = drag_.virial(field.contacts, model_.gamma_tilde, p.velocity, {}, friction_);
+      viscous_virial_ =
+          drag_.virial(field.contacts, model_.gamma_tilde, c, p.velocity, {}, friction_);
   } else {
     for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * field.force[a];
     viscous_virial_ = {};
@@ -74,7 +77,7 @@ void OverdampedShear::evaluate() {
 
 void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
   std::copy(velocity.begin(), velocity.end(), system_.particles().velocity.begin());
-  if (strain() >= stress_from_) {
+  if (time() >= stress_from_) {
     evaluate();
     return;
   }
@@ -103,12 +106,17 @@ StressSample OverdampedShear::stress() const {
 void OverdampedShear::prepare_step(double dt) {
   // A rebuild reorders the particles; velocities move with them, and the step
   // needs nothing else from the last evaluation.
-  system_.ensure_neighbours(dt * max_speed_, strain() + dt);
+  system_.ensure_neighbours(dt * max_speed_, strain_after(dt));
 }
 
 void OverdampedShear::step(double dt) {
-  system_.move(dt, system_.particles().velocity, /*affine=*/true);
-  system_.advance_strain(dt);
+  advance_affinely(dt);
+  system_.move(dt, system_.particles().velocity);
+}
+
+void OverdampedShear::advance_affinely(double dt) {
+  system_.shear(strain_increment(dt));
+  time_ += dt;
   evaluated_ = false;
 }
 
@@ -118,6 +126,7 @@ void OverdampedShear::save(Snapshot& into) const {
   into.velocity.assign(p.velocity.begin(), p.velocity.end());
   system_.save_tracking(into.tracking);
   into.strain = strain();
+  into.time = time_;
   into.relaxation_rate = relaxation_rate_;
   into.max_speed = max_speed_;
   into.elastic_virial = elastic_virial_;
@@ -127,6 +136,7 @@ void OverdampedShear::save(Snapshot& into) const {
 
 void OverdampedShear::restore(const Snapshot& s) {
   system_.restore_positions(s.position, s.strain);
+  time_ = s.time;
   system_.particles().velocity.assign(s.velocity.begin(), s.velocity.end());
   system_.restore_tracking(s.tracking);
   relaxation_rate_ = s.relaxation_rate;

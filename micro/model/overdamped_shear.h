@@ -8,6 +8,13 @@
 // EHD velocity solve, the stress, and a bound on the stiffness — and moves the
 // particles; integrators (integrator.h) decide the steps.
 //
+// Under a time-dependent drive (shear_drive.h: oscillatory shear) time t is in
+// units of 1/γ̇_ref, γ̃ is that reference rate's, and the affine flow is
+// c(t) y e_x: dx_α/dt = c(t) y_α e_x + v_α, the drag seeing the affine relative
+// velocity c(t) d_y e_x. Steady shear is c ≡ 1, where time is the strain
+// itself. Integrators step in time and move the affine part with the drive's
+// exact strain increment (advance_affinely).
+//
 // Stiffness. Linearised about a configuration, the elastic part of the motion is
 // δẋ = −ζ⁻¹ H δx with H the Hessian of the elastic energy. Block Gershgorin
 // bounds its fastest rate by  λ = max_α 2 Σ_c ‖K_c‖ / ζ_α  (per unit strain); the
@@ -21,6 +28,7 @@
 
 #include "micro/model/contact_system.h"
 #include "micro/model/ehd_drag.h"
+#include "micro/model/shear_drive.h"
 
 namespace softglass::micro {
 
@@ -51,12 +59,23 @@ struct StressSample {
 
 class OverdampedShear {
  public:
-  OverdampedShear(ContactSystem system, const ShearModel& model);
+  /// Under `drive` from time `time` (ignored for steady shear, whose time is
+  /// the cell's strain).
+  OverdampedShear(ContactSystem system, const ShearModel& model,
+                  ShearDrive drive = ShearDrive::steady(), double time = 0.0);
 
   ContactSystem& system() { return system_; }
   const ContactSystem& system() const { return system_; }
   const ShearModel& model() const { return model_; }
+  const ShearDrive& drive() const { return drive_; }
   double strain() const { return system_.box().strain(); }
+  /// Time (units 1/γ̇_ref); the strain itself in steady shear.
+  double time() const { return drive_.is_steady() ? strain() : time_; }
+  /// The affine flow's rate c now (1 in steady shear).
+  double rate() const { return drive_.rate(time()); }
+  /// The strain after a further time `dt`.
+  double strain_after(double dt) const { return strain() + strain_increment(dt); }
+  double strain_increment(double dt) const { return drive_.strain_increment(time(), dt); }
 
   /// Forces, velocities and stiffness bound at the current configuration, and
   /// the stress if the strain has reached the one set by `sample_stress_from`.
@@ -69,9 +88,9 @@ class OverdampedShear {
   /// velocity solve would only replace u/h by v(x) in the next step's guess
   /// and error estimate (backward_euler.cpp).
   void accept_step_velocities(std::span<const Vec3> velocity);
-  /// Evaluations at strains ≥ `strain` compute the stress (by default all do);
-  /// a run sets its next sample strain so that steps between samples skip it.
-  void sample_stress_from(double strain) { stress_from_ = strain; }
+  /// Evaluations at times ≥ `time` compute the stress (by default all do); a
+  /// run sets its next sample time so that steps between samples skip it.
+  void sample_stress_from(double time) { stress_from_ = time; }
   bool evaluated() const { return evaluated_; }
 
   /// Non-affine velocities v of the last evaluation (units γ̇ R).
@@ -88,14 +107,18 @@ class OverdampedShear {
   /// Makes the neighbour list valid for an Euler step of `dt` from here. May
   /// reorder particles (velocities move with them).
   void prepare_step(double dt);
-  /// x += dt (y e_x + v), strain += dt, with v from the last evaluation.
+  /// x += Δγ y e_x + dt v, time += dt, with Δγ the drive's strain increment
+  /// over dt and v from the last evaluation.
   void step(double dt);
+  /// The affine part of a step: time += dt, x += Δγ y e_x, the cell's strain
+  /// += Δγ. The caller adds the non-affine move (system().move).
+  void advance_affinely(double dt);
 
   /// Everything `step` and `evaluate` change, for rejecting a trial step.
   struct Snapshot {
     std::vector<Vec3> position, velocity;
     ContactSystem::Tracking tracking;
-    double strain, relaxation_rate, max_speed;
+    double strain, time, relaxation_rate, max_speed;
     Eigen::Matrix3d elastic_virial;
     DissipativeVirial viscous_virial;
     bool stress_valid;
@@ -111,6 +134,8 @@ class OverdampedShear {
 
   ContactSystem system_;
   ShearModel model_;
+  ShearDrive drive_;
+  double time_;  // time of a time-dependent drive
   EhdDrag drag_;
   std::vector<double> friction_;      // ζ_α
   std::vector<double> mobility_;      // 1/ζ_α

@@ -81,7 +81,7 @@ FireResult minimise_fire(ContactSystem& system, const FireSettings& settings) {
         alpha = kAlphaStart;
       }
       // Step back half a step and stop.
-      system.move(-0.5 * dt, v, /*affine=*/false);
+      system.move(-0.5 * dt, v);
       std::fill(v.begin(), v.end(), Vec3::Zero());
     }
 
@@ -99,7 +99,7 @@ FireResult minimise_fire(ContactSystem& system, const FireSettings& settings) {
       vmax2 = std::max(vmax2, v[a].squaredNorm());
     }
     system.ensure_neighbours(dt * std::sqrt(vmax2));  // may reorder; v moves along
-    system.move(dt, v, /*affine=*/false);
+    system.move(dt, v);
     field = &system.compute_forces();
     dt_max = settings.step_fraction / std::sqrt(std::max(stiffness_bound(*field), 1e-300));
   }

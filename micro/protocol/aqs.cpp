@@ -43,7 +43,7 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings, const AqsO
   const std::size_t n = system.size();
   auto& previous = system.particles().velocity;  // last step's u/Δγ; moves with reordering
   previous.assign(n, Vec3::Zero());
-  std::vector<Vec3> u(n), zero(n, Vec3::Zero());
+  std::vector<Vec3> u(n);
   std::vector<double> energies, all_energies;
   const double start = system.box().strain();
   const auto steps = static_cast<std::size_t>(std::llround(settings.strain / settings.strain_step));
@@ -53,8 +53,7 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings, const AqsO
 
   for (std::size_t step = 1; step <= steps; ++step) {
     system.ensure_neighbours(kListMargin, system.box().strain() + dg);
-    system.move(dg, zero, /*affine=*/true);
-    system.advance_strain(dg);
+    system.shear(dg);
     // The last step's displacement as the guess, unless it was a plastic event
     // (many iterations): then its rearrangement says nothing about this step.
     for (std::size_t a = 0; a < n; ++a)

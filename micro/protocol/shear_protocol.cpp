@@ -46,7 +46,8 @@ const std::vector<std::string>& shear_observable_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n;
     for (const char* base : {"sigma", "N1", "N2", "pressure"})
-      for (const char* part : {"", "_elastic", "_viscous", "_film"}) n.push_back(std::string(base) + part);
+      for (const char* part : {"", "_elastic", "_viscous", "_film"})
+        n.push_back(std::string(base) + part);
     return n;
   }();
   return names;
@@ -71,13 +72,6 @@ std::vector<double> TimeSeries::component(const std::string& observable) const {
   std::vector<double> values(size());
   for (std::size_t k = 0; k < size(); ++k) values[k] = value(k);
   return values;
-}
-
-const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list,
-                                  const std::string& name) {
-  for (const auto& o : list)
-    if (o.name == name) return o.estimate;
-  throw std::invalid_argument("no observable " + name);
 }
 
 const MeanEstimate& ShearSummary::operator[](const std::string& name) const {

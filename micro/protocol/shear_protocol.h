@@ -61,14 +61,6 @@ struct TimeSeries {
 /// "sigma_viscous", "sigma_film", "N1", …).
 const std::vector<std::string>& shear_observable_names();
 
-struct ObservableEstimate {
-  std::string name;
-  MeanEstimate estimate;
-};
-/// The estimate called `name` in `list`; std::invalid_argument if absent.
-const MeanEstimate& find_estimate(const std::vector<ObservableEstimate>& list,
-                                  const std::string& name);
-
 struct ShearSummary {
   double transient_strain = 0.0;  // removed as start-up
   double averaged_strain = 0.0;   // stationary window
@@ -110,18 +102,23 @@ struct Snapshot {
   std::vector<Vec3> position;  // label order, in the cell
 };
 
-struct ShearResult {
+/// What every sampled run yields: its history, how it ended and its cost.
+struct SampledRun {
   TimeSeries series;
   std::vector<Snapshot> snapshots;
-  ShearSummary summary;
   ShearCounters counters;
   bool converged = false;
   std::string stop_reason;
   double seconds = 0.0;
 };
 
+/// A steady-shear (or quasi-static) run: the sampled run and its steady-state summary.
+struct ShearResult : SampledRun {
+  ShearSummary summary;
+};
+
 struct ShearProgress {
-  double strain;  // sheared so far
+  double strain;  // sheared so far (under a drive: time run so far)
   double max_strain;
   double worst_relative_error;  // at the last check (∞ before the first)
 };

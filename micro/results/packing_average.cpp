@@ -26,7 +26,12 @@ MeanAndError mean_of(const std::vector<double>& values) {
   return {mean, std::sqrt(squares / (k - 1.0) / k)};
 }
 
-// Mean over the runs, with the two errors of AveragedObservable.
+bool same(double a, double b) {
+  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+}
+
+}  // namespace
+
 AveragedObservable average(const std::string& name, const std::vector<double>& means,
                            const std::vector<double>& errors) {
   double within2 = 0.0;
@@ -35,11 +40,17 @@ AveragedObservable average(const std::string& name, const std::vector<double>& m
   return {name, m.mean, std::sqrt(within2) / static_cast<double>(means.size()), m.error};
 }
 
-bool same(double a, double b) {
-  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+void require_distinct_packings(const std::vector<std::filesystem::path>& files,
+                               const std::vector<std::uint64_t>& fingerprints) {
+  for (std::size_t i = 0; i < files.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (fingerprints[i] == fingerprints[j]) {
+        throw InputError(fmt::format(
+            "'{}' and '{}' start from the same packing (one run given twice, or a copy of it): "
+            "averaging them would count one packing twice; average runs of different packings",
+            files[j].string(), files[i].string()));
+      }
 }
-
-}  // namespace
 
 const AveragedObservable& PackingAverage::operator[](const std::string& name) const {
   for (const auto& o : observables)
@@ -62,14 +73,13 @@ PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) 
     }
   }
 
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    for (std::size_t j = 0; j < i; ++j)
-      if (runs[i].packing_fingerprint == runs[j].packing_fingerprint) {
-        throw InputError(fmt::format(
-            "'{}' and '{}' start from the same packing (one run given twice, or a copy of it): "
-            "averaging them would count one packing twice; average runs of different packings",
-            runs[j].file.string(), runs[i].file.string()));
-      }
+  std::vector<std::filesystem::path> files;
+  std::vector<std::uint64_t> fingerprints;
+  for (const auto& r : runs) {
+    files.push_back(r.file);
+    fingerprints.push_back(r.packing_fingerprint);
+  }
+  require_distinct_packings(files, fingerprints);
 
   PackingAverage a;
   a.runs = runs.size();
@@ -96,7 +106,8 @@ PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) 
     a.observables.push_back(average(first.observables[q].name, means, errors));
   }
 
-  const bool structure = std::all_of(runs.begin(), runs.end(), [](const auto& r) { return r.f_m.has_value(); });
+  const bool structure =
+      std::all_of(runs.begin(), runs.end(), [](const auto& r) { return r.f_m.has_value(); });
   if (structure) {
     std::vector<double> r_m, r_m_error, f_m, f_m_error;
     for (const auto& r : runs) {

@@ -9,6 +9,8 @@
 // is the larger of the two.
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +38,16 @@ struct PackingAverage {
 
   const AveragedObservable& operator[](const std::string& name) const;
 };
+
+/// The mean over runs of one observable, with `within` from the runs' own
+/// errors and `between` from the scatter of their means.
+AveragedObservable average(const std::string& name, const std::vector<double>& means,
+                           const std::vector<double>& errors);
+
+/// InputError if two runs (files) start from the same packing (equal
+/// fingerprints): averaging them would count one packing twice.
+void require_distinct_packings(const std::vector<std::filesystem::path>& files,
+                               const std::vector<std::uint64_t>& fingerprints);
 
 /// Throws InputError unless the runs share γ̃, φ and N and start from
 /// different packings (one run given twice, or a copy of it, would count one

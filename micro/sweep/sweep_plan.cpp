@@ -22,12 +22,13 @@ std::vector<double> decades(int first, int last, int per_decade) {
 
 const std::vector<double> kPaperVolumeFractions = {0.70, 0.75, 0.80, 0.85, 0.90};
 
-// Cost estimates of the cases, in seconds of one core per 5 strain: each
-// scheme's own (IntegratorTraits), quasi-static ∝ Δγ^-0.75; growing like N for
-// the explicit scheme and like N^1.35 for the minimisers (docs/sweeps.md
-// measures all of it). The estimates order the work, split it over the workers
-// (longest first) and apportion the time left, so a factor 2 is harmless; a
-// wrong scheme (an explicit estimate for an implicit run) is not.
+// The quasi-static case's cost (rate_cost's units), ∝ Δγ^-0.75 (docs/sweeps.md).
+double quasi_static_cost(std::size_t particles, double strain_step) {
+  return 400.0 * minimiser_scale(particles) * std::pow(strain_step / 2e-4, -0.75);
+}
+
+}  // namespace
+
 double minimiser_scale(std::size_t particles) {
   return std::pow(static_cast<double>(particles) / 1000.0, 1.35);
 }
@@ -40,20 +41,14 @@ double rate_cost(std::size_t particles, double rate, const std::string& scheme) 
   return t.seconds_at_reference * size * std::pow(rate / 1e-5, t.rate_exponent);
 }
 
-double quasi_static_cost(std::size_t particles, double strain_step) {
-  return 400.0 * minimiser_scale(particles) * std::pow(strain_step / 2e-4, -0.75);
-}
-
-void require_sorted_unique(std::vector<double>& values, const char* entry) {
+void require_sorted_unique(std::vector<double>& values, const char* entry, const char* context) {
   std::sort(values.begin(), values.end());
   const auto twin = std::adjacent_find(values.begin(), values.end(), [](double a, double b) {
     return std::abs(a - b) <= 1e-9 * std::abs(b);
   });
   if (twin != values.end())
-    throw InputError(fmt::format("sweep: '{}' lists {} twice", entry, *twin));
+    throw InputError(fmt::format("{}: '{}' lists {} twice", context, entry, *twin));
 }
-
-}  // namespace
 
 const std::vector<SweepPreset>& sweep_presets() {
   // Run lengths: fast and standard shear until σ, N1 and N2 are known to the
@@ -121,8 +116,8 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
         "sweep: preset 'custom' needs 'particles', 'volume fractions', 'gamma dot tildes' and "
         "'packings' in subsection 'sweep'");
 
-  require_sorted_unique(plan.volume_fractions, "volume fractions");
-  require_sorted_unique(plan.gamma_tildes, "gamma dot tildes");
+  require_sorted_unique(plan.volume_fractions, "volume fractions", "sweep");
+  require_sorted_unique(plan.gamma_tildes, "gamma dot tildes", "sweep");
   for (double phi : plan.volume_fractions)
     if (!(phi >= 0.64 && phi <= 0.95))
       throw InputError(fmt::format("sweep: volume fraction {} outside [0.64, 0.95]", phi));

@@ -90,6 +90,21 @@ struct SweepPlan {
   std::filesystem::path directory, table_csv, packing_table_csv, table_h5;
 };
 
+// Cost estimates of the cases, in seconds of one core per 5 strain: each
+// scheme's own (IntegratorTraits), growing like N for the explicit scheme and
+// like N^1.35 for the minimisers (docs/sweeps.md measures it). The estimates
+// order the work, split it over the workers (longest first) and apportion the
+// time left, so a factor 2 is harmless; a wrong scheme (an explicit estimate
+// for an implicit run) is not.
+/// The size factor of the minimisers, (N/1000)^1.35.
+double minimiser_scale(std::size_t particles);
+/// A case of N particles sheared at γ̃ `rate` by `scheme` (`auto` resolved here).
+double rate_cost(std::size_t particles, double rate, const std::string& scheme);
+
+/// Sorts `values` and throws InputError "<context>: '<entry>' lists x twice"
+/// for two values equal to 1e-9.
+void require_sorted_unique(std::vector<double>& values, const char* entry, const char* context);
+
 /// Resolves the preset, checks the lists (φ in [0.64, 0.95], γ̃ in
 /// [1e-14, 0.1], no duplicates) and the quasi-static strain step (in
 /// (0, 0.01]), and names every file. Throws InputError naming the entry.

@@ -70,7 +70,7 @@ TEST(MicroParameterFileFuzz, RefusesOrReadsEveryMutatedSweepFile) {
   const auto file = dir / "sweep.prm";
   const std::vector<std::string> seeds = {case_file("sweep_fast_two_packings.prm"),
                                           case_file("sweep_fast_low_rates.prm"),
-                                          parameter_template(true)};
+                                          parameter_template(TemplateKind::sweep)};
   fuzz_text(seeds, 8, 300, [&](const std::string& text, const std::string& input) {
     write_text(file, text);
     return read_and_check([&] { return read_sweep_file(file); },

@@ -92,7 +92,7 @@ Solved solve_from(ContactSystem& system, std::vector<Vec3> guess) {
   EhdDrag drag({.tolerance = kTolerance});
   const std::vector<double> zeta = friction_of(system.particles());
   Solved s{std::move(guess), {}};
-  s.stats = drag.solve(field.contacts, kGammaTilde, zeta, field.force, s.v);
+  s.stats = drag.solve(field.contacts, kGammaTilde, 1.0, zeta, field.force, s.v);
   return s;
 }
 
@@ -134,7 +134,7 @@ TEST(EhdDrag, ImplicitVelocitiesSatisfyTheForceBalance) {
   EhdDrag engine({.tolerance = kTolerance});
   std::vector<Vec3> engine_drag(n, Vec3::Zero());
   const Eigen::Matrix3d virial =
-      engine.virial(field.contacts, kGammaTilde, s.v, engine_drag).total();
+      engine.virial(field.contacts, kGammaTilde, 1.0, s.v, engine_drag).total();
   const double drag_scale = max_norm(drag);
   for (std::size_t a = 0; a < n; ++a) {
     EXPECT_LE((engine_drag[a] - drag[a]).norm(), 1e-12 * drag_scale) << "particle " << a;
@@ -229,7 +229,7 @@ TEST_P(DragCoefficient, FollowsTheSpecFormulaOnEachBranch) {
 
   EhdDrag engine({});
   std::vector<Vec3> drag(2, Vec3::Zero());
-  engine.virial(c, kGammaTilde, v, drag);
+  engine.virial(c, kGammaTilde, 1.0, v, drag);
 
   // Spec, written out for the pair (i = c.i[0], j = c.j[0]):
   const auto [cc, nn] = seth2011_branch(eps);
@@ -259,7 +259,7 @@ TEST(EhdDrag, ZeroWithoutTangentialVelocity) {
   ASSERT_EQ(c.size(), 1u);
   std::vector<Vec3> v = {Vec3(0.5, 0, 0), Vec3(-0.5, 0, 0)};
   std::vector<Vec3> drag(2, Vec3::Zero());
-  const Eigen::Matrix3d virial = EhdDrag({}).virial(c, kGammaTilde, v, drag).total();
+  const Eigen::Matrix3d virial = EhdDrag({}).virial(c, kGammaTilde, 1.0, v, drag).total();
   EXPECT_EQ(drag[0], Vec3::Zero());
   EXPECT_EQ(drag[1], Vec3::Zero());
   EXPECT_TRUE((virial.array() == 0.0).all());
@@ -330,7 +330,7 @@ TEST(EhdDrag, ConvergesOnAStronglyUnbalancedConfiguration) {
   const std::vector<double> zeta = friction_of(system.particles(), gamma_tilde, mobility);
   EhdDrag drag({});  // default tolerance 1e-6
   std::vector<Vec3> v(system.size(), Vec3::Zero());
-  ASSERT_NO_THROW(drag.solve(field.contacts, gamma_tilde, zeta, field.force, v));
+  ASSERT_NO_THROW(drag.solve(field.contacts, gamma_tilde, 1.0, zeta, field.force, v));
   const std::vector<Vec3> f = spec_drag_per_particle(field.contacts, gamma_tilde, v);
   const double scale = std::max(1.0, max_norm(v));
   for (std::size_t a = 0; a < v.size(); ++a) {
@@ -364,7 +364,7 @@ TEST(EhdDrag, ConvergesOnEveryHardConfiguration) {
       EhdDrag drag({});
       std::vector<Vec3> v(system.size(), Vec3::Zero());
       VelocitySolveStats stats;
-      ASSERT_NO_THROW(stats = drag.solve(field.contacts, gamma_tilde, zeta, field.force, v))
+      ASSERT_NO_THROW(stats = drag.solve(field.contacts, gamma_tilde, 1.0, zeta, field.force, v))
           << "seed " << seed << ", f_r " << mobility;
       newton += stats.newton_iterations;
     }
@@ -412,7 +412,7 @@ TEST(EhdFilm, TangentialFilmLeavesTheApproachFreeAndFullFilmDragsIt) {
   for (FilmVelocity film : {FilmVelocity::tangential, FilmVelocity::full}) {
     EhdDrag drag({.film = {film}, .tolerance = 1e-12});
     std::vector<Vec3> v(2, Vec3::Zero());
-    drag.solve(field.contacts, kGammaTilde, zeta, field.force, v);
+    drag.solve(field.contacts, kGammaTilde, 1.0, zeta, field.force, v);
     const double root = (std::sqrt(p.a * p.a + 2.0 * p.zeta * p.force) - p.a) / p.zeta;
     const double expected = film == FilmVelocity::full ? 0.5 * root * root : p.force / p.zeta;
     EXPECT_NEAR(v[p.i].dot(p.n) / expected, 1.0, 1e-9) << to_string(film);
@@ -434,8 +434,8 @@ TEST(EhdFilm, NonaffineFilmIgnoresTheAffineSliding) {
   const double sign = dy > 0 ? 1.0 : -1.0;
   const std::vector<Vec3> at_rest(2, Vec3::Zero());
   std::vector<Vec3> paper(2, Vec3::Zero()), nonaffine(2, Vec3::Zero());
-  EhdDrag({}).virial(c, kGammaTilde, at_rest, paper);
-  EhdDrag({.film = {FilmVelocity::nonaffine}}).virial(c, kGammaTilde, at_rest, nonaffine);
+  EhdDrag({}).virial(c, kGammaTilde, 1.0, at_rest, paper);
+  EhdDrag({.film = {FilmVelocity::nonaffine}}).virial(c, kGammaTilde, 1.0, at_rest, nonaffine);
   EXPECT_LT(sign * paper[i].x(), 0.0);  // held back against its affine sliding
   EXPECT_EQ(nonaffine[i], Vec3::Zero());
   // sliding faster than the flow by 0.3: the nonaffine film drags 0.3 alone,
@@ -443,7 +443,7 @@ TEST(EhdFilm, NonaffineFilmIgnoresTheAffineSliding) {
   std::vector<Vec3> moving(2, Vec3::Zero());
   moving[i] = Vec3(0.3 * sign, 0, 0);
   std::vector<Vec3> drag(2, Vec3::Zero());
-  EhdDrag({.film = {FilmVelocity::nonaffine}}).virial(c, kGammaTilde, moving, drag);
+  EhdDrag({.film = {FilmVelocity::nonaffine}}).virial(c, kGammaTilde, 1.0, moving, drag);
   const std::vector<Vec3> spec = spec_drag_per_particle(c, kGammaTilde, moving);
   const double d = std::abs(dy);
   EXPECT_NEAR(drag[i].x() / paper[i].x(), std::sqrt(0.3 / d), 1e-12);
@@ -472,7 +472,8 @@ TEST(EhdFilm, ImplicitStepBalancesTheFullFilmDrag) {
   const double h = 1e-3;
   FrozenDrag drag;
   const std::vector<double> zeta(2, p.zeta);
-  freeze_drag(p.system.forces().contacts, kGammaTilde, {.film = {FilmVelocity::full}}, zeta, drag);
+  freeze_drag(p.system.forces().contacts, kGammaTilde, 1.0, {.film = {FilmVelocity::full}}, zeta,
+              drag);
   EXPECT_NEAR(drag.coefficient[0] / p.a, 1.0, 1e-12);  // the frozen a is the spec's
   const std::vector<double> proximal(2, p.zeta / h);
   std::vector<Vec3> u(2, Vec3::Zero());
@@ -507,7 +508,7 @@ TEST(StokesNeighbours, PairDashpotResistsRelativeMotionOnly) {
   settings.stokes = {StokesReference::neighbours, kappa};
   EhdDrag drag(settings);
   std::vector<Vec3> v(2, Vec3::Zero());
-  drag.solve(field.contacts, kGammaTilde, zeta, field.force, v);
+  drag.solve(field.contacts, kGammaTilde, 1.0, zeta, field.force, v);
   const double expected = p.force / (kappa * p.zeta + 2.0 * (1.0 - kappa) * p.zeta);
   EXPECT_NEAR(v[p.i].dot(p.n) / expected, 1.0, 1e-9);
   EXPECT_NEAR(v[p.j].dot(p.n) / -expected, 1.0, 1e-9);
@@ -515,8 +516,8 @@ TEST(StokesNeighbours, PairDashpotResistsRelativeMotionOnly) {
   // force of the pair at v + U is that at v, whatever U.
   std::vector<Vec3> moved = v, force_v(2, Vec3::Zero()), force_moved(2, Vec3::Zero());
   for (Vec3& x : moved) x += Vec3(0.7, -0.2, 0.4);
-  drag.virial(field.contacts, kGammaTilde, v, force_v, zeta);
-  drag.virial(field.contacts, kGammaTilde, moved, force_moved, zeta);
+  drag.virial(field.contacts, kGammaTilde, 1.0, v, force_v, zeta);
+  drag.virial(field.contacts, kGammaTilde, 1.0, moved, force_moved, zeta);
   EXPECT_LT((force_v[p.i] - force_moved[p.i]).norm(), 1e-15 * p.force);
 }
 
@@ -534,7 +535,7 @@ TEST(StokesNeighbours, ImplicitVelocitiesSatisfyTheForceBalance) {
   settings.stokes = {StokesReference::neighbours, kappa};
   EhdDrag drag(settings);
   std::vector<Vec3> v(n, Vec3::Zero());
-  drag.solve(c, kGammaTilde, zeta, field.force, v);
+  drag.solve(c, kGammaTilde, 1.0, zeta, field.force, v);
 
   std::vector<double> z(n, 0.0);
   for (std::size_t k = 0; k < c.size(); ++k) z[c.i[k]] += 1, z[c.j[k]] += 1;
@@ -556,7 +557,7 @@ TEST(StokesNeighbours, ImplicitVelocitiesSatisfyTheForceBalance) {
   }
   EXPECT_LE(worst, kTolerance);
   // The virial in its two parts: the films' (the paper's σ^v) and the dashpots'.
-  const DissipativeVirial virial = drag.virial(c, kGammaTilde, v, {}, zeta);
+  const DissipativeVirial virial = drag.virial(c, kGammaTilde, 1.0, v, {}, zeta);
   EXPECT_LE((virial.film - expected_film).cwiseAbs().maxCoeff(),
             1e-12 * expected_film.cwiseAbs().maxCoeff());
   EXPECT_LE((virial.friction - expected_friction).cwiseAbs().maxCoeff(),
@@ -573,7 +574,7 @@ TEST(StokesNeighbours, ImplicitStepBalancesThePairDashpot) {
   settings.stokes = {StokesReference::neighbours, kappa};
   const std::vector<double> zeta(2, p.zeta);
   FrozenDrag drag;
-  freeze_drag(p.system.forces().contacts, kGammaTilde, settings, zeta, drag);
+  freeze_drag(p.system.forces().contacts, kGammaTilde, 1.0, settings, zeta, drag);
   ASSERT_EQ(drag.dashpot.size(), 1u);
   EXPECT_NEAR(drag.dashpot[0] / ((1.0 - kappa) * p.zeta), 1.0, 1e-14);
   const std::vector<double> proximal(2, kappa * p.zeta / h);

@@ -15,12 +15,15 @@
 // the base point extrapolated from x_{n−1}, x_n and a step 2h/3-like weight),
 // but it is not energy-decreasing, and its extrapolation runs through plastic
 // events; since σ is already accurate at loose tolerances (docs/integrators.md
-// measures it), order 1 with a robust nonlinear solver is the chosen trade. Runge–Kutta–Chebyshev (stabilised explicit) would still need
-// ∝ √(λh) stages per step, a cost per strain growing like γ̃^{-1/2}.
+// measures it), order 1 with a robust nonlinear solver is the chosen trade. Runge–Kutta–Chebyshev
+// (stabilised explicit) would still need ∝ √(λh) stages per step, a cost per strain growing like
+// γ̃^{-1/2}.
 //
 // Step. From x_n with velocities v_n (the last step's u/h): x⁰ = x_n sheared
-// affinely by h, plus ½h²v_{n,y} e_x (the affine advection of the particles'
-// own y-motion over the step, to second order); then u = argmin Φ, starting
+// affinely by the drive's strain increment Δγ over h (h itself in steady
+// shear), plus ½hΔγ v_{n,y} e_x (the affine advection of the particles' own
+// y-motion over the step, to second order); the frozen drag sees the affine
+// flow's rate at the step's end (shear_drive.h); then u = argmin Φ, starting
 // from the guess u = h v_n; x_{n+1} = x⁰ + u, and the flow is evaluated there
 // (forces, EHD velocities, stress), which the caller and the next step read.
 //
@@ -81,7 +84,7 @@ class BackwardEuler final : public Integrator {
       // List valid for the predicted move (twice the explicit predictor, at
       // least 0.02 R); a solve that leaves it restarts with a larger margin.
       const double predicted = std::min(std::max(2.0 * h * flow.max_speed(), 0.02), widest);
-      system.ensure_neighbours(std::max(predicted, list_margin), flow.strain() + h);
+      system.ensure_neighbours(std::max(predicted, list_margin), flow.strain_after(h));
       flow.save(before_);
       const std::size_t n = system.size();
       const auto& p = system.particles();
@@ -94,20 +97,22 @@ class BackwardEuler final : public Integrator {
       drag.clear();
       if (model.drag.enabled || model.drag.stokes.has_pairs()) {
         const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
-        freeze_drag(field.contacts, gamma_tilde, model.drag, friction_, drag);
+        freeze_drag(field.contacts, gamma_tilde, flow.drive().rate(flow.time() + h), model.drag,
+                    friction_, drag);
       }
       proximal_.resize(n);
       velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
       guess_.resize(n);
       shift_.resize(n);
+      const double strain_step = flow.strain_increment(h);
       for (std::size_t a = 0; a < n; ++a) {
         proximal_[a] = model.drag.stokes.reservoir(friction_[a]) / h;
         guess_[a] = h * velocity_[a];
-        shift_[a] = Vec3(0.5 * h * velocity_[a].y(), 0.0, 0.0);
+        shift_[a] = Vec3(0.5 * strain_step * velocity_[a].y(), 0.0, 0.0);
       }
-      // x⁰: affine shear by h plus the second-order advection term.
-      system.move(h, shift_, /*affine=*/true);
-      system.advance_strain(h);
+      // x⁰: affine shear by Δγ plus the second-order advection term.
+      flow.advance_affinely(h);
+      system.move(h, shift_);
       // The solve's residual g moves a particle by at most g h/ζ (the proximal
       // term bounds the Hessian below): 1 % of the step tolerance is enough.
       IncrementalSettings settings = minimiser_.settings();
