@@ -15,6 +15,10 @@ namespace {
 // Fewest samples per cycle: the fifth harmonic needs more than ten.
 constexpr unsigned kMinSamplesPerCycle = 16;
 
+// The implicit step's force residual, relative to the mean contact force,
+// need not go below a few hundred roundings of a force sum.
+constexpr double kFinestSolverTolerance = 1e-13;
+
 // Stops when the cycles are periodic and G′, G″ are known to the target.
 class PeriodicRule final : public StopRule {
  public:
@@ -107,7 +111,9 @@ std::vector<std::vector<double>> cycle_responses(const TimeSeries& series,
 IntegratorSpec oscillation_integrator(const IntegratorSpec& spec,
                                       const OscillationProtocol& protocol) {
   IntegratorSpec resolved = spec.resolved_for(protocol.peak_gamma_tilde());
-  resolved.tolerance *= std::min(1.0, protocol.amplitude);
+  const double scale = std::min(1.0, protocol.amplitude);
+  resolved.tolerance *= scale;
+  resolved.solver_tolerance = std::max(resolved.solver_tolerance * scale, kFinestSolverTolerance);
   return resolved;
 }
 

@@ -52,9 +52,10 @@ std::vector<std::vector<double>> cycle_responses(const TimeSeries& series,
                                                  const OscillationProtocol& protocol);
 
 /// The integrator of an oscillatory run: `spec` resolved for the peak rate,
-/// its position tolerance (units of R) scaled by min(1, γ0) so that the
-/// displacements of a small-amplitude cycle, ∝ γ0 R, are resolved as finely
-/// as those of a unit strain.
+/// its position tolerance (units of R) and the implicit step's force residual
+/// (relative to the mean contact force) scaled by min(1, γ0), so that the
+/// displacements and force changes of a small-amplitude cycle, ∝ γ0, are
+/// resolved as finely as those of a unit strain.
 IntegratorSpec oscillation_integrator(const IntegratorSpec& spec,
                                       const OscillationProtocol& protocol);
 
