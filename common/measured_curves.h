@@ -1,5 +1,6 @@
 // Measured rheometer data (instrument exports): flow curves for `bridge
-// rescale`, torques for `macro compare`. One reader for both.
+// rescale`, torques for `macro compare`, amplitude sweeps for `bridge
+// amplitude-sweep`. One reader for all.
 //
 // Layouts read (the shapes of ../shared/data/rheometry/ and common exports),
 // one file each in common/measured/ (layout.h), tried in the order of
@@ -15,6 +16,10 @@
 //         torque            "torque"
 //         angular velocity  "angular velocity", "rotation rate", "angular speed", "omega"
 //         normal force      "normal force", "axial force"
+//         storage modulus   "storage modulus", "G'"
+//         loss modulus      "loss modulus", "G''"
+//         strain amplitude  "oscillation strain", "strain amplitude", "strain"
+//         frequency         "angular frequency" (of an oscillation)
 //         curve label       "sample", "sample id", "curve", "label" (optional: groups rows)
 //     other columns (viscosity, time, temperature, ...) are ignored. Units come
 //     in brackets, "Stress [Pa]", or as a last underscore-separated part,
@@ -22,8 +27,9 @@
 // Units: rates in 1/s (also s^-1, s-1, 1/min); stresses in Pa, kPa, MPa or
 // mPa; torques in N.m, mN.m, µN.m, nN.m (also written Nm, N m, N·m); angular
 // velocities in rad/s or rpm; forces in N, mN or g (gram-force, as rheometers
-// export "Axial force [g]"). Headers of rates and stresses without units take
-// the `fallback` units (the command line's --rate-unit, --stress-unit);
+// export "Axial force [g]"); moduli as stresses; strain amplitudes in % or 1;
+// oscillation frequencies in rad/s or Hz (a cycle per second is 2π rad/s). Headers of rates and
+// stresses without units take the `fallback` units (the command line's --rate-unit, --stress-unit);
 // without those, and for every other quantity, they are refused. Reduced units
 // (E*, 1) are refused: these are measured, dimensional data. Values must be
 // finite and positive (N1 and normal force may take any sign); each curve
@@ -43,11 +49,24 @@ struct FallbackUnits {
   std::string rate, stress;  // empty: none given
 };
 
-/// The quantities a column may hold; values are stored in SI units.
-enum class Measured { shear_rate, stress, N1, torque, angular_velocity, normal_force };
+/// The quantities a column may hold; values are stored in SI units (a strain
+/// as a fraction, a frequency in rad/s).
+enum class Measured {
+  shear_rate,
+  stress,
+  N1,
+  torque,
+  angular_velocity,
+  normal_force,
+  storage_modulus,
+  loss_modulus,
+  strain_amplitude,
+  angular_frequency
+};
 
 /// One measured curve, every recognised column of it (SI units), sorted by its
-/// abscissa: the shear rate, or the angular velocity when there is no rate.
+/// abscissa: the shear rate, or the angular velocity when there is no rate, or
+/// the strain amplitude when there is neither (an amplitude sweep).
 struct RheometerCurve {
   std::string label;
   std::map<Measured, std::vector<double>> values;
@@ -58,7 +77,8 @@ struct RheometerCurve {
 };
 
 /// Every curve of the file; InputError unless each has an abscissa (shear
-/// rate or angular velocity) and an ordinate (stress or torque).
+/// rate, angular velocity or strain amplitude) and an ordinate (stress,
+/// torque or storage modulus).
 std::vector<RheometerCurve> read_rheometer_curves(const CsvTable& csv,
                                                   const FallbackUnits& fallback);
 
@@ -72,6 +92,19 @@ struct MeasuredCurve {
 
 /// The flow curves of the file; InputError unless it has shear rate and stress.
 std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv, const FallbackUnits& fallback);
+
+/// An amplitude sweep: G′ and G″ against the strain amplitude, at a frequency.
+struct MeasuredAmplitudeSweep {
+  std::string label;
+  std::vector<double> strain;               // amplitude γ0 [1], increasing
+  std::vector<double> storage;              // G′ [Pa]
+  std::vector<double> loss;                 // G″ [Pa]
+  std::optional<double> angular_frequency;  // [rad/s], when the file gives one for all points
+};
+
+/// The amplitude sweeps of the file; InputError unless it has strain
+/// amplitude, storage and loss modulus, or its frequency varies along a curve.
+std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const CsvTable& csv);
 
 /// SI factor of a rate unit (1/s → 1, 1/min → 1/60); InputError naming `what` otherwise.
 double rate_factor(const std::string& units, const std::string& what);

@@ -1,5 +1,7 @@
 #include "bridge/app/commands.h"
 
+#include "bridge/app/command_support.h"
+
 #include <fmt/chrono.h>
 #include <fmt/format.h>
 
@@ -18,26 +20,6 @@
 #include "common/version.h"
 
 namespace softglass::bridge {
-
-namespace {
-
-std::vector<std::string> provenance(const std::string& title, const std::string& command_line) {
-  return {title, "command:  " + command_line,
-          fmt::format("software: softglass {} ({}), {:%Y-%m-%d %H:%M:%S} UTC", kVersion,
-                      kGitRevision, fmt::gmtime(std::time(nullptr)))};
-}
-
-// A result file beside `main`: law.prm → law_phi.csv.
-std::filesystem::path beside(const std::filesystem::path& main, const std::string& suffix) {
-  return main.parent_path() / (main.stem().string() + suffix);
-}
-
-void write(AtomicOutput& out, const std::string& text) {
-  write_file(out.temporary_path(), out.final_path().string(),
-                  [&](std::ostream& f) { f << text; });
-}
-
-}  // namespace
 
 void fit_command(const FitOptions& o, const std::string& command_line) {
   // Refuse early, before any work, if a result exists.
@@ -58,6 +40,11 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
                     [&](std::size_t done) { bar.update(static_cast<double>(done)); });
   bar.finish();
   print_fit_report(a, o.table.string());
+  std::optional<AmplitudeSweepLaw> amplitude_sweep;
+  if (!o.oscillation.empty()) {
+    amplitude_sweep = make_amplitude_sweep_law(
+        read_oscillation_table(CsvTable::read(o.oscillation)), o.oscillation_frequency);
+  }
 
   std::vector<std::string> lines =
       provenance("softglass bridge fit: the flow laws of a particle-engine sweep", command_line);
@@ -71,7 +58,14 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
   for (const std::string& c : table.comments) lines.push_back("input |   " + c);
   lines.push_back("errors:   " + a.method);
   for (const std::string& w : a.warnings) lines.push_back("WARNING:  " + w);
-  write(law_out, law_text(make_law(a, lines)));
+  Law law = make_law(a, lines);
+  if (amplitude_sweep) {
+    law.provenance.push_back(fmt::format("amplitude sweep: {} at omega~ = {:.6g}",
+                                         o.oscillation.string(), amplitude_sweep->frequency));
+    law.amplitude_sweep = std::move(amplitude_sweep);
+    print_amplitude_sweep_report(law);
+  }
+  write(law_out, law_text(law));
   write(phi_out, phi_table(a, lines));
   write(points_out, points_table(a, lines));
   write(constants_out, constants_table(a, lines));
@@ -84,41 +78,29 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
   std::optional<AtomicOutput> out;
   if (!o.output.empty()) out.emplace(o.output, o.force);
   const Law law = read_law_file(o.law);
-  MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
   std::vector<std::string> lines = provenance(
       "softglass bridge material: a Herschel-Bulkley material from a law file", command_line);
   lines.push_back("law:      " + o.law.string());
-  if (o.modulus) {
-    request.modulus = *o.modulus;
-  } else if (o.plateau_modulus) {
-    const MaterialValue e_star =
-        contact_modulus_from_plateau(law, o.phi, *o.plateau_modulus, o.extrapolate);
-    request.modulus = e_star.value;
-    fmt::print(
-        "E*       {:.6g} Pa ± {:.2g} % = G' / (G0/E*)(phi): every stress below carries this "
-        "error too\n",
-        e_star.value, 100.0 * e_star.error() / e_star.value);
-    lines.push_back(fmt::format(
-        "E* = G' / (G0/E*)(phi) = {:.6g} Pa / {:.6g} = {:.6g} Pa +- {:.2g} % (the law's G0/E* at "
-        "phi; every stress below scales with E*, so this error adds to theirs)",
-        *o.plateau_modulus, *o.plateau_modulus / e_star.value, e_star.value,
-        100.0 * e_star.error() / e_star.value));
-  } else {
-    require(*o.interfacial_tension > 0 && *o.radius > 0,
-            "the interfacial tension and the radius must be positive");
-    request.modulus = 9.92 * *o.interfacial_tension / *o.radius;
-    lines.push_back(
-        fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m (Seth et al. "
-                    "2006, emulsions)",
-                    *o.interfacial_tension, *o.radius));
-  }
+  MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
+  request.modulus = contact_modulus(o.source, law, o.phi, o.extrapolate, lines);
   const Material material = make_material(law, request);
+  std::optional<AmplitudeSweepPrediction> sweep;
+  if (sweep_covers(law, o.phi)) {
+    const AmplitudeSweepPrediction& p = sweep.emplace(predict_amplitude_sweep(law, request));
+    lines.push_back(fmt::format(
+        "amplitude sweep at omega = {:.4g} rad/s: G' plateau {:.4g} Pa, G'' {:.4g} Pa at gamma0 = "
+        "{:.3g}; softening strain {:.4g}, crossover strain {:.4g} (0: not reached); `bridge "
+        "amplitude-sweep` gives the whole sweep",
+        p.angular_frequency, p.plateau_storage.value, p.plateau_loss.value, p.amplitudes.front(),
+        p.softening_strain.value, p.crossover_strain.value));
+  }
   const std::string text = material_text(material, lines);
   if (!out) {
     fmt::print("{}", text);
     return;
   }
   print_material_report(material);
+  if (sweep) print_amplitude_sweep_prediction(*sweep);
   write(*out, text);
   out->commit();
   fmt::print("written  {}\n", out->final_path().string());

@@ -13,8 +13,10 @@
 namespace softglass::bridge {
 
 struct FitOptions {
-  std::filesystem::path table, packings;  // packings: the per-packing companion (optional)
-  std::filesystem::path structure;        // companion structure table with f_m (optional)
+  std::filesystem::path table, packings;        // packings: the per-packing companion (optional)
+  std::filesystem::path structure;              // companion structure table with f_m (optional)
+  std::filesystem::path oscillation;            // amplitude sweeps of `micro oscillate` (optional)
+  std::optional<double> oscillation_frequency;  // which of its frequencies (ω̃)
   std::filesystem::path output = "law.prm";
   std::size_t replicates = 1000;
   std::uint64_t seed = 1;
@@ -25,17 +27,38 @@ struct FitOptions {
 /// (<stem>_phi.csv, <stem>_points.csv, <stem>_constants.csv) beside it.
 void fit_command(const FitOptions& options, const std::string& command_line);
 
+/// Where a material's E* comes from: one of these.
+struct ModulusSource {
+  std::optional<double> modulus;                      // E* [Pa], or
+  std::optional<double> interfacial_tension, radius;  // γ_i [N/m] and R [m]: E* = 9.92 γ_i/R, or
+  std::optional<double> plateau_modulus;              // a measured G′ plateau [Pa] (see below)
+};
+
 struct MaterialOptions {
   std::filesystem::path law, output;  // output empty: standard output
   double phi = 0.0, viscosity = 0.0;
-  std::optional<double> modulus;                      // E* [Pa], or
-  std::optional<double> interfacial_tension, radius;  // γ_i [N/m] and R [m]: E* = 9.92 γ_i/R
-  std::optional<double> plateau_modulus;              // G' [Pa]: E* = G'/(G0/E*)(phi) from the law
+  ModulusSource source;
   bool extrapolate = false, force = false;
 };
 
-/// Writes the material fragment for (φ, E*, η_s) from a law file.
+/// Writes the material fragment for (φ, E*, η_s) from a law file. With a
+/// measured G′ plateau, E* = G′/(G′ plateau/E*)(φ) from the law's amplitude
+/// sweep when it has one covering φ, else G′/(G0/E*)(φ) from its static G0.
 void material_command(const MaterialOptions& options, const std::string& command_line);
+
+struct AmplitudeSweepOptions {
+  std::filesystem::path law, data;                   // data: a measured amplitude sweep (optional)
+  std::filesystem::path output = "amplitude_sweep";  // folder
+  double phi = 0.0, viscosity = 0.0;
+  ModulusSource source;
+  std::string sample;  // the curve of `data` when it holds several
+  bool extrapolate = false, force = false;
+};
+
+/// The material's amplitude sweep (G′, G″ against γ0, in Pa) from the law's;
+/// with measured data, the two compared point by point (errors per point and
+/// per branch, the crossover strains, an overlay plot).
+void amplitude_sweep_command(const AmplitudeSweepOptions& options, const std::string& command_line);
 
 struct RescaleOptions {
   std::filesystem::path data, law;  // law empty: the paper's constants

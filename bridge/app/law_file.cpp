@@ -8,8 +8,8 @@
 #include <set>
 #include <vector>
 
-#include "common/parameter_input.h"
 #include "common/errors.h"
+#include "common/parameter_input.h"
 
 namespace softglass::bridge {
 
@@ -58,7 +58,8 @@ struct Lists {
   const std::vector<double>& operator()(const std::string& key) const { return values.at(key); }
 };
 
-// The list `key` and its errors `key error`, one value per volume fraction each.
+// The list `key` and its errors `key error`, `expected` values each (one per
+// volume fraction, or per volume fraction and amplitude).
 std::vector<Estimate> estimates(const Lists& l, const std::string& key, std::size_t expected,
                                 const std::string& source) {
   const std::vector<double>& v = l(key);
@@ -66,13 +67,23 @@ std::vector<Estimate> estimates(const Lists& l, const std::string& key, std::siz
   for (const auto& [list, name] : {std::pair(&v, key), std::pair(&e, key + " error")}) {
     if (list->size() != expected) {
       throw InputError(
-          fmt::format("{}: '{}' has {} value(s), expected one per volume fraction ({})", source,
-                      name, list->size(), expected));
+          fmt::format("{}: '{}' has {} value(s), expected {} (one per volume fraction, or per "
+                      "volume fraction and amplitude)",
+                      source, name, list->size(), expected));
     }
   }
   std::vector<Estimate> out;
   for (std::size_t i = 0; i < v.size(); ++i) out.push_back({v[i], e[i]});
   return out;
+}
+
+// The single value `key` (no error).
+double scalar_value(const Lists& l, const std::string& key, const std::string& source) {
+  const std::vector<double>& v = l(key);
+  if (v.size() != 1)
+    throw InputError(
+        fmt::format("{}: '{}' must hold one value (it holds {})", source, key, v.size()));
+  return v[0];
 }
 
 // The single value `key` with its error; absent (both lists empty) only if
@@ -88,6 +99,28 @@ std::optional<Estimate> scalar(const Lists& l, const std::string& key, const std
                     source, key, key, v.size(), e.size()));
   }
   return Estimate{v[0], e[0]};
+}
+
+// Subsection amplitude sweep: its own volume fractions and amplitudes, the
+// moduli row by row (one row of amplitudes per volume fraction).
+AmplitudeSweepLaw read_amplitude_sweep(const Lists& l, const std::string& source) {
+  const std::string s = "amplitude sweep/";
+  AmplitudeSweepLaw a;
+  a.frequency = scalar_value(l, s + "frequency", source);
+  a.phi = l(s + "volume fractions");
+  a.amplitudes = l(s + "amplitudes");
+  const std::size_t n = a.phi.size(), m = a.amplitudes.size();
+  for (auto [rows, key] : {std::pair(&a.storage, "storage"), std::pair(&a.loss, "loss")}) {
+    const std::vector<Estimate> flat = estimates(l, s + key, n * m, source);
+    for (std::size_t i = 0; i < n; ++i)
+      rows->emplace_back(flat.begin() + static_cast<std::ptrdiff_t>(i * m),
+                         flat.begin() + static_cast<std::ptrdiff_t>((i + 1) * m));
+  }
+  a.plateau_storage = estimates(l, s + "plateau storage", n, source);
+  a.plateau_loss = estimates(l, s + "plateau loss", n, source);
+  a.softening_strain = estimates(l, s + "softening strain", n, source);
+  a.crossover_strain = estimates(l, s + "crossover strain", n, source);
+  return a;
 }
 
 }  // namespace
@@ -117,6 +150,14 @@ Law read_law_file(const std::filesystem::path& file) {
         l.declare(prm, section + "/", name, false);
     prm.leave_subsection();
   }
+  prm.enter_subsection("amplitude sweep");
+  for (const char* name :
+       {"frequency", "volume fractions", "amplitudes", "storage", "storage error", "loss",
+        "loss error", "plateau storage", "plateau storage error", "plateau loss",
+        "plateau loss error", "softening strain", "softening strain error", "crossover strain",
+        "crossover strain error"})
+    l.declare(prm, "amplitude sweep/", name, false);
+  prm.leave_subsection();
   prm.leave_subsection();
   // Mandatory entries are checked below, to name them as the user writes them.
   parse_parameter_file(prm, file, "law file");
@@ -156,6 +197,8 @@ Law read_law_file(const std::filesystem::path& file) {
     law.force->yield = estimates(l, force + "f_y", law.phi.size(), source);
     law.force->slope = estimates(l, force + "k_f", law.phi.size(), source);
   }
+  if (!l("amplitude sweep/frequency").empty())
+    law.amplitude_sweep = read_amplitude_sweep(l, source);
   validate(law, source);
   return law;
 }

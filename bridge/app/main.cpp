@@ -4,6 +4,9 @@
 //                                                 Herschel-Bulkley and universal-law fits
 //   bridge material LAW.prm --phi … --modulus … --viscosity …
 //                                                 a material fragment for the continuum
+//   bridge amplitude-sweep LAW.prm --phi … --plateau-modulus … --viscosity … [--data SWEEP.csv]
+//                                                 a material's amplitude sweep, against a measured
+//                                                 one
 //   bridge rescale DATA.csv --viscosity … (--yield-strain … | --shear-modulus … |
 //                  --law LAW.prm --phi …)
 //                                                 measured curves on the universal curve
@@ -14,6 +17,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <tuple>
 
 #include "bridge/app/commands.h"
 #include "common/command_line.h"
@@ -58,6 +62,13 @@ int main(int argc, char** argv) {
   fit_cmd->add_option("--structure", fit.structure,
                       "structure table (CSV: phi, gamma_tilde, f_m, f_m_se) for the force law, "
                       "when the flow-curve table has no f_m columns");
+  fit_cmd->add_option("--oscillation", fit.oscillation,
+                      "oscillation table of `micro oscillate` (CSV): adds the amplitude-sweep law "
+                      "(G', G'' against gamma0, plateau, softening and crossover strains)");
+  fit_cmd
+      ->add_option("--oscillation-frequency", fit.oscillation_frequency,
+                   "which frequency omega~ of the oscillation table, when it holds several")
+      ->check(positive);
   fit_cmd->add_option("-o,--output", fit.output, "law file (.prm); tables beside it")
       ->capture_default_str();
   fit_cmd->add_option("--bootstrap", fit.replicates, "bootstrap replicates")
@@ -76,20 +87,23 @@ int main(int argc, char** argv) {
   material_cmd->add_option("--phi", material.phi, "volume fraction")
       ->required()
       ->check(CLI::Range(0.0, 1.0));
-  auto* modulus = material_cmd->add_option("--modulus", material.modulus, "contact modulus E* [Pa]")
-                      ->check(positive);
+  auto* modulus =
+      material_cmd->add_option("--modulus", material.source.modulus, "contact modulus E* [Pa]")
+          ->check(positive);
   auto* tension = material_cmd
-                      ->add_option("--interfacial-tension", material.interfacial_tension,
+                      ->add_option("--interfacial-tension", material.source.interfacial_tension,
                                    "emulsions: interfacial tension gamma_i [N/m], with --radius: "
                                    "E* = 9.92 gamma_i / R")
                       ->check(positive);
-  auto* radius = material_cmd->add_option("--radius", material.radius, "mean droplet radius R [m]")
-                     ->check(positive);
+  auto* radius =
+      material_cmd->add_option("--radius", material.source.radius, "mean droplet radius R [m]")
+          ->check(positive);
   auto* plateau =
       material_cmd
-          ->add_option("--plateau-modulus", material.plateau_modulus,
+          ->add_option("--plateau-modulus", material.source.plateau_modulus,
                        "measured linear shear modulus G' [Pa] (amplitude-sweep plateau): "
-                       "E* = G' / (G0/E*)(phi) from the law")
+                       "E* = G' / (G' plateau/E*)(phi) from the law's amplitude sweep, or "
+                       "G' / (G0/E*)(phi) from its static G0 when it has none at phi")
           ->check(positive);
   tension->needs(radius);
   radius->needs(tension);
@@ -104,6 +118,51 @@ int main(int argc, char** argv) {
   material_cmd->add_flag("--extrapolate", material.extrapolate,
                          "allow phi outside the simulated range (linear extrapolation)");
   material_cmd->add_flag("-f,--force", material.force, "overwrite an existing material file");
+
+  AmplitudeSweepOptions sweep;
+  CLI::App* sweep_cmd = app.add_subcommand(
+      "amplitude-sweep",
+      "a material's amplitude sweep (G', G'' against the strain amplitude, in Pa) from a law "
+      "file's, and, with --data, compared with a measured one point by point");
+  sweep_cmd->add_option("law", sweep.law, "law file of `bridge fit --oscillation` (.prm)")
+      ->required();
+  sweep_cmd->add_option("--phi", sweep.phi, "volume fraction")
+      ->required()
+      ->check(CLI::Range(0.0, 1.0));
+  auto* sweep_modulus =
+      sweep_cmd->add_option("--modulus", sweep.source.modulus, "contact modulus E* [Pa]")
+          ->check(positive);
+  auto* sweep_plateau = sweep_cmd
+                            ->add_option("--plateau-modulus", sweep.source.plateau_modulus,
+                                         "measured G' plateau [Pa]: E* = G' / (G' plateau/E*)(phi)")
+                            ->check(positive);
+  auto* sweep_tension =
+      sweep_cmd
+          ->add_option("--interfacial-tension", sweep.source.interfacial_tension,
+                       "emulsions: gamma_i [N/m], with --radius: E* = 9.92 gamma_i / R")
+          ->check(positive);
+  auto* sweep_radius =
+      sweep_cmd->add_option("--radius", sweep.source.radius, "mean droplet radius R [m]")
+          ->check(positive);
+  sweep_tension->needs(sweep_radius);
+  sweep_radius->needs(sweep_tension);
+  sweep_modulus->excludes(sweep_tension);
+  sweep_plateau->excludes(sweep_modulus);
+  sweep_plateau->excludes(sweep_tension);
+  sweep_cmd->add_option("--viscosity", sweep.viscosity, "solvent viscosity eta_s [Pa s]")
+      ->required()
+      ->check(positive);
+  sweep_cmd->add_option("--data", sweep.data,
+                        "measured amplitude sweep (CSV: strain amplitude, storage and loss "
+                        "modulus, optionally angular frequency)");
+  sweep_cmd->add_option("--sample", sweep.sample, "the curve of --data when it holds several");
+  sweep_cmd
+      ->add_option("-o,--output", sweep.output,
+                   "folder: amplitude_sweep.csv, and with --data comparison.csv and .png")
+      ->capture_default_str();
+  sweep_cmd->add_flag("--extrapolate", sweep.extrapolate,
+                      "allow phi outside the amplitude sweep's volume fractions");
+  sweep_cmd->add_flag("-f,--force", sweep.force, "overwrite existing results");
 
   RescaleOptions rescale;
   RescaleSettings& s = rescale.settings;
@@ -164,10 +223,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    if (*material_cmd && !material.modulus && !material.interfacial_tension &&
-        !material.plateau_modulus) {
-      throw CLI::ValidationError(
-          "material: give --modulus, --plateau-modulus, or --interfacial-tension and --radius");
+    for (const auto& [cmd, source, name] :
+         {std::tuple(material_cmd, &material.source, "material"),
+          std::tuple(sweep_cmd, &sweep.source, "amplitude-sweep")}) {
+      if (*cmd && !source->modulus && !source->interfacial_tension && !source->plateau_modulus)
+        throw CLI::ValidationError(fmt::format(
+            "{}: give --modulus, --plateau-modulus, or --interfacial-tension and --radius", name));
     }
   } catch (const CLI::ParseError& e) {
     return report_command_line_error("bridge", app, e);
@@ -179,6 +240,7 @@ int main(int argc, char** argv) {
     if (*fit_cmd) fit_command(fit, command_line);
     if (*material_cmd) material_command(material, command_line);
     if (*rescale_cmd) rescale_command(rescale, command_line);
+    if (*sweep_cmd) amplitude_sweep_command(sweep, command_line);
     return int(kExitOk);
   });
 }

@@ -164,6 +164,46 @@ void print_material_report(const Material& m) {
   }
 }
 
+void print_amplitude_sweep_report(const Law& law) {
+  const AmplitudeSweepLaw& a = *law.amplitude_sweep;
+  fmt::print("\namplitude sweep at omega~ = {:.4g}, gamma0 = {:.3g} ... {:.3g} ({} amplitudes)\n",
+             a.frequency, a.amplitudes.front(), a.amplitudes.back(), a.amplitudes.size());
+  fmt::print("  {:>6} {:>22} {:>22} {:>22} {:>22} {:>9}\n", "phi", "G' plateau/E*",
+             "G'' plateau/E*", "softening strain", "crossover strain", "gamma_y");
+  for (std::size_t i = 0; i < a.phi.size(); ++i) {
+    const auto j = std::find_if(law.phi.begin(), law.phi.end(),
+                                [&](double p) { return std::abs(p - a.phi[i]) < 1e-9; });
+    const std::string static_part =
+        j == law.phi.end()
+            ? ""
+            : fmt::format(" (static G0/E* {:.4g})", law.modulus[j - law.phi.begin()].value);
+    const auto strain = [](const Estimate& e) {
+      return e.value > 0 ? with_error(e.value, e.error) : std::string("not reached");
+    };
+    fmt::print("  {:>6.3f} {:>22} {:>22} {:>22} {:>22} {:>9}{}\n", a.phi[i],
+               with_error(a.plateau_storage[i].value, a.plateau_storage[i].error),
+               with_error(a.plateau_loss[i].value, a.plateau_loss[i].error),
+               strain(a.softening_strain[i]), strain(a.crossover_strain[i]),
+               j == law.phi.end()
+                   ? std::string("-")
+                   : fmt::format("{:.4f}", law.yield_strain[j - law.phi.begin()].value),
+               static_part);
+  }
+}
+
+void print_amplitude_sweep_prediction(const AmplitudeSweepPrediction& p) {
+  const auto strain = [](const MaterialValue& v) {
+    return v.value > 0 ? with_error(v.value, v.error()) : std::string("not reached");
+  };
+  fmt::print(
+      "amplitude sweep at omega = {:.4g} rad/s (the law's omega~ = {:.4g}): G' plateau = {} "
+      "Pa, G'' = {} Pa (gamma0 = {:.3g}); softening strain {}, crossover strain {}\n",
+      p.angular_frequency, p.reduced_frequency,
+      with_error(p.plateau_storage.value, p.plateau_storage.error()),
+      with_error(p.plateau_loss.value, p.plateau_loss.error()), p.amplitudes.front(),
+      strain(p.softening_strain), strain(p.crossover_strain));
+}
+
 void print_rescale_report(const std::vector<RescaledCurve>& rescaled, const RescaleSettings& s,
                           const std::string& constants_source) {
   fmt::print("universal law  k = {:.4g}, k' = {:.4g} ({}); eta_s = {:.4g} Pa s\n", s.k, s.k_N1,

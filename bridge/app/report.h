@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "bridge/material/amplitude_sweep_prediction.h"
 #include "bridge/material/material.h"
 #include "bridge/rescale/rescale.h"
 #include "bridge/sweep/analysis.h"
@@ -13,6 +14,11 @@ namespace softglass::bridge {
 
 void print_fit_report(const SweepAnalysis& analysis, const std::string& source);
 void print_material_report(const Material& material);
+/// The amplitude-sweep law of `law` per volume fraction, beside the static
+/// G0 and the flow curve's yield strain where the law has them.
+void print_amplitude_sweep_report(const Law& law);
+/// A material's amplitude sweep in SI units.
+void print_amplitude_sweep_prediction(const AmplitudeSweepPrediction& p);
 void print_rescale_report(const std::vector<RescaledCurve>& rescaled,
                           const RescaleSettings& settings, const std::string& constants_source);
 

@@ -7,6 +7,7 @@
 #include <map>
 #include <utility>
 
+#include "bridge/io/table_columns.h"
 #include "common/errors.h"
 #include "common/flow_curve_columns.h"
 
@@ -25,94 +26,21 @@ const char* reduced_units(Quantity q) {
 
 namespace {
 
-std::string without_spaces(std::string s) {
-  std::erase(s, ' ');
-  return s;
+// A quantity's value by its sign rule (flow_curve_table.h).
+double quantity(const TableColumns& columns, Quantity q, std::size_t r, std::size_t c) {
+  if (may_be_negative(q)) return columns.number(r, c);
+  return may_be_zero(q) ? columns.nonnegative(r, c) : columns.positive(r, c);
 }
 
-// The header of a reduced-units table: names mapped to column indices, units checked.
-class Columns {
- public:
-  explicit Columns(const CsvTable& csv) : csv_(csv) {
-    for (std::size_t c = 0; c < csv.columns(); ++c) {
-      const ColumnName column = split_units(csv.header()[c]);
-      if (column.units.empty()) {
-        throw InputError(fmt::format(
-            "{}: column '{}' has no units; every column names its units in brackets, e.g. "
-            "'sigma [E*]' (docs/flow-curve-format.md)",
-            csv.source(), csv.header()[c]));
-      }
-      const std::string expected = flow_curve::unit_of(column.name);
-      if (!expected.empty() && without_spaces(column.units) != expected) {
-        throw InputError(fmt::format(
-            "{}: column '{}' is in '{}', expected '{}': flow-curve tables are in reduced units "
-            "(stresses in E*, forces in E* R^2), all columns alike",
-            csv.source(), csv.header()[c], column.units, expected));
-      }
-      if (!index_.emplace(column.name, c).second) {
-        throw InputError(fmt::format("{}: column '{}' appears twice", csv.source(), column.name));
-      }
-    }
-    // Every cell must be a finite number (the format allows no missing values).
-    for (std::size_t r = 0; r < csv.rows(); ++r)
-      for (std::size_t c = 0; c < csv.columns(); ++c) csv.number(r, c);
-  }
-
-  std::optional<std::size_t> find(const std::string& name) const {
-    const auto it = index_.find(name);
-    return it == index_.end() ? std::nullopt : std::optional(it->second);
-  }
-  std::size_t require(const std::string& name) const {
-    const auto c = find(name);
-    if (!c) {
-      throw InputError(fmt::format("{}: column '{} [{}]' is missing (docs/flow-curve-format.md)",
-                                   csv_.source(), name, flow_curve::unit_of(name)));
-    }
-    return *c;
-  }
-
-  // The value of row r in column c, checked by `valid`; `rule` says what is allowed.
-  template <class Valid>
-  double value(std::size_t r, std::size_t c, Valid valid, const char* rule) const {
-    const double v = csv_.number(r, c);
-    if (!valid(v)) throw InputError(fmt::format("{}: {} (must be {})", csv_.where(r, c), v, rule));
-    return v;
-  }
-  double positive(std::size_t r, std::size_t c) const {
-    return value(
-        r, c, [](double v) { return v > 0; }, "> 0");
-  }
-  double nonnegative(std::size_t r, std::size_t c) const {
-    return value(
-        r, c, [](double v) { return v >= 0; }, ">= 0");
-  }
-  // A quantity's value by its sign rule (flow_curve_table.h).
-  double quantity(Quantity q, std::size_t r, std::size_t c) const {
-    if (may_be_negative(q)) return csv_.number(r, c);
-    return may_be_zero(q) ? nonnegative(r, c) : positive(r, c);
-  }
-  // γ̃: positive, or 0 for the quasi-static limit (a sweep's AQS rows).
-  double rate(std::size_t r, std::size_t c) const {
-    return value(
-        r, c, [](double v) { return v >= 0; }, ">= 0");
-  }
-  double fraction(std::size_t r, std::size_t c) const {
-    return value(
-        r, c, [](double v) { return v > 0 && v < 1; }, "in (0, 1)");
-  }
-  double count(std::size_t r, std::size_t c, double least) const {
-    return value(
-        r, c, [&](double v) { return v >= least && v == std::floor(v) && v < 1e15; },
-        least > 0 ? "a whole number >= 1" : "a whole number >= 0");
-  }
-
- private:
-  const CsvTable& csv_;
-  std::map<std::string, std::size_t> index_;
-};
+// A flow-curve table's header: units checked against the format.
+TableColumns flow_curve_columns(const CsvTable& csv) {
+  return TableColumns(csv, flow_curve::unit_of, "docs/flow-curve-format.md",
+                      "flow-curve tables are in reduced units (stresses in E*, forces in E* R^2), "
+                      "all columns alike");
+}
 
 // The value columns (and, if `with_errors`, their standard-error columns) present.
-PerQuantity<std::pair<std::size_t, std::size_t>> value_columns(const Columns& columns,
+PerQuantity<std::pair<std::size_t, std::size_t>> value_columns(const TableColumns& columns,
                                                                const CsvTable& csv,
                                                                bool with_errors) {
   PerQuantity<std::pair<std::size_t, std::size_t>> result;
@@ -133,9 +61,11 @@ PerQuantity<std::pair<std::size_t, std::size_t>> value_columns(const Columns& co
 }  // namespace
 
 FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
-  const Columns columns(csv);
-  const std::size_t phi = columns.require(flow_curve::phi), rate = columns.require(flow_curve::gamma_tilde),
-                    packings = columns.require(flow_curve::packings), g0 = columns.require(flow_curve::shear_modulus),
+  const TableColumns columns = flow_curve_columns(csv);
+  const std::size_t phi = columns.require(flow_curve::phi),
+                    rate = columns.require(flow_curve::gamma_tilde),
+                    packings = columns.require(flow_curve::packings),
+                    g0 = columns.require(flow_curve::shear_modulus),
                     g0_se = columns.require(flow_curve::error_of(flow_curve::shear_modulus));
   const auto converged = columns.find(flow_curve::converged);
   const auto quantities = value_columns(columns, csv, true);
@@ -164,7 +94,8 @@ FlowCurveTable read_flow_curve_table(const CsvTable& csv) {
     for (Quantity q : kAllQuantities) {
       const auto& c = quantities[index(q)];
       if (!c) continue;
-      p.values[index(q)] = Estimate{columns.quantity(q, r, c->first), columns.positive(r, c->second)};
+      p.values[index(q)] =
+          Estimate{quantity(columns, q, r, c->first), columns.positive(r, c->second)};
     }
     const auto [it, fresh] = seen.emplace(std::pair(p.phi, p.gamma_tilde), p.line);
     if (!fresh) {
@@ -186,8 +117,9 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
                     "structure once",
                     csv.source(), table.source));
   }
-  const Columns columns(csv);
-  const std::size_t phi = columns.require(flow_curve::phi), rate = columns.require(flow_curve::gamma_tilde),
+  const TableColumns columns = flow_curve_columns(csv);
+  const std::size_t phi = columns.require(flow_curve::phi),
+                    rate = columns.require(flow_curve::gamma_tilde),
                     value = columns.require(column_name(Quantity::force)),
                     error = columns.require(flow_curve::error_of(column_name(Quantity::force)));
   // Rows are matched to state points as make_sweep groups them: φ and γ̃ equal
@@ -224,9 +156,11 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv) {
 }
 
 std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
-  const Columns columns(csv);
-  const std::size_t phi = columns.require(flow_curve::phi), rate = columns.require(flow_curve::gamma_tilde),
-                    seed = columns.require(flow_curve::seed), g0 = columns.require(flow_curve::shear_modulus);
+  const TableColumns columns = flow_curve_columns(csv);
+  const std::size_t phi = columns.require(flow_curve::phi),
+                    rate = columns.require(flow_curve::gamma_tilde),
+                    seed = columns.require(flow_curve::seed),
+                    g0 = columns.require(flow_curve::shear_modulus);
   const auto quantities = value_columns(columns, csv, false);
   std::vector<PackingRun> runs;
   for (std::size_t r = 0; r < csv.rows(); ++r) {
@@ -239,7 +173,7 @@ std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
     for (Quantity q : kAllQuantities) {
       const auto& c = quantities[index(q)];
       if (!c) continue;
-      run.values[index(q)] = columns.quantity(q, r, c->first);
+      run.values[index(q)] = quantity(columns, q, r, c->first);
     }
     runs.push_back(run);
   }

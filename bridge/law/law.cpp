@@ -177,6 +177,7 @@ void validate(const Law& law, const std::string& source) {
       throw InputError(source + ": sigma/yield and sigma/consistency must be positive");
     }
   }
+  if (law.amplitude_sweep) validate(*law.amplitude_sweep, source);
 }
 
 }  // namespace softglass::bridge

@@ -10,7 +10,9 @@
 // mostly the exponent's; the correlation lets `material` propagate both into
 // K = E* k (η_s/E*)^m without counting that error twice).
 // With structure data, also the force law f_m = f_y + k_f γ̃^½ per volume
-// fraction (in subsection f_m, beside the free-exponent fit).
+// fraction (in subsection f_m, beside the free-exponent fit). With an
+// oscillation table, the amplitude-sweep law (law/amplitude_sweep.h) in
+// subsection `amplitude sweep`.
 // Over all volume fractions: the universal constants k, k′, k″ and the mean
 // exponent.
 #pragma once
@@ -20,6 +22,7 @@
 #include <vector>
 
 #include "bridge/io/flow_curve_table.h"
+#include "bridge/law/amplitude_sweep.h"
 #include "bridge/sweep/analysis.h"
 
 namespace softglass::bridge {
@@ -42,7 +45,8 @@ struct Law {
   std::optional<ForceLaw> force;                // with structure data
   PerQuantity<Estimate> k;                      // sigma: k, N1: k′, N2: k″
   Estimate mean_exponent;
-  std::vector<std::string> provenance;  // comment lines, without '#'
+  std::optional<AmplitudeSweepLaw> amplitude_sweep;  // from `micro oscillate`
+  std::vector<std::string> provenance;               // comment lines, without '#'
 };
 
 /// The law of an analysed sweep; `provenance` becomes its header comments.

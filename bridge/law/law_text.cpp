@@ -34,6 +34,36 @@ void estimates(std::string& out, const std::string& indent, const std::string& n
   set(out, indent, name + " error", errors(e));
 }
 
+// Rows of a [φ][amplitude] table, φ after φ.
+std::vector<Estimate> flattened(const std::vector<std::vector<Estimate>>& rows) {
+  std::vector<Estimate> flat;
+  for (const auto& row : rows) flat.insert(flat.end(), row.begin(), row.end());
+  return flat;
+}
+
+void amplitude_sweep_text(std::string& out, const AmplitudeSweepLaw& a) {
+  const auto numbers = [](const std::vector<double>& v) {
+    return list(v, [](double x) { return fmt::format("{:.10g}", x); });
+  };
+  out += fmt::format(
+      "  subsection amplitude sweep\n"
+      "    # micro oscillate at omega~ = omega eta_s / E* = {:.6g}: G' and G'' of sigma in E*,\n"
+      "    # one row of amplitudes per volume fraction (its own list of volume fractions).\n"
+      "    # plateau: at the smallest amplitude; softening strain: G' = 0.9 of its plateau;\n"
+      "    # crossover strain: G' = G'' (0: not reached within the sweep).\n",
+      a.frequency);
+  set(out, "    ", "frequency", fmt::format("{:.10g}", a.frequency));
+  set(out, "    ", "volume fractions", numbers(a.phi));
+  set(out, "    ", "amplitudes", numbers(a.amplitudes));
+  estimates(out, "    ", "storage", flattened(a.storage));
+  estimates(out, "    ", "loss", flattened(a.loss));
+  estimates(out, "    ", "plateau storage", a.plateau_storage);
+  estimates(out, "    ", "plateau loss", a.plateau_loss);
+  estimates(out, "    ", "softening strain", a.softening_strain);
+  estimates(out, "    ", "crossover strain", a.crossover_strain);
+  out += "  end\n";
+}
+
 }  // namespace
 
 std::string law_text(const Law& law) {
@@ -93,6 +123,7 @@ std::string law_text(const Law& law) {
     }
     out += "  end\n";
   }
+  if (law.amplitude_sweep) amplitude_sweep_text(out, *law.amplitude_sweep);
   out += "end\n";
   return out;
 }

@@ -16,25 +16,6 @@ double MaterialValue::error() const {
 
 namespace {
 
-// Interpolates per-φ SI values at φ, in logarithm when they all share a sign.
-MaterialValue interpolate_value(const std::vector<double>& phi, const std::vector<Estimate>& v,
-                                double at) {
-  const bool positive =
-      std::all_of(v.begin(), v.end(), [](const Estimate& e) { return e.value > 0; });
-  const bool negative =
-      std::all_of(v.begin(), v.end(), [](const Estimate& e) { return e.value < 0; });
-  if (!positive && !negative) {
-    const Interpolated r = interpolate(phi, v, at);
-    return {r.value, r.statistical, r.interpolation};
-  }
-  std::vector<Estimate> logs;
-  for (const Estimate& e : v)
-    logs.push_back({std::log(std::abs(e.value)), e.error / std::abs(e.value)});
-  const Interpolated r = interpolate(phi, logs, at);
-  const double value = (positive ? 1.0 : -1.0) * std::exp(r.value);
-  return {value, std::abs(value) * r.statistical, std::abs(value) * r.interpolation};
-}
-
 MaterialLaw dimensional(const Law& law, const HbLaw& hb, const MaterialRequest& request) {
   const double e_star = request.modulus;
   const double log_time = std::log(request.viscosity / e_star);  // L = ln(η_s/E*)
@@ -65,10 +46,28 @@ std::string describe_placement(const Law& law, double phi) {
                      *above);
 }
 
-// φ must be simulated, or inside the simulated range, or extrapolation asked for.
-void check_phi(const Law& law, double phi, bool extrapolate) {
+}  // namespace
+
+MaterialValue interpolate_value(const std::vector<double>& phi, const std::vector<Estimate>& v,
+                                double at) {
+  const bool positive =
+      std::all_of(v.begin(), v.end(), [](const Estimate& e) { return e.value > 0; });
+  const bool negative =
+      std::all_of(v.begin(), v.end(), [](const Estimate& e) { return e.value < 0; });
+  if (!positive && !negative) {
+    const Interpolated r = interpolate(phi, v, at);
+    return {r.value, r.statistical, r.interpolation};
+  }
+  std::vector<Estimate> logs;
+  for (const Estimate& e : v)
+    logs.push_back({std::log(std::abs(e.value)), e.error / std::abs(e.value)});
+  const Interpolated r = interpolate(phi, logs, at);
+  const double value = (positive ? 1.0 : -1.0) * std::exp(r.value);
+  return {value, std::abs(value) * r.statistical, std::abs(value) * r.interpolation};
+}
+
+void check_phi(const std::vector<double>& p, double phi, bool extrapolate) {
   require(phi > 0 && phi < 1, fmt::format("volume fraction phi = {} must be in (0, 1)", phi));
-  const std::vector<double>& p = law.phi;
   if (is_simulated(p, phi)) return;
   require(p.size() >= 2, fmt::format("the law holds for phi = {} only (one simulated volume "
                                      "fraction); phi = {} cannot be reached",
@@ -80,13 +79,11 @@ void check_phi(const Law& law, double phi, bool extrapolate) {
                       phi, p.front(), p.back()));
 }
 
-}  // namespace
-
 MaterialValue contact_modulus_from_plateau(const Law& law, double phi, double plateau_modulus,
                                            bool extrapolate) {
   require(plateau_modulus > 0 && std::isfinite(plateau_modulus),
           fmt::format("plateau modulus G' = {} Pa must be positive", plateau_modulus));
-  check_phi(law, phi, extrapolate);
+  check_phi(law.phi, phi, extrapolate);
   const MaterialValue g0 = interpolate_value(law.phi, law.modulus, phi);
   require(g0.value > 0, fmt::format("the law's G0/E* at phi = {} is {:.3g}: no solid to scale "
                                     "a plateau modulus by",
@@ -100,7 +97,7 @@ Material make_material(const Law& law, const MaterialRequest& request) {
           fmt::format("contact modulus E* = {} Pa must be positive", request.modulus));
   require(request.viscosity > 0 && std::isfinite(request.viscosity),
           fmt::format("solvent viscosity eta_s = {} Pa s must be positive", request.viscosity));
-  check_phi(law, request.phi, request.extrapolate);
+  check_phi(law.phi, request.phi, request.extrapolate);
 
   Material m;
   m.request = request;

@@ -62,6 +62,15 @@ struct Material {
 /// format does not allow (a flow index outside (0, 2] after extrapolation).
 Material make_material(const Law& law, const MaterialRequest& request);
 
+/// Per-φ values interpolated at `at` (interpolation.h), in logarithm when
+/// they all share a sign (they change by orders of magnitude with φ).
+MaterialValue interpolate_value(const std::vector<double>& phi, const std::vector<Estimate>& v,
+                                double at);
+
+/// InputError unless φ is one of `phi` (the simulated volume fractions), or
+/// lies within their range, or lies outside with `extrapolate`.
+void check_phi(const std::vector<double>& phi, double at, bool extrapolate);
+
 /// E* from a measured linear shear modulus G′ (the plateau of an amplitude or
 /// frequency sweep): E* = G′ / (G0/E*)(φ), with the law's G0/E* interpolated
 /// in φ like the other per-φ values; its errors carry over relatively. The

@@ -27,6 +27,9 @@ const std::map<std::string, double> kTorqueUnits = {{"N.m", 1.0},   {"mN.m", 1e-
 const std::map<std::string, double> kAngularVelocityUnits = {
     {"rad/s", 1.0}, {"rpm", 2.0 * std::numbers::pi / 60.0}};
 const std::map<std::string, double> kForceUnits = {{"N", 1.0}, {"mN", 1e-3}, {"g", 9.80665e-3}};
+const std::map<std::string, double> kStrainUnits = {{"%", 0.01}, {"1", 1.0}};
+const std::map<std::string, double> kFrequencyUnits = {{"rad/s", 1.0},
+                                                       {"Hz", 2.0 * std::numbers::pi}};
 
 std::string list_of(const std::map<std::string, double>& units) {
   std::string s;
@@ -108,6 +111,25 @@ const std::vector<Kind>& kinds() {
        "force",
        false,
        F::none},
+      {Measured::storage_modulus,
+       {"storage modulus", "g'"},
+       &kStressUnits,
+       "stress",
+       true,
+       F::none},
+      {Measured::loss_modulus, {"loss modulus", "g''"}, &kStressUnits, "stress", false, F::none},
+      {Measured::strain_amplitude,
+       {"oscillation strain", "strain amplitude", "strain"},
+       &kStrainUnits,
+       "strain",
+       true,
+       F::none},
+      {Measured::angular_frequency,
+       {"angular frequency"},
+       &kFrequencyUnits,
+       "frequency",
+       true,
+       F::none},
   };
   return k;
 }
@@ -162,8 +184,10 @@ void finish(std::vector<RheometerCurve>& curves, const std::string& source) {
       throw InputError(fmt::format("{}: curve '{}' has {} point(s); at least 4 are needed", source,
                                    c.label, c.size()));
     }
-    const std::vector<double>& x =
-        c.has(Measured::shear_rate) ? c[Measured::shear_rate] : c[Measured::angular_velocity];
+    const std::vector<double>& x = c.has(Measured::shear_rate) ? c[Measured::shear_rate]
+                                   : c.has(Measured::angular_velocity)
+                                       ? c[Measured::angular_velocity]
+                                       : c[Measured::strain_amplitude];
     std::vector<std::size_t> order(x.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(),

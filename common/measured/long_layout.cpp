@@ -40,17 +40,18 @@ std::vector<RheometerCurve> read_long(const CsvTable& csv, const FallbackUnits& 
                        ": no units (write them in brackets, e.g. 'Stress [Pa]', "
                        "'Torque [mN.m]'; rates and stresses also take --rate-unit/--stress-unit)");
     }
-    columns[kind->quantity] = {c, unit_factor(*kind, units, what),
-                               kind->positive};
+    columns[kind->quantity] = {c, unit_factor(*kind, units, what), kind->positive};
   }
-  const bool abscissa =
-      columns.contains(Measured::shear_rate) || columns.contains(Measured::angular_velocity);
-  const bool ordinate = columns.contains(Measured::stress) || columns.contains(Measured::torque);
+  const bool abscissa = columns.contains(Measured::shear_rate) ||
+                        columns.contains(Measured::angular_velocity) ||
+                        columns.contains(Measured::strain_amplitude);
+  const bool ordinate = columns.contains(Measured::stress) || columns.contains(Measured::torque) ||
+                        columns.contains(Measured::storage_modulus);
   if (!abscissa || !ordinate) {
-    throw InputError(
-        fmt::format("{}: needs a shear-rate or angular-velocity column and a stress or torque "
-                    "column (e.g. 'Shear rate [1/s]', 'Stress [Pa]'); found {}",
-                    csv.source(), fmt::join(csv.header(), ", ")));
+    throw InputError(fmt::format(
+        "{}: needs a shear-rate, angular-velocity or strain-amplitude column and a stress, "
+        "torque or storage-modulus column (e.g. 'Shear rate [1/s]', 'Stress [Pa]'); found {}",
+        csv.source(), fmt::join(csv.header(), ", ")));
   }
   std::vector<RheometerCurve> curves;
   std::map<std::string, std::size_t> by_label;

@@ -13,6 +13,7 @@
 #include "common/atomic_output.h"
 #include "common/csv_table.h"
 #include "common/errors.h"
+#include "common/overlay_plot.h"
 #include "common/version.h"
 #include "macro/app/input_scales.h"
 #include "macro/app/measured_torques.h"
@@ -20,7 +21,6 @@
 #include "macro/app/result_folder.h"
 #include "macro/app/results_file.h"
 #include "macro/app/scene_file.h"
-#include "macro/io/overlay_plot.h"
 #include "macro/material/material_parameters.h"
 
 namespace softglass::macro::app {
@@ -114,13 +114,13 @@ MeasuredTorques read_measured(const CompareOptions& o, const InstrumentConstants
       read_rheometer_curves(CsvTable::read(o.data_file), {o.rate_unit, o.stress_unit});
   MeasuredTorques m = measured_torques(select_curve(curves, o), constants, o.min_rate, o.max_rate);
   if (o.max_points > 0) return thinned(m, o.max_points);
-  require(m.angular_velocity.size() <= kMostComparedPoints,
-          fmt::format("{}: curve '{}' has {} points in the rate window, one solve each; a measured "
-                      "flow curve has tens to hundreds, so this is taken for another kind of "
-                      "file; allowed: at most {} points: narrow the window with --min-rate and "
-                      "--max-rate, or compare N of them with --max-points N",
-                      o.data_file.string(), m.label, m.angular_velocity.size(),
-                      kMostComparedPoints));
+  require(
+      m.angular_velocity.size() <= kMostComparedPoints,
+      fmt::format("{}: curve '{}' has {} points in the rate window, one solve each; a measured "
+                  "flow curve has tens to hundreds, so this is taken for another kind of "
+                  "file; allowed: at most {} points: narrow the window with --min-rate and "
+                  "--max-rate, or compare N of them with --max-points N",
+                  o.data_file.string(), m.label, m.angular_velocity.size(), kMostComparedPoints));
   return m;
 }
 
@@ -211,16 +211,15 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
 bool write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
                 const std::filesystem::path& file) {
   const MeasuredTorques& m = c.measured;
-  io::OverlayPlot plot{
-      .title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
-                           label == o.data_file.stem().string() ? "" : ", " + label,
-                           o.scene_file.filename().string()),
-      .abscissa = "angular velocity {/Symbol W} [rad/s]",
-      .x = m.angular_velocity,
-      .panels = {{"torque [N m]", m.torque, c.torque}}};
+  OverlayPlot plot{.title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
+                                        label == o.data_file.stem().string() ? "" : ", " + label,
+                                        o.scene_file.filename().string()),
+                   .abscissa = "angular velocity {/Symbol W} [rad/s]",
+                   .x = m.angular_velocity,
+                   .panels = {{"torque [N m]", m.torque, c.torque}}};
   if (c.compares_force)
     plot.panels.push_back({"normal force [N]", *m.normal_force, c.normal_force});
-  return io::write_overlay_png(plot, file);
+  return write_overlay_png(plot, file);
 }
 
 void write_summary(const std::filesystem::path& file, const std::vector<std::string>& header_lines,
@@ -301,8 +300,8 @@ int compare(const CompareOptions& o) {
 
   const std::filesystem::path directory =
       o.output.empty() ? default_directory(o.data_file, o.scene_file) : o.output;
-  ResultFolder folder(directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"},
-                      o.force);
+  ResultFolder folder(
+      directory, {"comparison.csv", "summary.txt", "comparison.png", "comparison.h5"}, o.force);
   if (folder.refused()) return kExitOutputExists;
   // The number of points is known now; when ranks are to share meshes, the
   // scene is made again on its group's ranks.
@@ -324,14 +323,15 @@ int compare(const CompareOptions& o) {
   const std::vector<std::string> header_lines =
       provenance(o, scene->description(), measured, describe_model(material, settings));
 
-  write_results_csv(folder.temporary("comparison.csv"), folder.path("comparison.csv"),
-                    header_lines, table, 8);
+  write_results_csv(folder.temporary("comparison.csv"), folder.path("comparison.csv"), header_lines,
+                    table, 8);
   const bool plotted =
       write_plot(comparison, o, measured.label, folder.temporary("comparison.png"));
   if (!plotted) folder.discard("comparison.png");
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_summary(folder.temporary("summary.txt"), header_lines, report, wall, groups.ranks_per_point(), plotted);
+  write_summary(folder.temporary("summary.txt"), header_lines, report, wall,
+                groups.ranks_per_point(), plotted);
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
   write_results_h5(folder.temporary("comparison.h5"), table,
@@ -347,8 +347,7 @@ int compare(const CompareOptions& o) {
   folder.commit();
 
   if (!o.quiet) print_comparison(comparison, report, directory, plotted);
-  if (!plotted)
-    std::cerr << "macro: warning: no plot written (" << kNoPlot << ")\n";
+  if (!plotted) std::cerr << "macro: warning: no plot written (" << kNoPlot << ")\n";
   return kExitOk;
 }
 

@@ -287,9 +287,72 @@ TEST_F(BridgeCli, BadInputIsRefusedWithExitCodeTwoAndNoOutput) {
 // 3) and leaves them untouched.
 // A full disk (a file-size limit): exit 1 naming the file the user asked for
 // and the reason, and none of the four results left, whole or in part.
+// An oscillation table in micro's format (docs/oscillation.md): G′ = G0 up to
+// γ0 = 0.01 and ∝ 1/γ0 beyond, G″ = 0.2 G0, at two volume fractions.
+std::string oscillation_csv() {
+  std::ostringstream s;
+  s << "# test oscillation table\nphi [1],omega_tilde [1],gamma0 [1],packings [1],storage [E*],"
+       "storage_se [E*],loss [E*],loss_se [E*],G0 [E*],G0_se [E*]\n";
+  for (const auto& [phi, g0] : {std::pair(0.8, 0.03), std::pair(0.85, 0.05)})
+    for (double g : {1e-4, 1e-3, 1e-2, 1e-1, 1.0})
+      s << phi << ",2e-7," << g << ",2," << g0 * (g <= 0.01 ? 1.0 : 0.01 / g) << ",1e-6,"
+        << 0.2 * g0 << ",1e-6," << g0 << ",1e-4\n";
+  return s.str();
+}
+
+// fit --oscillation adds the amplitude-sweep law; amplitude-sweep predicts a
+// material's sweep from it and compares a measured one point by point.
+TEST_F(BridgeCli, AmplitudeSweepFromTheLawAgainstAMeasuredOne) {
+  testing::write_text(work() / "osc.csv", oscillation_csv());
+  const Outcome fit = bridge(std::string(kFit) + " --oscillation osc.csv -o law.prm");
+  ASSERT_EQ(fit.code, 0) << fit.out << fit.err;
+  expect_contains(fit.out, {"amplitude sweep at omega~ = 2e-07", "crossover strain"});
+  expect_contains(testing::read_text(work() / "law.prm"), {"subsection amplitude sweep"});
+
+  // Measured: 10 % above the prediction for E* = 1000 Pa at phi = 0.8, in %.
+  std::ostringstream data;
+  data << "Storage modulus [Pa],Loss modulus [Pa],Angular frequency [rad/s],Oscillation strain "
+          "[%]\n";
+  for (double g : {2e-4, 1e-3, 5e-3, 3e-2, 0.3})
+    data << 1.1 * 30.0 * (g <= 0.01 ? 1.0 : 0.01 / g) << "," << 1.1 * 6.0 << ",0.2," << 100 * g
+         << "\n";
+  testing::write_text(work() / "measured.csv", data.str());
+  const Outcome cmp = bridge(
+      "amplitude-sweep law.prm --phi 0.8 --modulus 1000 --viscosity 1e-3 --data measured.csv -o "
+      "out");
+  ASSERT_EQ(cmp.code, 0) << cmp.out << cmp.err;
+  expect_contains(cmp.out,
+                  {"5 compared", "predicted at 0.2 rad/s", "crossover strain: measured 0.05",
+                   "predicted 0.05", "G' median |error| 9.1 %"});
+  const std::string table = testing::read_text(work() / "out/comparison.csv");
+  expect_contains(table,
+                  {"gamma0 [1],storage_measured [Pa],storage_predicted [Pa],storage_error [1]"});
+  EXPECT_TRUE(fs::exists(work() / "out/amplitude_sweep.csv"));
+
+  // E* from the measured plateau recovers the ratio of the moduli.
+  const Outcome plateau =
+      bridge("amplitude-sweep law.prm --phi 0.8 --plateau-modulus 33 --viscosity 1e-3 -o plateau");
+  ASSERT_EQ(plateau.code, 0) << plateau.err;
+  expect_contains(plateau.out, {"E*       1100 Pa"});
+
+  // Bad input: a law without an amplitude sweep, data without loss modulus.
+  ASSERT_EQ(bridge(std::string(kFit) + " -o plain.prm").code, 0);
+  const Outcome no_sweep =
+      bridge("amplitude-sweep plain.prm --phi 0.8 --modulus 1000 --viscosity 1e-3 -o x");
+  EXPECT_EQ(no_sweep.code, 2);
+  expect_contains(no_sweep.err, {"no amplitude sweep", "--oscillation"});
+  testing::write_text(work() / "bad.csv",
+                      "Storage modulus [Pa],Oscillation strain [%]\n1,1\n2,2\n3,3\n4,4\n");
+  const Outcome bad = bridge(
+      "amplitude-sweep law.prm --phi 0.8 --modulus 1000 --viscosity 1e-3 --data bad.csv -o y");
+  EXPECT_EQ(bad.code, 2);
+  expect_contains(bad.err, {"loss-modulus"});
+  EXPECT_FALSE(fs::exists(work() / "y/amplitude_sweep.csv")) << "nothing written";
+}
+
 TEST_F(BridgeCli, AFullDiskNamesTheFileAndTheReason) {
-  const Outcome o = softglass::testing::run_tool_on_full_disk(
-      SOFTGLASS_BRIDGE_EXECUTABLE, kFit, work(), dir_ / "capture", 4);
+  const Outcome o = softglass::testing::run_tool_on_full_disk(SOFTGLASS_BRIDGE_EXECUTABLE, kFit,
+                                                              work(), dir_ / "capture", 4);
   EXPECT_EQ(o.code, 1) << o.err;
   expect_contains(o.err, {"cannot write 'law", "File too large"});
   EXPECT_EQ(files(), (std::vector<std::string>{"runs.csv", "sweep.csv"}));

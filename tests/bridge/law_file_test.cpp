@@ -53,6 +53,47 @@ TEST(LawFile, RoundTripsThroughParameterHandler) {
   }
 }
 
+// The amplitude-sweep law reads back with its rows per volume fraction; a
+// list of the wrong length is refused naming it.
+TEST(LawFile, RoundTripsTheAmplitudeSweepLaw) {
+  testing::TemporaryDirectory dir;
+  Law law = synthetic_law();
+  OscillationTable table;
+  table.source = "t.csv";
+  for (double phi : {0.8, 0.85})
+    for (double g : {1e-4, 1e-2, 1.0})
+      table.points.push_back(
+          {phi, 2e-7, g, 1, {phi / (1 + 10 * g), 1e-5}, {0.2 * phi, 2e-5}, {phi, 0.0}, 0});
+  law.amplitude_sweep = make_amplitude_sweep_law(table, {});
+  const std::string text = law_text(law);
+  testing::write_text(dir / "law.prm", text);
+  const Law back = read_law_file(dir / "law.prm");
+  ASSERT_TRUE(back.amplitude_sweep.has_value());
+  const AmplitudeSweepLaw &a = *law.amplitude_sweep, &b = *back.amplitude_sweep;
+  EXPECT_EQ(b.phi, a.phi);
+  EXPECT_EQ(b.amplitudes, a.amplitudes);
+  EXPECT_DOUBLE_EQ(b.frequency, a.frequency);
+  for (std::size_t i = 0; i < a.phi.size(); ++i) {
+    for (std::size_t k = 0; k < a.amplitudes.size(); ++k)
+      EXPECT_NEAR(b.storage[i][k].value, a.storage[i][k].value, 1e-9 * a.storage[i][k].value);
+    EXPECT_NEAR(b.crossover_strain[i].value, a.crossover_strain[i].value, 1e-9);
+  }
+  std::string broken = text;
+  const auto at = broken.find("set storage ");
+  broken.replace(at, broken.find('\n', at) - at, "set storage = 1, 2, 3");
+  testing::write_text(dir / "broken.prm", broken);
+  expect_contains(
+      [&] {
+        try {
+          read_law_file(dir / "broken.prm");
+        } catch (const InputError& e) {
+          return std::string(e.what());
+        }
+        return std::string();
+      }(),
+      {"amplitude sweep/storage", "expected 6"});
+}
+
 // A failed N1 fit (NaN in its numbers, warned about by `fit`) and a failed
 // force-law error are left out of the law, with a note, and the law file that
 // results reads back.

@@ -29,6 +29,18 @@ std::string refusal(const std::string& text, FallbackUnits units = {}) {
   return "";
 }
 
+// The message of what `read` throws.
+template <class Read>
+std::string refusal_of(Read read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return "";
+}
+
 const std::string kInstrument =
     "Stress [Pa],Shear rate [1/s],Viscosity [Pa.s],Normal stress [Pa]\n"
     "260.59,1000.0,0.26,0.28\n"
@@ -80,12 +92,48 @@ TEST(MeasuredCurves, RefusesMissingReducedAndMixedUnits) {
   expect_contains(refusal("Shear rate [1/s],Stress [Pa],N1 [1]\n1,2,1\n2,3,1\n3,4,1\n4,5,1\n"),
                   {"'N1 [1]'", "not a stress unit"});
   expect_contains(refusal("Viscosity [Pa.s],Torque [uN.m]\n1,2\n"),
-                  {"shear-rate or angular-velocity column"});
+                  {"shear-rate, angular-velocity or strain-amplitude column"});
   expect_contains(refusal("Angular velocity [rad/s],Torque [uN.m]\n1,2\n2,3\n3,4\n4,5\n"),
                   {"needs a shear-rate and a stress column"});
   expect_contains(refusal("Shear rate [1/s],Torque [N]\n1,2\n2,3\n3,4\n4,5\n"),
                   {"'N' is not a torque unit"});
   expect_contains(refusal("rate [1/s],stress [Pa],Stress [kPa]\n1,2,3\n"), {"second column"});
+}
+
+// An amplitude sweep: strains in % or as fractions, moduli as stresses, the
+// frequency in rad/s or Hz and one per curve; moduli and strain required.
+TEST(AmplitudeSweeps, ReadsStrainModuliAndFrequency) {
+  const std::string text =
+      "Storage modulus [kPa],Loss modulus [Pa],Angular frequency [Hz],Oscillation strain [%],"
+      "Oscillation stress [Pa]\n"
+      "0.15,5,0.5,0.1,0.01\n0.14,6,0.5,0.01,0.02\n0.12,9,0.5,1,0.1\n0.08,30,0.5,10,2\n";
+  const auto sweeps = read_amplitude_sweeps(CsvTable::parse(text, "sweep.csv"));
+  ASSERT_EQ(sweeps.size(), 1u);
+  const MeasuredAmplitudeSweep& s = sweeps[0];
+  EXPECT_DOUBLE_EQ(s.strain.front(), 1e-4) << "sorted by strain, % as a fraction";
+  EXPECT_DOUBLE_EQ(s.storage.front(), 140.0);
+  EXPECT_DOUBLE_EQ(s.loss.back(), 30.0);
+  ASSERT_TRUE(s.angular_frequency.has_value());
+  EXPECT_DOUBLE_EQ(*s.angular_frequency, std::numbers::pi);
+  expect_contains(
+      refusal_of([] {
+        read_amplitude_sweeps(CsvTable::parse(
+            "Storage modulus [Pa],Oscillation strain [%]\n1,1\n2,2\n3,3\n4,4\n", "s.csv"));
+      }),
+      {"loss-modulus"});
+  expect_contains(refusal_of([] {
+                    read_amplitude_sweeps(CsvTable::parse(
+                        "Storage modulus [Pa],Loss modulus [Pa],Oscillation strain [%],Angular "
+                        "frequency [rad/s]\n1,1,1,1\n2,2,2,1\n3,3,3,2\n4,4,4,1\n",
+                        "s.csv"));
+                  }),
+                  {"one frequency"});
+  expect_contains(
+      refusal_of([] {
+        read_amplitude_sweeps(CsvTable::parse(
+            "Storage modulus [Pa],Loss modulus [Pa],Oscillation strain [E*]\n1,1,1\n", "s.csv"));
+      }),
+      {"'E*' is not a strain unit"});
 }
 
 TEST(RheometerCurves, ReadsTorqueAngularVelocityAndForceInSIUnits) {

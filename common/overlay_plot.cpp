@@ -1,15 +1,14 @@
-#include "macro/io/overlay_plot.h"
+#include "common/overlay_plot.h"
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
-
-namespace softglass::macro::io {
+namespace softglass {
 
 namespace {
 
@@ -18,9 +17,12 @@ namespace {
 std::string quoted(const std::string& text) {
   std::string q = "\"";
   for (char c : text) {
-    if (c == '\n') q += "\\n";
-    else if (c == '"' || c == '\\') q += std::string("\\") + c;
-    else q += c;
+    if (c == '\n')
+      q += "\\n";
+    else if (c == '"' || c == '\\')
+      q += std::string("\\") + c;
+    else
+      q += c;
   }
   return q + "\"";
 }
@@ -40,10 +42,10 @@ std::string data_block(const std::string& name, const std::vector<double>& x,
 std::string script(const OverlayPlot& plot, const std::filesystem::path& output) {
   std::ostringstream g;
   const std::size_t n = plot.panels.size();
-  g << fmt::format("set terminal pngcairo size {},900 enhanced font 'DejaVu Sans,11'\n",
-                   560 * n);
+  g << fmt::format("set terminal pngcairo size {},900 enhanced font 'DejaVu Sans,11'\n", 560 * n);
   g << "set output " << quoted(output.string()) << "\n";
-  for (std::size_t p = 0; p < n; ++p) g << data_block(fmt::format("d{}", p), plot.x, plot.panels[p]);
+  for (std::size_t p = 0; p < n; ++p)
+    g << data_block(fmt::format("d{}", p), plot.x, plot.panels[p]);
   g << fmt::format("set multiplot layout 2,{} title {} noenhanced font ',10'\n", n,
                    quoted(plot.title));
   g << "set logscale x\nset grid\nset key top left\nset format x '10^{%L}'\n";
@@ -93,4 +95,4 @@ bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& fil
   return written && status == 0 && complete_png(file);
 }
 
-}  // namespace softglass::macro::io
+}  // namespace softglass

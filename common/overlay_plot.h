@@ -1,12 +1,12 @@
 // A PNG of predicted against measured curves (gnuplot, from Debian's
-// gnuplot-nox), for `macro compare`.
+// gnuplot-nox), for `macro compare` and `bridge amplitude-sweep`.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace softglass::macro::io {
+namespace softglass {
 
 /// One measured and one predicted series over a common abscissa.
 struct OverlaySeries {
@@ -26,4 +26,4 @@ struct OverlayPlot {
 /// say so (and discard the file).
 bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file);
 
-}  // namespace softglass::macro::io
+}  // namespace softglass

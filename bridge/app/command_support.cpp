@@ -1,0 +1,68 @@
+#include "bridge/app/command_support.h"
+
+#include <fmt/chrono.h>
+#include <fmt/format.h>
+
+#include <ctime>
+
+#include "bridge/material/amplitude_sweep_prediction.h"
+#include "bridge/material/material.h"
+#include "common/errors.h"
+#include "common/version.h"
+
+namespace softglass::bridge {
+
+std::vector<std::string> provenance(const std::string& title, const std::string& command_line) {
+  return {title, "command:  " + command_line,
+          fmt::format("software: softglass {} ({}), {:%Y-%m-%d %H:%M:%S} UTC", kVersion,
+                      kGitRevision, fmt::gmtime(std::time(nullptr)))};
+}
+
+std::filesystem::path beside(const std::filesystem::path& main, const std::string& suffix) {
+  return main.parent_path() / (main.stem().string() + suffix);
+}
+
+void write(AtomicOutput& out, const std::string& text) {
+  write_file(out.temporary_path(), out.final_path().string(), [&](std::ostream& f) { f << text; });
+}
+
+bool sweep_covers(const Law& law, double phi) {
+  if (!law.amplitude_sweep) return false;
+  const std::vector<double>& p = law.amplitude_sweep->phi;
+  return phi >= p.front() - 1e-9 && phi <= p.back() + 1e-9;
+}
+
+double contact_modulus(const ModulusSource& s, const Law& law, double phi, bool extrapolate,
+                       std::vector<std::string>& lines) {
+  if (s.modulus) return *s.modulus;
+  if (s.plateau_modulus) {
+    const bool oscillatory = sweep_covers(law, phi);
+    const MaterialValue e_star =
+        oscillatory
+            ? contact_modulus_from_amplitude_sweep(law, phi, *s.plateau_modulus, extrapolate)
+            : contact_modulus_from_plateau(law, phi, *s.plateau_modulus, extrapolate);
+    const std::string ratio =
+        oscillatory
+            ? fmt::format("(G' plateau/E*)(phi), the law's amplitude sweep at omega~ = {:.4g}",
+                          law.amplitude_sweep->frequency)
+            : std::string("(G0/E*)(phi), the law's static G0");
+    fmt::print(
+        "E*       {:.6g} Pa ± {:.2g} % = G' / {}: every stress below carries this error too\n",
+        e_star.value, 100.0 * e_star.error() / e_star.value, ratio);
+    lines.push_back(fmt::format(
+        "E* = G' / {} = {:.6g} Pa / {:.6g} = {:.6g} Pa +- {:.2g} % (every stress below scales with "
+        "E*, so this error adds to theirs)",
+        ratio, *s.plateau_modulus, *s.plateau_modulus / e_star.value, e_star.value,
+        100.0 * e_star.error() / e_star.value));
+    return e_star.value;
+  }
+  require(*s.interfacial_tension > 0 && *s.radius > 0,
+          "the interfacial tension and the radius must be positive");
+  lines.push_back(
+      fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m (Seth et al. "
+                  "2006, emulsions)",
+                  *s.interfacial_tension, *s.radius));
+  return 9.92 * *s.interfacial_tension / *s.radius;
+}
+
+}  // namespace softglass::bridge
