@@ -11,6 +11,10 @@
 #   5. macro compare  the castor-oil Couette measurement, when
 #                     ../shared/data/rheometry/ is present; otherwise the
 #                     Couette torques of the bundled law only
+#   6. micro oscillate  the castor-oil emulsion's amplitude sweep at 1 rad/s
+#                     (cases/demo_oscillation.prm), added to the law
+#   7. bridge amplitude-sweep  predicted against its measured amplitude sweep
+#                     (when present), E* by the flow-curve route as in 3
 # Usage: scripts/demo.sh BUILD_DIR [OUTPUT_DIR]   (default out/demo)
 set -euo pipefail
 
@@ -19,6 +23,7 @@ out=${2:-out/demo}
 root=$(cd "$(dirname "$0")/.." && pwd)
 micro="$build/micro/micro" bridge="$build/bridge/bridge" macro="$build/macro/macro"
 data="$root/../shared/data/rheometry/castoroil85_couette_flow_sweep.csv"
+amplitude_data="$root/../shared/data/rheometry/castoroil85_couette_amplitude_sweep.csv"
 start=$SECONDS
 source "$root/scripts/bundled_materials.sh"
 
@@ -33,10 +38,11 @@ if command -v mpirun >/dev/null && [ "$cores" -gt 1 ]; then
 fi
 
 mkdir -p "$out"
-# A fresh demo each time: the sweep folder would otherwise be resumed as done.
-rm -rf "${out:?}/sweep"
-sweep_file="$out/demo_sweep.prm"
+# A fresh demo each time: the sweep folders would otherwise be resumed as done.
+rm -rf "${out:?}/sweep" "${out:?}/oscillation"
+sweep_file="$out/demo_sweep.prm" oscillation_file="$out/demo_oscillation.prm"
 sed "s|out/demo/sweep|$out/sweep|" "$root/cases/demo_sweep.prm" > "$sweep_file"
+sed "s|out/demo/oscillation|$out/oscillation|" "$root/cases/demo_oscillation.prm" > "$oscillation_file"
 
 step "1. micro sweep: 3 volume fractions x 5 rates, N = 200 ($cores worker(s))"
 "${launcher[@]}" "$micro" sweep "$sweep_file" -q
@@ -67,6 +73,23 @@ else
   compared=""
 fi
 
+step "6. micro oscillate: the castor-oil emulsion's amplitude sweep, 6 amplitudes, N = 200"
+"${launcher[@]}" "$micro" oscillate "$oscillation_file" -q
+# gamma0, G' and G'' with their standard errors, I3/I1.
+grep -v '^#' "$out/oscillation/oscillation.csv" | cut -d, -f3,5,6,7,8,21 | column -t -s,
+"$bridge" fit --law "$out/law.prm" --oscillation "$out/oscillation/oscillation.csv" \
+  -o "$out/law_with_amplitude_sweep.prm" -f
+
+if [ -f "$amplitude_data" ]; then
+  step "7. bridge amplitude-sweep: predicted against the measured one (E* by the flow-curve route)"
+  "$bridge" amplitude-sweep "$out/law_with_amplitude_sweep.prm" --phi 0.85 --plateau-modulus 143 \
+    --viscosity 0.89e-3 --data "$amplitude_data" -o "$out/amplitude_castoroil" -f
+else
+  step "7. no measured amplitude sweep: the predicted one only"
+  "$bridge" amplitude-sweep "$out/law_with_amplitude_sweep.prm" --phi 0.85 --plateau-modulus 143 \
+    --viscosity 0.89e-3 -o "$out/amplitude_castoroil" -f
+fi
+
 step "done"
 echo "law:            $out/law.prm"
 echo "materials:      $out/material_paper_emulsion.prm, $out/material_castoroil85.prm"
@@ -75,4 +98,6 @@ if [ -n "$compared" ]; then
   echo "comparison:     $compared"
   [ -f "$out/compare_castoroil/comparison.png" ] && echo "plot:           $out/compare_castoroil/comparison.png"
 fi
+echo "amplitude sweep: $out/amplitude_castoroil/amplitude_sweep.csv"
+[ -f "$out/amplitude_castoroil/comparison.png" ] && echo "                 $out/amplitude_castoroil/comparison.png"
 echo "total:          $((SECONDS - start)) s"

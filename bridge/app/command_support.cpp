@@ -36,7 +36,7 @@ double contact_modulus(const ModulusSource& s, const Law& law, double phi, bool 
                        std::vector<std::string>& lines) {
   if (s.modulus) return *s.modulus;
   if (s.plateau_modulus) {
-    const bool oscillatory = sweep_covers(law, phi);
+    const bool oscillatory = s.plateau_source == "amplitude-sweep";
     const MaterialValue e_star =
         oscillatory
             ? contact_modulus_from_amplitude_sweep(law, phi, *s.plateau_modulus, extrapolate)

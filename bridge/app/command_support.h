@@ -21,8 +21,7 @@ std::filesystem::path beside(const std::filesystem::path& main, const std::strin
 /// `text` into `out`'s temporary file (the caller commits).
 void write(AtomicOutput& out, const std::string& text);
 
-/// Whether the law's amplitude sweep covers φ: then a measured G′ plateau is
-/// matched to its oscillatory plateau rather than to the static G0.
+/// Whether the law's amplitude sweep covers φ.
 bool sweep_covers(const Law& law, double phi);
 
 /// E* from its source (commands.h, ModulusSource), with a provenance line in

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <ctime>
+#include <fstream>
 
 #include "bridge/app/law_file.h"
 #include "bridge/app/report.h"
@@ -21,7 +22,43 @@
 
 namespace softglass::bridge {
 
+namespace {
+
+// The comment lines that open a law file (its provenance), without '#' and
+// without the explanations law_text writes after the provenance itself.
+std::vector<std::string> header_comments(const std::filesystem::path& file) {
+  const std::string own = law_text(Law{});  // the explanations alone
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line) && line.starts_with("#");)
+    if (own.find(line + "\n") == std::string::npos)
+      lines.push_back(line.substr(line.starts_with("# ") ? 2 : 1));
+  return lines;
+}
+
+// `bridge fit --law LAW --oscillation TABLE`: the law's flow laws kept, its
+// amplitude sweep added or replaced.
+void add_amplitude_sweep(const FitOptions& o, const std::string& command_line) {
+  AtomicOutput law_out(o.output, o.force);
+  Law law = read_law_file(o.law);
+  law.provenance = header_comments(o.law);
+  law.amplitude_sweep = make_amplitude_sweep_law(
+      read_oscillation_table(CsvTable::read(o.oscillation)), o.oscillation_frequency);
+  for (const std::string& line :
+       provenance("softglass bridge fit: an amplitude sweep added to a law", command_line))
+    law.provenance.push_back(line);
+  law.provenance.push_back(fmt::format("amplitude sweep: {} at omega~ = {:.6g}",
+                                       o.oscillation.string(), law.amplitude_sweep->frequency));
+  print_amplitude_sweep_report(law);
+  write(law_out, law_text(law));
+  law_out.commit();
+  fmt::print("written  {}\n", law_out.final_path().string());
+}
+
+}  // namespace
+
 void fit_command(const FitOptions& o, const std::string& command_line) {
+  if (!o.law.empty()) return add_amplitude_sweep(o, command_line);
   // Refuse early, before any work, if a result exists.
   AtomicOutput law_out(o.output, o.force), phi_out(beside(o.output, "_phi.csv"), o.force),
       points_out(beside(o.output, "_points.csv"), o.force),

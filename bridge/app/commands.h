@@ -13,9 +13,10 @@
 namespace softglass::bridge {
 
 struct FitOptions {
-  std::filesystem::path table, packings;        // packings: the per-packing companion (optional)
-  std::filesystem::path structure;              // companion structure table with f_m (optional)
-  std::filesystem::path oscillation;            // amplitude sweeps of `micro oscillate` (optional)
+  std::filesystem::path table, packings;  // packings: the per-packing companion (optional)
+  std::filesystem::path law;          // instead of `table`: a law file to add an amplitude sweep to
+  std::filesystem::path structure;    // companion structure table with f_m (optional)
+  std::filesystem::path oscillation;  // amplitude sweeps of `micro oscillate` (optional)
   std::optional<double> oscillation_frequency;  // which of its frequencies (ω̃)
   std::filesystem::path output = "law.prm";
   std::size_t replicates = 1000;
@@ -24,7 +25,10 @@ struct FitOptions {
 };
 
 /// Fits a flow-curve table; writes the law file and its CSV tables
-/// (<stem>_phi.csv, <stem>_points.csv, <stem>_constants.csv) beside it.
+/// (<stem>_phi.csv, <stem>_points.csv, <stem>_constants.csv) beside it. With
+/// `law` instead of a table, that law file's flow laws are kept as they are
+/// (its header too) and the amplitude-sweep law of `oscillation` is added:
+/// only the law file is written.
 void fit_command(const FitOptions& options, const std::string& command_line);
 
 /// Where a material's E* comes from: one of these.
@@ -32,6 +36,9 @@ struct ModulusSource {
   std::optional<double> modulus;                      // E* [Pa], or
   std::optional<double> interfacial_tension, radius;  // γ_i [N/m] and R [m]: E* = 9.92 γ_i/R, or
   std::optional<double> plateau_modulus;              // a measured G′ plateau [Pa] (see below)
+  /// Matched to the law's static G0 ("static", the flow-curve route) or to the
+  /// plateau of its amplitude sweep ("amplitude-sweep").
+  std::string plateau_source = "static";
 };
 
 struct MaterialOptions {
@@ -42,8 +49,8 @@ struct MaterialOptions {
 };
 
 /// Writes the material fragment for (φ, E*, η_s) from a law file. With a
-/// measured G′ plateau, E* = G′/(G′ plateau/E*)(φ) from the law's amplitude
-/// sweep when it has one covering φ, else G′/(G0/E*)(φ) from its static G0.
+/// measured G′ plateau, E* = G′/(G0/E*)(φ) from the law's static G0, or
+/// G′/(G′ plateau/E*)(φ) from its amplitude sweep (plateau_source).
 void material_command(const MaterialOptions& options, const std::string& command_line);
 
 struct AmplitudeSweepOptions {

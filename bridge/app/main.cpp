@@ -55,7 +55,12 @@ int main(int argc, char** argv) {
       "fit a flow-curve table (docs/flow-curve-format.md): per-phi Herschel-Bulkley laws, "
       "yield strains, the universal k, k', k'' with bootstrap errors; writes a law file and "
       "CSV tables");
-  fit_cmd->add_option("table", fit.table, "flow-curve table (CSV)")->required();
+  auto* fit_table = fit_cmd->add_option("table", fit.table, "flow-curve table (CSV)");
+  auto* fit_law = fit_cmd->add_option(
+      "--law", fit.law,
+      "instead of a flow-curve table, the flow laws of this law file, kept as they are, with "
+      "the amplitude-sweep law of --oscillation added (or replaced)");
+  fit_law->excludes(fit_table);
   fit_cmd->add_option("--packings", fit.packings,
                       "its per-packing companion (CSV): errors from a packing bootstrap; without "
                       "it, a parametric bootstrap from the table's standard errors");
@@ -102,9 +107,16 @@ int main(int argc, char** argv) {
       material_cmd
           ->add_option("--plateau-modulus", material.source.plateau_modulus,
                        "measured linear shear modulus G' [Pa] (amplitude-sweep plateau): "
-                       "E* = G' / (G' plateau/E*)(phi) from the law's amplitude sweep, or "
-                       "G' / (G0/E*)(phi) from its static G0 when it has none at phi")
+                       "E* = G' / (G0/E*)(phi) with the law's static G0, or G' / (G' "
+                       "plateau/E*)(phi) with its amplitude sweep (--plateau-source)")
           ->check(positive);
+  material_cmd
+      ->add_option("--plateau-source", material.source.plateau_source,
+                   "what a measured G' plateau is matched to: static (the law's G0, the flow-curve "
+                   "route) or amplitude-sweep (the plateau of its amplitude sweep)")
+      ->check(CLI::IsMember({"static", "amplitude-sweep"}))
+      ->capture_default_str()
+      ->needs(plateau);
   tension->needs(radius);
   radius->needs(tension);
   modulus->excludes(tension);
@@ -132,10 +144,19 @@ int main(int argc, char** argv) {
   auto* sweep_modulus =
       sweep_cmd->add_option("--modulus", sweep.source.modulus, "contact modulus E* [Pa]")
           ->check(positive);
-  auto* sweep_plateau = sweep_cmd
-                            ->add_option("--plateau-modulus", sweep.source.plateau_modulus,
-                                         "measured G' plateau [Pa]: E* = G' / (G' plateau/E*)(phi)")
-                            ->check(positive);
+  auto* sweep_plateau =
+      sweep_cmd
+          ->add_option("--plateau-modulus", sweep.source.plateau_modulus,
+                       "measured G' plateau [Pa]: E* = G' / (G0/E*)(phi), or G' / (G' "
+                       "plateau/E*)(phi) (--plateau-source)")
+          ->check(positive);
+  sweep_cmd
+      ->add_option("--plateau-source", sweep.source.plateau_source,
+                   "what a measured G' plateau is matched to: static (the law's G0, the flow-curve "
+                   "route) or amplitude-sweep (the plateau of the law's amplitude sweep)")
+      ->check(CLI::IsMember({"static", "amplitude-sweep"}))
+      ->capture_default_str()
+      ->needs(sweep_plateau);
   auto* sweep_tension =
       sweep_cmd
           ->add_option("--interfacial-tension", sweep.source.interfacial_tension,
@@ -223,6 +244,10 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    if (*fit_cmd && fit.table.empty() && fit.law.empty())
+      throw CLI::ValidationError("fit: give a flow-curve table, or --law with --oscillation");
+    if (*fit_cmd && !fit.law.empty() && fit.oscillation.empty())
+      throw CLI::ValidationError("fit: --law only adds an amplitude sweep: give --oscillation");
     for (const auto& [cmd, source, name] :
          {std::tuple(material_cmd, &material.source, "material"),
           std::tuple(sweep_cmd, &sweep.source, "amplitude-sweep")}) {

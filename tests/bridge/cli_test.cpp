@@ -329,14 +329,34 @@ TEST_F(BridgeCli, AmplitudeSweepFromTheLawAgainstAMeasuredOne) {
                   {"gamma0 [1],storage_measured [Pa],storage_predicted [Pa],storage_error [1]"});
   EXPECT_TRUE(fs::exists(work() / "out/amplitude_sweep.csv"));
 
-  // E* from the measured plateau recovers the ratio of the moduli.
-  const Outcome plateau =
-      bridge("amplitude-sweep law.prm --phi 0.8 --plateau-modulus 33 --viscosity 1e-3 -o plateau");
+  // An amplitude sweep added to a law already fitted keeps its flow laws.
+  ASSERT_EQ(bridge(std::string(kFit) + " -o plain.prm").code, 0);
+  const Outcome added = bridge("fit --law plain.prm --oscillation osc.csv -o added.prm");
+  ASSERT_EQ(added.code, 0) << added.err;
+  const std::string plain = testing::read_text(work() / "plain.prm"),
+                    with_sweep = testing::read_text(work() / "added.prm");
+  const auto body = [](const std::string& text) {
+    return text.substr(text.find("subsection law"));
+  };
+  const std::string flow = body(plain).substr(0, body(plain).rfind("end\n"));
+  EXPECT_EQ(body(with_sweep).substr(0, flow.size()), flow) << "the flow laws unchanged";
+  EXPECT_TRUE(body(with_sweep).substr(flow.size()).starts_with("  subsection amplitude sweep"));
+  expect_contains(with_sweep, {"an amplitude sweep added to a law", "subsection amplitude sweep"});
+  EXPECT_EQ(bridge("fit --law plain.prm -o x.prm").code, 2) << "--law needs --oscillation";
+
+  // E* from the measured plateau through the amplitude sweep recovers the
+  // ratio of the moduli; by default it is the flow-curve route's (static G0).
+  const Outcome plateau = bridge(
+      "amplitude-sweep law.prm --phi 0.8 --plateau-modulus 33 --plateau-source amplitude-sweep "
+      "--viscosity 1e-3 -o plateau");
   ASSERT_EQ(plateau.code, 0) << plateau.err;
-  expect_contains(plateau.out, {"E*       1100 Pa"});
+  expect_contains(plateau.out, {"E*       1100 Pa", "amplitude sweep at omega~ = 2e-07"});
+  const Outcome route =
+      bridge("amplitude-sweep law.prm --phi 0.8 --plateau-modulus 33 --viscosity 1e-3 -o static");
+  ASSERT_EQ(route.code, 0) << route.err;
+  expect_contains(route.out, {"the law's static G0"});
 
   // Bad input: a law without an amplitude sweep, data without loss modulus.
-  ASSERT_EQ(bridge(std::string(kFit) + " -o plain.prm").code, 0);
   const Outcome no_sweep =
       bridge("amplitude-sweep plain.prm --phi 0.8 --modulus 1000 --viscosity 1e-3 -o x");
   EXPECT_EQ(no_sweep.code, 2);

@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Amplitude sweeps of `micro oscillate`, drawn as a rheometer's software draws
+them: G' and G'' against the strain amplitude on log axes (filled and open
+symbols, one colour per volume fraction and frequency, the static G0 of the
+packings dashed), the relative intensity I3/I1 of the third harmonic, and the
+elastic Lissajous figures sigma/sigma_max against gamma/gamma0 of the last
+cycle of each run.
+
+    /usr/bin/python3 scripts/plot_oscillation.py OSCILLATION_DIR OUT_PREFIX
+
+reads OSCILLATION_DIR/oscillation.csv and the run files of OSCILLATION_DIR/runs;
+writes OUT_PREFIX_moduli.png and OUT_PREFIX_lissajous.png."""
+import csv
+import glob
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+try:
+    import h5py
+except ImportError:  # the Lissajous figures need the run files
+    h5py = None
+
+
+def read_table(path):
+    with open(path) as f:
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    names = [h.split(" [")[0] for h in rows[0]]
+    data = np.array([[float(v) for v in row] for row in rows[1:]])
+    return {name: data[:, k] for k, name in enumerate(names)}
+
+
+def moduli(t, prefix):
+    series = sorted(set(zip(t["phi"], t["omega_tilde"])))
+    colours = plt.cm.viridis(np.linspace(0, 0.9, len(series)))
+    fig, (ax, ax3) = plt.subplots(1, 2, figsize=(11, 4.2))
+    for (phi, omega), colour in zip(series, colours):
+        at = (t["phi"] == phi) & (t["omega_tilde"] == omega)
+        order = np.argsort(t["gamma0"][at])
+        g0 = t["gamma0"][at][order]
+        label = rf"$\phi$ = {phi:.2f}, $\tilde\omega$ = {omega:.3g}"
+        ax.errorbar(g0, t["storage"][at][order], yerr=t["storage_se"][at][order], fmt="o-",
+                    color=colour, ms=5, capsize=2, label=label + ": G'")
+        ax.errorbar(g0, t["loss"][at][order], yerr=t["loss_se"][at][order], fmt="s--",
+                    mfc="none", color=colour, ms=5, capsize=2, label="G''")
+        ax.axhline(t["G0"][at][0], color=colour, ls=":", lw=1)
+        ax3.plot(g0, t["intensity_3"][at][order], "o-", color=colour, ms=4, label=label)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel(r"strain amplitude $\gamma_0$")
+    ax.set_ylabel(r"$G'/E^*$ (filled), $G''/E^*$ (open); static $G_0$ dotted")
+    ax.legend(fontsize=7)
+    ax3.set_xscale("log")
+    ax3.set_yscale("log")
+    ax3.set_xlabel(r"strain amplitude $\gamma_0$")
+    ax3.set_ylabel(r"$I_3/I_1$")
+    fig.tight_layout()
+    fig.savefig(prefix + "_moduli.png", dpi=110)
+
+
+def lissajous(directory, prefix):
+    runs = []
+    for path in sorted(glob.glob(os.path.join(directory, "runs", "*.h5"))):
+        with h5py.File(path, "r") as f:
+            if "oscillation" not in f or "lissajous" not in f["oscillation"]:
+                continue
+            g = f["oscillation"]
+            phi = float(f["packing/volume_fraction"][()])
+            gamma0 = float(g["amplitude"][()])
+            strain = g["lissajous/strain"][()]
+            sigma = g["lissajous/sigma"][()]
+            runs.append((phi, gamma0, strain, sigma))
+    if not runs:
+        return
+    phis = sorted(set(r[0] for r in runs))
+    fig, axes = plt.subplots(1, len(phis), figsize=(4.2 * len(phis), 4), squeeze=False)
+    for ax, phi in zip(axes[0], phis):
+        mine = sorted((r for r in runs if r[0] == phi), key=lambda r: r[1])
+        colours = plt.cm.plasma(np.linspace(0, 0.85, len(mine)))
+        for (_, gamma0, strain, sigma), colour in zip(mine, colours):
+            x = (strain - 0.5 * (strain.max() + strain.min())) / gamma0
+            ax.plot(x, sigma / np.abs(sigma).max(), color=colour, lw=1.2,
+                    label=rf"$\gamma_0$ = {gamma0:.3g}")
+        ax.set_title(rf"$\phi$ = {phi:.2f}")
+        ax.set_xlabel(r"$\gamma/\gamma_0$")
+        ax.set_ylabel(r"$\sigma/\sigma_{max}$")
+        ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(prefix + "_lissajous.png", dpi=110)
+
+
+def main(directory, prefix):
+    moduli(read_table(os.path.join(directory, "oscillation.csv")), prefix)
+    if h5py is not None:
+        lissajous(directory, prefix)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2])
