@@ -10,7 +10,6 @@ cycle of each run.
 
 reads OSCILLATION_DIR/oscillation.csv and the run files of OSCILLATION_DIR/runs;
 writes OUT_PREFIX_moduli.png and OUT_PREFIX_lissajous.png."""
-import csv
 import glob
 import os
 import sys
@@ -21,18 +20,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from plot_flow_curve import read_table
+
 try:
     import h5py
 except ImportError:  # the Lissajous figures need the run files
     h5py = None
-
-
-def read_table(path):
-    with open(path) as f:
-        rows = list(csv.reader(line for line in f if not line.startswith("#")))
-    names = [h.split(" [")[0] for h in rows[0]]
-    data = np.array([[float(v) for v in row] for row in rows[1:]])
-    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 def moduli(t, prefix):

@@ -9,12 +9,12 @@
 #include "common/atomic_output.h"
 #include "common/progress.h"
 #include "micro/analysis/layering.h"
-#include "micro/results/packing_average.h"
-#include "micro/results/run_structure.h"
-#include "micro/input/parameter_file.h"
 #include "micro/app/run_steps.h"
+#include "micro/input/parameter_file.h"
 #include "micro/io/run_file.h"
 #include "micro/io/structure_csv.h"
+#include "micro/results/packing_average.h"
+#include "micro/results/run_structure.h"
 
 namespace softglass::micro {
 
@@ -82,14 +82,16 @@ void print_shear(const ShearRecord& s, double particles) {
 
 void print_structure(const StructureRecord& record) {
   const StructureResult& s = record.result;
-  fmt::print("structure {} snapshots (strain {:.1f} to {:.1f}): r_m = {:.4f} ± {:.4f} R, "
-             "f_m = {:.4e} E*R², Sigma_m = {:.4e} / R²\n",
-             s.snapshots, record.strain_from, record.strain_to, s.r_m.value, s.r_m.error, s.f_m.value,
-             s.sigma_m.value);
-  fmt::print("          sigma^e: virial {:.5e} ± {:.1e}, rebuilt from the structure {:.5e}, "
-             "from g_2-2 and the mean-radius force {:.5e}, f_m Sigma_m {:.5e} ± {:.1e}\n",
-             s.sigma_virial.value, s.sigma_virial.error, s.sigma_rebuilt.value, s.sigma_law.value,
-             s.fm_sigma_m.value, s.fm_sigma_m.error);
+  fmt::print(
+      "structure {} snapshots (strain {:.1f} to {:.1f}): r_m = {:.4f} ± {:.4f} R, "
+      "f_m = {:.4e} E*R², Sigma_m = {:.4e} / R²\n",
+      s.snapshots, record.strain_from, record.strain_to, s.r_m.value, s.r_m.error, s.f_m.value,
+      s.sigma_m.value);
+  fmt::print(
+      "          sigma^e: virial {:.5e} ± {:.1e}, rebuilt from the structure {:.5e}, "
+      "from g_2-2 and the mean-radius force {:.5e}, f_m Sigma_m {:.5e} ± {:.1e}\n",
+      s.sigma_virial.value, s.sigma_virial.error, s.sigma_rebuilt.value, s.sigma_law.value,
+      s.fm_sigma_m.value, s.fm_sigma_m.error);
 }
 
 void finish(RunRecord& record, AtomicOutput& out, Clock::time_point start) {
@@ -103,7 +105,8 @@ void pack_command(const CommandOptions& options) {
   const auto start = Clock::now();
   const MicroParameters prm = read_parameter_file(options.parameter_file);
   AtomicOutput out(options.output.value_or(prm.output_file), prm.overwrite || options.force);
-  RunRecord record = pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", options.quiet);
+  RunRecord record =
+      pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", options.quiet);
   print_packing(record, prm);
   finish(record, out, start);
 }

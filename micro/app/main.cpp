@@ -83,46 +83,33 @@ int main(int argc, char** argv) {
   summary->add_option("--csv", csv, "also write the table as CSV");
   summary->add_flag("-f,--force", options.force, "overwrite an existing CSV file");
 
-  micro::SweepOptions sweep_options;
+  // The commands that run a sweep of cases share their options (sweep_work.h).
+  micro::SweepOptions sweep_options, oscillate_options;
   std::size_t only_case = 0;
-  CLI::App* sweep = app.add_subcommand(
-      "sweep",
-      "flow curves: packings, then every (phi, gamma~, seed) case, then the flow-curve "
-      "table; resumable (finished files are skipped), one sweep per folder");
-  sweep
-      ->add_option("parameter_file", sweep_options.parameter_file,
-                   "sweep file: a run's parameters plus subsection 'sweep'")
-      ->required();
-  sweep->add_flag("--list", sweep_options.list,
-                  "print the cases and whether they are done; run nothing");
-  sweep->add_flag("--gather", sweep_options.gather_only,
-                  "only rebuild the tables from the finished runs");
-  auto* case_option =
-      sweep->add_option("--case", only_case,
-                        "run case K alone (and its packing if missing): one task of "
-                        "a batch array job; see --list");
-  sweep->add_flag("-q,--quiet", sweep_options.quiet, "no progress bar (the log lines stay)");
-
-  micro::OscillateOptions oscillate_options;
-  std::size_t only_oscillation_case = 0;
-  CLI::App* oscillate = app.add_subcommand(
-      "oscillate",
-      "oscillatory shear: amplitude and frequency sweeps (G', G'', I3/I1, Chebyshev "
-      "coefficients) over packings; resumable like sweep");
-  oscillate
-      ->add_option("parameter_file", oscillate_options.parameter_file,
-                   "oscillation file: a run's parameters plus subsection 'oscillation'")
-      ->required();
-  oscillate->add_flag("--list", oscillate_options.list,
-                      "print the cases and whether they are done; run nothing");
-  oscillate->add_flag("--gather", oscillate_options.gather_only,
-                      "only rebuild the tables from the finished runs");
-  auto* oscillation_case_option =
-      oscillate->add_option("--case", only_oscillation_case,
-                            "run case K alone (and its packing if missing): one task of a batch "
-                            "array job; see --list");
-  oscillate->add_flag("-q,--quiet", oscillate_options.quiet,
-                      "no progress bar (the log lines stay)");
+  const auto add_sweep = [&](const char* name, const char* what, const char* file,
+                             micro::SweepOptions& o) {
+    CLI::App* sub = app.add_subcommand(name, what);
+    sub->add_option("parameter_file", o.parameter_file, file)->required();
+    sub->add_flag("--list", o.list, "print the cases and whether they are done; run nothing");
+    sub->add_flag("--gather", o.gather_only, "only rebuild the tables from the finished runs");
+    sub->add_option("--case", only_case,
+                    "run case K alone (and its packing if missing): one task of a batch array "
+                    "job; see --list");
+    sub->add_flag("-q,--quiet", o.quiet, "no progress bar (the log lines stay)");
+    return sub;
+  };
+  CLI::App* sweep = add_sweep("sweep",
+                              "flow curves: packings, then every (phi, gamma~, seed) case, then "
+                              "the flow-curve table; resumable (finished files are skipped), one "
+                              "sweep per folder",
+                              "sweep file: a run's parameters plus subsection 'sweep'",
+                              sweep_options);
+  CLI::App* oscillate =
+      add_sweep("oscillate",
+                "oscillatory shear: amplitude and frequency sweeps (G', G'', I3/I1, Chebyshev "
+                "coefficients) over packings; resumable like sweep",
+                "oscillation file: a run's parameters plus subsection 'oscillation'",
+                oscillate_options);
 
   try {
     app.parse(argc, argv);
@@ -131,8 +118,8 @@ int main(int argc, char** argv) {
   }
   if (threads > 0) omp_set_num_threads(threads);
   if (!output.empty()) options.output = output;
-  if (*case_option) sweep_options.only_case = only_case;
-  if (*oscillation_case_option) oscillate_options.only_case = only_oscillation_case;
+  for (auto [sub, o] : {std::pair(sweep, &sweep_options), std::pair(oscillate, &oscillate_options)})
+    if (sub->count("--case") > 0) o->only_case = only_case;
   for (int k = 0; k < argc; ++k)
     sweep_options.command_line += (k ? " " : "") + std::string(argv[k]);
   oscillate_options.command_line = sweep_options.command_line;

@@ -172,73 +172,51 @@ void print_plan(const Oscillation& o) {
       pending / 3600.0);
 }
 
-void run_one_case(const Oscillation& o, std::size_t index, const Workers& workers, bool quiet) {
-  const OscillationPlan& plan = o.plan;
-  if (index >= plan.cases.size())
-    throw InputError(
-        fmt::format("--case {}: the oscillation has cases 0 … {}", index, plan.cases.size() - 1));
-  const OscillationCase& c = plan.cases[index];
-  const SweepPacking& packing = plan.packings[c.packing];
-  if (!std::filesystem::exists(packing.file))
-    make_packing(parameters_of(o, packing), packing, workers, quiet);
-  if (std::filesystem::exists(c.file)) {
-    log(workers, "case {} is done: {}", index, c.file.string());
-    return;
-  }
-  Progress bar("case", 1.0, quiet);
-  run_case(o, c, workers, [&](double fraction) { bar.update(fraction); });
-}
+// The oscillation sweep as run_sweep sees it.
+class OscillationSweep final : public CaseSweep {
+ public:
+  explicit OscillationSweep(Oscillation o) : o_(std::move(o)) {}
 
-void run_cases(const Oscillation& o, const Workers& workers, bool quiet) {
-  std::vector<SweepItem> items;
-  for (const OscillationCase& c : o.plan.cases)
-    items.push_back({c.file, checkpoint_file(c), c.cost});
-  const std::size_t failed =
-      run_pending(items, workers, quiet, "oscillate", [&](std::size_t k, const auto& progress) {
-        run_case(o, o.plan.cases[k], workers, progress);
-      });
-  if (!workers.all(failed == 0) && workers.leader())
-    log(workers, "some cases failed; the table holds the others");
-  if (failed > 0 && !workers.leader())
-    throw NumericalError(fmt::format("{} case(s) failed on rank {}", failed, workers.rank()));
-}
+  std::string name() const override { return "oscillate"; }
+  const std::filesystem::path& directory() const override { return o_.plan.directory; }
+  std::size_t particles() const override { return o_.plan.particles; }
+  const std::vector<SweepPacking>& packings() const override { return o_.plan.packings; }
+  MicroParameters packing_parameters(std::size_t k) const override {
+    return parameters_of(o_, o_.plan.packings[k]);
+  }
+  std::vector<SweepItem> cases() const override {
+    std::vector<SweepItem> items;
+    for (const OscillationCase& c : o_.plan.cases)
+      items.push_back({c.file, checkpoint_file(c), c.cost});
+    return items;
+  }
+  std::size_t packing_of(std::size_t k) const override { return o_.plan.cases[k].packing; }
+  void check_before_work() const override { check_cases_before_work(o_); }
+  void print_plan() const override { micro::print_plan(o_); }
+  std::string headline(std::size_t done, const Workers& workers) const override {
+    return fmt::format("oscillate N = {}, {} cases ({} done), {} workers -> {}", o_.plan.particles,
+                       o_.plan.cases.size(), done, workers.size(), o_.plan.directory.string());
+  }
+  void run_case(std::size_t k, const Workers& workers,
+                const std::function<void(double)>& progress) const override {
+    micro::run_case(o_, o_.plan.cases[k], workers, progress);
+  }
+  std::size_t write_tables(const Workers& workers) const override {
+    return micro::write_tables(o_, workers);
+  }
+
+ private:
+  Oscillation o_;
+};
 
 }  // namespace
 
-void oscillate_command(const OscillateOptions& options, const Workers& workers) {
+void oscillate_command(const SweepOptions& options, const Workers& workers) {
   Oscillation o;
   o.parameters = read_oscillation_file(options.parameter_file);
   o.plan = make_oscillation_plan(o.parameters.spec);
   o.command_line = options.command_line;
-  const OscillationPlan& plan = o.plan;
-  if (options.list) {
-    if (workers.leader()) print_plan(o);
-    return;
-  }
-  check_cases_before_work(o);
-  if (options.only_case) return run_one_case(o, *options.only_case, workers, options.quiet);
-
-  std::optional<DirectoryLock> lock;
-  if (!lock_folder(plan.directory, workers, lock)) return;
-  if (!options.gather_only) {
-    if (workers.leader()) {
-      std::size_t done = 0;
-      for (const auto& c : plan.cases) done += std::filesystem::exists(c.file);
-      log(workers, "oscillate N = {}, {} cases ({} done), {} workers -> {}", plan.particles,
-          plan.cases.size(), done, workers.size(), plan.directory.string());
-    }
-    make_packings(
-        plan.packings, plan.particles,
-        [&](std::size_t k) { return parameters_of(o, plan.packings[k]); }, workers);
-    run_cases(o, workers, options.quiet);
-  }
-  if (!workers.leader()) return;
-  const std::size_t missing = write_tables(o, workers);
-  if (missing > 0)
-    throw NumericalError(fmt::format(
-        "{} of {} runs are missing; their state points are left out of the table (rerun to "
-        "complete it)",
-        missing, plan.cases.size()));
+  run_sweep(OscillationSweep(std::move(o)), options, workers);
 }
 
 }  // namespace softglass::micro

@@ -47,6 +47,28 @@ Checkpointing checkpointing_of(const CheckpointSettings& checkpoints,
   return c;
 }
 
+// The checkpoints of a run of the overdamped dynamics by `scheme`: saved into
+// the file of `settings`, and resumed from it when it exists.
+class DynamicsCheckpoints {
+ public:
+  DynamicsCheckpoints(const CheckpointSettings& settings, const IntegratorSpec& scheme)
+      : resume_(existing_checkpoint<ShearCheckpoint>(settings, read_checkpoint)),
+        checkpointing_(checkpointing_of<ShearCheckpointing>(settings, resume_)) {
+    if (!settings.file.empty())
+      checkpointing_.new_integrator = [scheme] { return make_integrator(scheme); };
+  }
+  DynamicsCheckpoints(const DynamicsCheckpoints&) = delete;
+  DynamicsCheckpoints& operator=(const DynamicsCheckpoints&) = delete;
+
+  const ShearCheckpointing& checkpointing() const { return checkpointing_; }
+  /// Wall time run before the checkpoint resumed from (0 for a fresh run).
+  double resumed_seconds() const { return resume_ ? resume_->seconds : 0.0; }
+
+ private:
+  std::optional<ShearCheckpoint> resume_;
+  ShearCheckpointing checkpointing_;
+};
+
 // A run's progress as the commands follow it: (strain, worst relative error).
 std::function<void(const ShearProgress&)> follow(
     const std::function<void(double, double)>& progress) {
@@ -117,19 +139,15 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   // `auto` becomes a concrete scheme for this run's rate (integrator.h).
   const IntegratorSpec scheme = prm.integrator.resolved_for(prm.shear_model.gamma_tilde);
   const auto integrator = make_integrator(scheme);
-
-  const std::optional<ShearCheckpoint> resume =
-      existing_checkpoint<ShearCheckpoint>(checkpoints, read_checkpoint);
-  auto checkpointing = checkpointing_of<ShearCheckpointing>(checkpoints, resume);
-  if (!checkpoints.file.empty())
-    checkpointing.new_integrator = [&] { return make_integrator(scheme); };
+  const DynamicsCheckpoints resumable(checkpoints, scheme);
   ShearRecord shear;
   shear.gamma_tilde = prm.shear_model.gamma_tilde;
   shear.integrator = fmt::format("{}, tolerance {}", scheme.name, scheme.tolerance);
-  shear.result = run_shear(flow, *integrator, prm.protocol, follow(progress), checkpointing);
+  shear.result =
+      run_shear(flow, *integrator, prm.protocol, follow(progress), resumable.checkpointing());
   shear.final_particles = flow.system().wrapped_in_label_order();
   shear.final_box = flow.system().box();
-  keep_run(record, std::move(shear), resume ? resume->seconds : 0.0, start, *law, prm);
+  keep_run(record, std::move(shear), resumable.resumed_seconds(), start, *law, prm);
 }
 
 void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters& prm,
@@ -166,12 +184,7 @@ void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<co
       drive);
   const IntegratorSpec scheme = oscillation_integrator(prm.integrator, protocol);
   const auto integrator = make_integrator(scheme);
-
-  const std::optional<ShearCheckpoint> resume =
-      existing_checkpoint<ShearCheckpoint>(checkpoints, read_checkpoint);
-  auto checkpointing = checkpointing_of<ShearCheckpointing>(checkpoints, resume);
-  if (!checkpoints.file.empty())
-    checkpointing.new_integrator = [&] { return make_integrator(scheme); };
+  const DynamicsCheckpoints resumable(checkpoints, scheme);
   OscillationRecord oscillation;
   oscillation.protocol = protocol;
   oscillation.integrator = fmt::format("{}, tolerance {}", scheme.name, scheme.tolerance);
@@ -181,10 +194,10 @@ void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<co
       [&](const ShearProgress& p) {
         if (progress) progress(p.strain / period, p.worst_relative_error);
       },
-      checkpointing);
+      resumable.checkpointing());
   oscillation.final_particles = flow.system().wrapped_in_label_order();
   oscillation.final_box = flow.system().box();
-  const double resumed = resume ? resume->seconds : 0.0;
+  const double resumed = resumable.resumed_seconds();
   record.timings.resumed = resumed;
   record.timings.shear = resumed + seconds_since(start);
   record.oscillation = std::move(oscillation);

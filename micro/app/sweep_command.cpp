@@ -236,40 +236,46 @@ void print_plan(const Sweep& sweep) {
       modelled_core_seconds(sweep, false) / 3600.0, modelled_core_seconds(sweep, true) / 3600.0);
 }
 
-// `--case K` of a batch array: that case alone (and its packing), no lock —
-// other tasks share the folder.
-void run_one_case(const Sweep& sweep, std::size_t index, const Workers& workers, bool quiet) {
-  const SweepPlan& plan = sweep.plan;
-  if (index >= plan.cases.size())
-    throw InputError(
-        fmt::format("--case {}: the sweep has cases 0 … {}", index, plan.cases.size() - 1));
-  const SweepCase& c = plan.cases[index];
-  const SweepPacking& packing = plan.packings[c.packing];
-  if (!std::filesystem::exists(packing.file))
-    make_packing(parameters_of(sweep, packing), packing, workers, quiet);
-  if (std::filesystem::exists(c.file)) {
-    log(workers, "case {} is done: {}", index, c.file.string());
-    return;
-  }
-  Progress bar("case", 1.0, quiet);
-  run_case(sweep, c, workers, [&](double fraction) { bar.update(fraction); });
-}
+// The flow-curve sweep as run_sweep sees it.
+class FlowCurveSweep final : public CaseSweep {
+ public:
+  explicit FlowCurveSweep(Sweep sweep) : sweep_(std::move(sweep)) {}
 
-// The pending cases, spread over the workers by cost (longest first); a failed
-// case is logged and left out, the others go on.
-void run_cases(const Sweep& sweep, const Workers& workers, bool quiet) {
-  const SweepPlan& plan = sweep.plan;
-  std::vector<SweepItem> items;
-  for (const SweepCase& c : plan.cases) items.push_back({c.file, checkpoint_file(c), c.cost});
-  const std::size_t failed =
-      run_pending(items, workers, quiet, "sweep", [&](std::size_t k, const auto& progress) {
-        run_case(sweep, plan.cases[k], workers, progress);
-      });
-  if (!workers.all(failed == 0) && workers.leader())
-    log(workers, "some cases failed; the table holds the others");
-  if (failed > 0 && !workers.leader())
-    throw NumericalError(fmt::format("{} case(s) failed on rank {}", failed, workers.rank()));
-}
+  std::string name() const override { return "sweep"; }
+  const std::filesystem::path& directory() const override { return sweep_.plan.directory; }
+  std::size_t particles() const override { return sweep_.plan.particles; }
+  const std::vector<SweepPacking>& packings() const override { return sweep_.plan.packings; }
+  MicroParameters packing_parameters(std::size_t k) const override {
+    return parameters_of(sweep_, sweep_.plan.packings[k]);
+  }
+  std::vector<SweepItem> cases() const override {
+    std::vector<SweepItem> items;
+    for (const SweepCase& c : sweep_.plan.cases)
+      items.push_back({c.file, checkpoint_file(c), c.cost});
+    return items;
+  }
+  std::size_t packing_of(std::size_t k) const override { return sweep_.plan.cases[k].packing; }
+  void check_before_work() const override { check_cases_before_work(sweep_); }
+  void print_plan() const override { micro::print_plan(sweep_); }
+  std::string headline(std::size_t done, const Workers& workers) const override {
+    const SweepPlan& plan = sweep_.plan;
+    return fmt::format(
+        "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}; estimated at least "
+        "{:.2g} h (cost model, docs/sweeps.md)",
+        sweep_.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
+        plan.directory.string(), estimated_hours(sweep_, workers.size()));
+  }
+  void run_case(std::size_t k, const Workers& workers,
+                const std::function<void(double)>& progress) const override {
+    micro::run_case(sweep_, sweep_.plan.cases[k], workers, progress);
+  }
+  std::size_t write_tables(const Workers& workers) const override {
+    return micro::write_tables(sweep_, workers);
+  }
+
+ private:
+  Sweep sweep_;
+};
 
 }  // namespace
 
@@ -278,39 +284,7 @@ void sweep_command(const SweepOptions& options, const Workers& workers) {
   sweep.parameters = read_sweep_file(options.parameter_file);
   sweep.plan = make_sweep_plan(sweep.parameters.spec);
   sweep.command_line = options.command_line;
-  const SweepPlan& plan = sweep.plan;
-
-  if (options.list) {
-    if (workers.leader()) print_plan(sweep);
-    return;
-  }
-  check_cases_before_work(sweep);
-  if (options.only_case) return run_one_case(sweep, *options.only_case, workers, options.quiet);
-
-  std::optional<DirectoryLock> lock;
-  if (!lock_folder(plan.directory, workers, lock)) return;
-  if (!options.gather_only) {
-    if (workers.leader()) {
-      std::size_t done = 0;
-      for (const auto& c : plan.cases) done += std::filesystem::exists(c.file);
-      log(workers,
-          "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}; estimated at "
-          "least {:.2g} h (cost model, docs/sweeps.md)",
-          sweep.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
-          plan.directory.string(), estimated_hours(sweep, workers.size()));
-    }
-    make_packings(
-        plan.packings, plan.particles,
-        [&](std::size_t k) { return parameters_of(sweep, plan.packings[k]); }, workers);
-    run_cases(sweep, workers, options.quiet);
-  }
-  if (!workers.leader()) return;
-  const std::size_t missing = write_tables(sweep, workers);
-  if (missing > 0)
-    throw NumericalError(fmt::format(
-        "{} of {} runs are missing; their state points are left out of the table (rerun the "
-        "sweep to complete it)",
-        missing, plan.cases.size()));
+  run_sweep(FlowCurveSweep(std::move(sweep)), options, workers);
 }
 
 }  // namespace softglass::micro

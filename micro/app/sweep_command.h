@@ -1,27 +1,12 @@
 // `micro sweep`: a flow curve over volume fractions, shear rates and packings.
 #pragma once
 
-#include <filesystem>
-#include <optional>
-#include <string>
-
-#include "micro/input/parameter_file.h"
-#include "micro/app/workers.h"
+#include "micro/app/sweep_work.h"
 
 namespace softglass::micro {
 
-struct SweepOptions {
-  std::filesystem::path parameter_file;
-  std::string command_line;             // recorded in the tables
-  bool quiet = false;                   // no progress bar (log lines stay)
-  bool list = false;                    // print the cases and their state, run nothing
-  bool gather_only = false;             // only rebuild the tables from finished runs
-  std::optional<std::size_t> only_case;  // batch-array mode: this case alone
-};
-
-/// Runs what is missing of the sweep, then writes the flow-curve tables.
-/// Throws InputError for a bad file or a folder locked by another sweep, and
-/// NumericalError when runs failed (the table then holds the others).
+/// Runs what is missing of the sweep, then writes the flow-curve tables
+/// (run_sweep, sweep_work.h).
 void sweep_command(const SweepOptions& options, const Workers& workers);
 
 }  // namespace softglass::micro

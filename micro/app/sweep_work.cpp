@@ -36,8 +36,9 @@ std::vector<std::size_t> my_share(const std::vector<std::size_t>& work,
   return mine;
 }
 
-}  // namespace
-
+// Only one sweep per folder; the ranks of this one agree before going on. The
+// leader takes the lock into `lock`; when it is refused, the leader throws and
+// the others return false.
 bool lock_folder(const std::filesystem::path& directory, const Workers& workers,
                  std::optional<DirectoryLock>& lock) {
   std::string lock_error;
@@ -53,6 +54,7 @@ bool lock_folder(const std::filesystem::path& directory, const Workers& workers,
   return false;
 }
 
+// Makes and measures the packing of `prm` and writes it to `packing.file`.
 void make_packing(const MicroParameters& prm, const SweepPacking& packing, const Workers& workers,
                   bool quiet) {
   const auto start = Clock::now();
@@ -65,6 +67,9 @@ void make_packing(const MicroParameters& prm, const SweepPacking& packing, const
       seconds_since(start), packing.file.string());
 }
 
+// Runs this worker's share of the items not done yet (LPT); one progress bar,
+// the leader's, labelled `bar`. A failed item is logged and left out; returns
+// how many failed on this worker.
 std::size_t run_pending(
     const std::vector<SweepItem>& items, const Workers& workers, bool quiet, const std::string& bar,
     const std::function<void(std::size_t, const std::function<void(double)>&)>& run) {
@@ -101,6 +106,50 @@ std::size_t run_pending(
   return failed;
 }
 
+// The packings first: every case of a (φ, seed) starts from its packing.
+void make_packings(const CaseSweep& sweep, const Workers& workers) {
+  const std::vector<SweepPacking>& packings = sweep.packings();
+  std::vector<SweepItem> items;
+  for (const SweepPacking& p : packings) items.push_back({p.file, {}, double(sweep.particles())});
+  const std::size_t failed =
+      run_pending(items, workers, true, "packings", [&](std::size_t k, auto&) {
+        make_packing(sweep.packing_parameters(k), packings[k], workers, true);
+      });
+  if (!workers.all(failed == 0))
+    throw NumericalError("some packings failed (see above); rerun to retry");
+}
+
+// `--case K` of a batch array: that case alone (and its packing), no lock.
+void run_one_case(const CaseSweep& sweep, std::size_t index, const Workers& workers, bool quiet) {
+  const std::vector<SweepItem> cases = sweep.cases();
+  if (index >= cases.size())
+    throw InputError(
+        fmt::format("--case {}: the {} has cases 0 … {}", index, sweep.name(), cases.size() - 1));
+  const SweepPacking& packing = sweep.packings()[sweep.packing_of(index)];
+  if (!std::filesystem::exists(packing.file))
+    make_packing(sweep.packing_parameters(sweep.packing_of(index)), packing, workers, quiet);
+  if (std::filesystem::exists(cases[index].file)) {
+    log(workers, "case {} is done: {}", index, cases[index].file.string());
+    return;
+  }
+  Progress bar("case", 1.0, quiet);
+  sweep.run_case(index, workers, [&](double fraction) { bar.update(fraction); });
+}
+
+// The pending cases, spread over the workers by cost; a failed case is logged
+// and left out, the others go on.
+void run_cases(const CaseSweep& sweep, const Workers& workers, bool quiet) {
+  const std::size_t failed = run_pending(
+      sweep.cases(), workers, quiet, sweep.name(),
+      [&](std::size_t k, const auto& progress) { sweep.run_case(k, workers, progress); });
+  if (!workers.all(failed == 0) && workers.leader())
+    log(workers, "some cases failed; the table holds the others");
+  if (failed > 0 && !workers.leader())
+    throw NumericalError(fmt::format("{} case(s) failed on rank {}", failed, workers.rank()));
+}
+
+}  // namespace
+
 MicroParameters checked_parameters(const std::string& context, double phi, unsigned seed,
                                    const std::function<MicroParameters()>& parameters) {
   try {
@@ -131,16 +180,33 @@ void write_sweep_tables(const SweepTableFiles& files, const std::string& name,
   AtomicOutput::commit_together({&csv, &packings_csv, &h5});
 }
 
-void make_packings(const std::vector<SweepPacking>& packings, std::size_t particles,
-                   const std::function<MicroParameters(std::size_t)>& parameters,
-                   const Workers& workers) {
-  std::vector<SweepItem> items;
-  for (const SweepPacking& p : packings) items.push_back({p.file, {}, double(particles)});
-  const std::size_t failed = run_pending(
-      items, workers, true, "packings",
-      [&](std::size_t k, auto&) { make_packing(parameters(k), packings[k], workers, true); });
-  if (!workers.all(failed == 0))
-    throw NumericalError("some packings failed (see above); rerun to retry");
+void run_sweep(const CaseSweep& sweep, const SweepOptions& options, const Workers& workers) {
+  if (options.list) {
+    if (workers.leader()) sweep.print_plan();
+    return;
+  }
+  sweep.check_before_work();
+  if (options.only_case) return run_one_case(sweep, *options.only_case, workers, options.quiet);
+
+  std::optional<DirectoryLock> lock;
+  if (!lock_folder(sweep.directory(), workers, lock)) return;
+  const std::vector<SweepItem> cases = sweep.cases();
+  if (!options.gather_only) {
+    if (workers.leader()) {
+      std::size_t done = 0;
+      for (const auto& c : cases) done += std::filesystem::exists(c.file);
+      log(workers, "{}", sweep.headline(done, workers));
+    }
+    make_packings(sweep, workers);
+    run_cases(sweep, workers, options.quiet);
+  }
+  if (!workers.leader()) return;
+  const std::size_t missing = sweep.write_tables(workers);
+  if (missing > 0)
+    throw NumericalError(fmt::format(
+        "{} of {} runs are missing; their state points are left out of the table (rerun the "
+        "{} to complete it)",
+        missing, cases.size(), sweep.name()));
 }
 
 }  // namespace softglass::micro

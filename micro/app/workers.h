@@ -8,7 +8,7 @@ namespace softglass::micro {
 
 class Workers {
  public:
-  Workers();  // MPI_Init when launched by an MPI starter
+  Workers();   // MPI_Init when launched by an MPI starter
   ~Workers();  // MPI_Finalize
   Workers(const Workers&) = delete;
   Workers& operator=(const Workers&) = delete;

@@ -65,6 +65,18 @@ std::uint64_t configuration_fingerprint(const H5Group& configuration) {
   return hash;
 }
 
+void write_counters(H5Group& c, const ShearCounters& k) {
+  c.set_attribute("steps", static_cast<std::int64_t>(k.steps));
+  c.set_attribute("rejected_steps", static_cast<std::int64_t>(k.rejected_steps));
+  c.set_attribute("evaluations", static_cast<std::int64_t>(k.evaluations));
+  c.set_attribute("neighbour_builds", static_cast<std::int64_t>(k.neighbour_builds));
+  c.set_attribute("fixed_point_sweeps", static_cast<std::int64_t>(k.fixed_point_sweeps));
+  c.set_attribute("newton_iterations", static_cast<std::int64_t>(k.newton_iterations));
+  c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
+  c.set_attribute("smallest_step", k.smallest_step);
+  c.set_attribute("largest_step", k.largest_step);
+}
+
 void write_configuration(H5Group&& g, const Particles& p, const LeesEdwardsBox& box) {
   g.write("position", flatten(p.position), {p.size(), 3},
           {"R", "particle centres in the primary cell [0, L)^3; x flow, y gradient, z vorticity"});

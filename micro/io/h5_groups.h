@@ -48,6 +48,10 @@ void write_time_series(H5Group&& g, const TimeSeries& t);
 TimeSeries read_time_series(const H5Group& g, const std::string& where);
 
 void write_snapshots(H5Group&& g, const std::vector<Snapshot>& snapshots);
+
+/// A run's counters as attributes of `g` (steps, rejections, evaluations, list
+/// builds, solver iterations, smallest and largest step).
+void write_counters(H5Group& g, const ShearCounters& counters);
 /// Snapshots of `particles` particles each.
 std::vector<Snapshot> read_snapshots(const H5Group& g, std::size_t particles,
                                      const std::string& where);

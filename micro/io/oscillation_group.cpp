@@ -105,16 +105,6 @@ void write_lissajous(H5Group&& g, const TimeSeries& series, const OscillationPro
   g.write("sigma_viscous", v, {}, {"E*", "its viscous part"});
 }
 
-void write_counters(H5Group&& c, const ShearCounters& k) {
-  c.set_attribute("steps", static_cast<std::int64_t>(k.steps));
-  c.set_attribute("rejected_steps", static_cast<std::int64_t>(k.rejected_steps));
-  c.set_attribute("evaluations", static_cast<std::int64_t>(k.evaluations));
-  c.set_attribute("neighbour_builds", static_cast<std::int64_t>(k.neighbour_builds));
-  c.set_attribute("newton_iterations", static_cast<std::int64_t>(k.newton_iterations));
-  c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
-  c.set_attribute("smallest_step", k.smallest_step);
-  c.set_attribute("largest_step", k.largest_step);
-}
 
 }  // namespace
 
@@ -126,7 +116,8 @@ void write_oscillation(H5Group&& g, const OscillationRecord& record) {
   write_cycles(g, r.cycles);
   write_summary(g.create_group("summary"), r);
   write_lissajous(g.create_group("lissajous"), r.series, record.protocol, r.cycles.size());
-  write_counters(g.create_group("counters"), r.counters);
+  H5Group counters = g.create_group("counters");
+  write_counters(counters, r.counters);
   write_configuration(g.create_group("configuration"), record.final_particles, record.final_box);
 }
 

@@ -88,16 +88,7 @@ void write_shear(H5Group&& g, const ShearRecord& s) {
   }
 
   H5Group c = g.create_group("counters");
-  const ShearCounters& k = r.counters;
-  c.set_attribute("steps", static_cast<std::int64_t>(k.steps));
-  c.set_attribute("rejected_steps", static_cast<std::int64_t>(k.rejected_steps));
-  c.set_attribute("evaluations", static_cast<std::int64_t>(k.evaluations));
-  c.set_attribute("neighbour_builds", static_cast<std::int64_t>(k.neighbour_builds));
-  c.set_attribute("fixed_point_sweeps", static_cast<std::int64_t>(k.fixed_point_sweeps));
-  c.set_attribute("newton_iterations", static_cast<std::int64_t>(k.newton_iterations));
-  c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
-  c.set_attribute("smallest_step", k.smallest_step);
-  c.set_attribute("largest_step", k.largest_step);
+  write_counters(c, r.counters);
   if (s.quasi_static) {
     c.set_attribute("stress_drops", static_cast<std::int64_t>(s.quasi_static->stress_drops));
     c.set_attribute("unconverged_steps",
