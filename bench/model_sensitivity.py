@@ -111,6 +111,11 @@ VARIANTS = {
                  "a share 0.1 of the Stokes friction against the affine flow"),
     "share0.3": ({("drag", "stokes reservoir share"): "0.3"},
                  "a share 0.3 of the Stokes friction against the affine flow"),
+    # Films of finite rest thickness h0 (units of R): linear drag below the
+    # sliding speed at which the EHD film would be thinner (micro/model/film.h);
+    # 2e-3 and 6e-3 are 6 and 20 nm for R = 3 um (docs/oscillation.md).
+    "h0_0.002": ({("drag", "film rest thickness"): "0.002"}, "films of rest thickness 0.002 R"),
+    "h0_0.006": ({("drag", "film rest thickness"): "0.006"}, "films of rest thickness 0.006 R"),
 }
 
 

@@ -167,8 +167,8 @@ void print_plan(const Oscillation& o) {
                c.file.string());
   }
   fmt::print(
-      "cost     about {:.3g} core hours pending (cost model: the steady-shear one at each "
-      "case's peak rate, min cycles)\n",
+      "cost     about {:.3g} core hours pending (cost model: "
+      "micro/sweep/oscillation_plan.cpp, within a factor 2)\n",
       pending / 3600.0);
 }
 

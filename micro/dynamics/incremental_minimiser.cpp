@@ -27,6 +27,7 @@ void FrozenDrag::clear() {
   j.clear();
   normal.clear();
   coefficient.clear();
+  crossover.clear();
   affine.clear();
   dashpot.clear();
   shift.clear();
@@ -41,9 +42,12 @@ void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const Eh
     out.i.push_back(c.i[k]);
     out.j.push_back(c.j[k]);
     out.normal.push_back(n);
-    out.coefficient.push_back(settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
-                                                                  c.force[k], c.deformation[k])
-                                               : 0.0);
+    const double a = settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
+                                                         c.force[k], c.deformation[k])
+                                      : 0.0;
+    out.coefficient.push_back(a);
+    out.crossover.push_back(film_crossover(settings.rest_thickness, gamma_tilde, a,
+                                           c.contact_radius[k], c.deformation[k]));
     out.affine.push_back(settings.film.affine(n, c.separation[k], rate));
     out.shift.push_back(rate * c.separation[k].y());
   }
@@ -78,9 +82,9 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
     const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
     w[k] = drag.film.project(drag.normal[k], du) + drag.affine[k];
     const double speed = w[k].norm();
-    value.dissipation += h * (2.0 / 3.0) * drag.coefficient[k] * speed * std::sqrt(speed);
-    Vec3 f = speed > 0.0 ? Vec3(w[k] * (drag.coefficient[k] / std::sqrt(speed)))  // a |w|^{1/2} ŵ
-                         : Vec3::Zero();
+    const FilmLaw law{drag.coefficient[k], drag.crossover[k]};
+    value.dissipation += h * law.potential(speed);
+    Vec3 f = w[k] * law.secant(speed);                // a |w|^{1/2} ŵ on the EHD branch (film.h)
     if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + c d_y e_x
       const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());
       value.dissipation += h * 0.5 * b * q0.squaredNorm();
@@ -131,8 +135,10 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
     if (a > 0.0) {
       const double speed = w_[k].norm();
       const double floor_speed = (force_floor / a) * (force_floor / a);
-      const double s = a / std::sqrt(std::max(speed, floor_speed)) / h;
-      const Vec3 unit = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
+      const FilmLaw law{a, drag.crossover[k]};
+      const double s = law.secant(std::max(speed, floor_speed)) / h;
+      // A film in its linear regime has the isotropic curvature s P: no relief.
+      const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w_[k] / speed) : Vec3::Zero();
       b += s * (drag.film.projector(drag.normal[k]) - relief_[k] * unit * unit.transpose());
     }
     diagonal_[drag.i[k]] += b;

@@ -77,6 +77,7 @@ struct FrozenDrag {
   std::vector<std::uint32_t> i, j;
   std::vector<Vec3> normal;         // n_c
   std::vector<double> coefficient;  // a_c (0 without EHD)
+  std::vector<double> crossover;    // w* of a film of rest thickness (film.h), or 0
   std::vector<Vec3> affine;         // w⁰_c = P_c (c d_y e_x), or 0
   std::vector<double> dashpot;      // b_c of the Stokes pair dashpots (stokes_friction.h), or 0
   std::vector<double> shift;        // c d_y: the pair's affine relative velocity is c d_y e_x

@@ -189,6 +189,12 @@ void declare_drag(ParameterHandler& prm, Entries& e) {
         "full (also approach and separation, a declared extension) or nonaffine (sliding "
         "relative to the affine flow, a diagnostic); docs/physics.md.",
         Patterns::Selection(film_velocity_names()));
+  entry(prm, "film rest thickness", p.shear_model.drag.rest_thickness,
+        "Thickness h0 of a film at rest, in units of the mean radius R (a surfactant film: nm "
+        "over R): the film drags linearly, eta_s u A/h0, below the sliding speed at which the "
+        "EHD film would be thinner than h0 (a declared extension; docs/physics.md). 0: the "
+        "paper's law at every speed.",
+        Patterns::Double(0.0, 1.0));
   entry(prm, "stokes reference", e.stokes_reference,
         "What the Stokes friction 6 pi eta_s R / f_r acts against: affine (the paper: the motion "
         "relative to the imposed flow) or neighbours (relative to the contacting particles, as "

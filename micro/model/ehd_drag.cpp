@@ -20,6 +20,11 @@ constexpr int kMaxHalvings = 50;
 inline double drag_coefficient(const ContactList& c, std::size_t k, double gamma_tilde) {
   return film_coefficient(gamma_tilde, c.contact_radius[k], c.force[k], c.deformation[k]);
 }
+// The film law of contact k (film.h) with coefficient `a`.
+inline FilmLaw film_law(const ContactList& c, std::size_t k, double gamma_tilde, double a,
+                        double rest_thickness) {
+  return {a, film_crossover(rest_thickness, gamma_tilde, a, c.contact_radius[k], c.deformation[k])};
+}
 // The whole relative velocity q⁰ = v_i − v_j + c d_y e_x of a contact with
 // non-affine part q at shear rate c: what the Stokes pair dashpots act on.
 inline Vec3 relative_velocity(const Vec3& q, const Vec3& d, double rate) {
@@ -43,6 +48,8 @@ void EhdSettings::validate() const {
           "neighbours needs 'implicit'");
   require(stokes.reservoir_share > 0.0 && stokes.reservoir_share <= 1.0,
           fmt::format("Stokes reservoir share = {} is outside (0, 1]", stokes.reservoir_share));
+  require(std::isfinite(rest_thickness) && rest_thickness >= 0.0 && rest_thickness < 1.0,
+          fmt::format("film rest thickness = {} is outside [0, 1) (units of R)", rest_thickness));
   require(tolerance > 0.0 && tolerance < 1e-2,
           fmt::format("velocity solve tolerance = {} is outside (0, 1e-2)", tolerance));
   require(max_newton_iterations >= 1, "velocity solve needs at least one Newton iteration");
@@ -59,6 +66,7 @@ void EhdDrag::prepare(const ContactList& c, double gamma_tilde, double rate,
   rate_ = rate;
   geometry_.normal.resize(m);
   geometry_.coefficient.resize(m);
+  geometry_.crossover.resize(m);
   geometry_.affine.resize(m);
   settings_.stokes.pair_coefficients(c, friction, geometry_.dashpot);
   reservoir_.resize(friction.size());
@@ -71,6 +79,8 @@ void EhdDrag::prepare(const ContactList& c, double gamma_tilde, double rate,
   for (std::size_t k = 0; k < m; ++k) {
     geometry_.normal[k] = c.separation[k].normalized();
     geometry_.coefficient[k] = ehd ? drag_coefficient(c, k, gamma_tilde) : 0.0;
+    geometry_.crossover[k] =
+        film_law(c, k, gamma_tilde, geometry_.coefficient[k], settings_.rest_thickness).crossover;
     geometry_.affine[k] = settings_.film.affine(geometry_.normal[k], c.separation[k], rate);
   }
 }
@@ -114,9 +124,10 @@ void EhdDrag::gradient_at(const ContactList& c, std::span<const Vec3> force,
   for (std::size_t k = 0; k < m; ++k) {
     const Vec3 q = v[c.i[k]] - v[c.j[k]];
     w[k] = settings_.film.project(geometry_.normal[k], q) + geometry_.affine[k];
-    const double speed = w[k].norm();
-    // ∂/∂w of ⅔ a |w|^{3/2} = a |w|^{1/2} ŵ = a w / |w|^{1/2}; of ½ b |q⁰|², b q⁰
-    const double secant = speed > 0.0 ? geometry_.coefficient[k] / std::sqrt(speed) : 0.0;
+    // ∂/∂w of the film potential = s(|w|) w (film.h: a w/|w|^{1/2} on the EHD
+    // branch); of ½ b |q⁰|², b q⁰
+    const double secant =
+        FilmLaw{geometry_.coefficient[k], geometry_.crossover[k]}.secant(w[k].norm());
     scratch_[k] =
         w[k] * secant + geometry_.dashpot[k] * relative_velocity(q, c.separation[k], rate_);
     secant_[k] = secant;
@@ -139,8 +150,10 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
     const double resolution = settings_.tolerance * velocity_scale *
                               std::min(friction[c.i[k]], friction[c.j[k]]) /
                               geometry_.coefficient[k];
-    s_[k] = geometry_.coefficient[k] / std::sqrt(std::max(speed, resolution * resolution));
-    unit_w_[k] = speed > 0.0 ? Vec3(w_[k] / speed) : Vec3::Zero();
+    const FilmLaw law{geometry_.coefficient[k], geometry_.crossover[k]};
+    s_[k] = law.secant(std::max(speed, resolution * resolution));
+    // A film in its linear regime has the isotropic curvature s P: no relief.
+    unit_w_[k] = speed > 0.0 && !law.linear(speed) ? Vec3(w_[k] / speed) : Vec3::Zero();
     const Eigen::Matrix3d block = s_[k] * (settings_.film.projector(geometry_.normal[k]) -
                                            relief_[k] * unit_w_[k] * unit_w_[k].transpose()) +
                                   geometry_.dashpot[k] * Eigen::Matrix3d::Identity();
@@ -191,13 +204,12 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
   for (std::size_t k = 0; k < m; ++k) {
     w_trial_[k] = settings_.film.project(geometry_.normal[k], trial_[c.i[k]] - trial_[c.j[k]]) +
                   geometry_.affine[k];
-    const double speed = w_trial_[k].norm(), root = std::sqrt(speed);
-    const double old_speed = w_[k].norm();
-    const double a = geometry_.coefficient[k];
-    const double now = speed * root, before = old_speed * std::sqrt(old_speed);
-    change += (2.0 / 3.0) * a * (now - before);
-    magnitude += (2.0 / 3.0) * a * (now + before);
-    scratch_[k] = speed > 0.0 ? Vec3(w_trial_[k] * (a / root)) : Vec3::Zero();
+    const double speed = w_trial_[k].norm();
+    const FilmLaw law{geometry_.coefficient[k], geometry_.crossover[k]};
+    const FilmLaw::Change film = law.change(w_[k].norm(), speed);
+    change += film.value;
+    magnitude += film.magnitude;
+    scratch_[k] = w_trial_[k] * law.secant(speed);
     // ½ b |q⁰|² changes by b (t q⁰·δq + ½ t² |δq|²) along the step δq
     if (const double b = geometry_.dashpot[k]; b > 0.0) {
       const Vec3 q0 = relative_velocity(v[c.i[k]] - v[c.j[k]], c.separation[k], rate_);
@@ -358,10 +370,12 @@ DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde, doub
   for (std::size_t k = 0; k < c.size(); ++k) {
     const Vec3 q = v[c.i[k]] - v[c.j[k]];
     const Vec3 w = settings_.film.sliding(c.separation[k].normalized(), q, c.separation[k], rate);
-    const double speed = w.norm();
     Vec3 film = Vec3::Zero(), dashpot_force = Vec3::Zero();  // on i from j
-    if (settings_.enabled && speed > 0.0)
-      film = -drag_coefficient(c, k, gamma_tilde) / std::sqrt(speed) * w;
+    if (settings_.enabled) {
+      const FilmLaw law = film_law(c, k, gamma_tilde, drag_coefficient(c, k, gamma_tilde),
+                                   settings_.rest_thickness);
+      film = -law.secant(w.norm()) * w;
+    }
     sum.film += c.separation[k] * film.transpose();
     if (!dashpot.empty()) {
       dashpot_force = -dashpot[k] * relative_velocity(q, c.separation[k], rate);

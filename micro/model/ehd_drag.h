@@ -75,7 +75,8 @@ struct EhdSettings {
   FilmModel film{};         // which relative velocity the drag acts on (film.h)
   StokesFriction stokes{};  // what the Stokes friction acts against (stokes_friction.h)
   DragCoupling coupling = DragCoupling::implicit;
-  double tolerance = 1e-6;  // velocity residual relative to max(1, max|v|)
+  double rest_thickness = 0.0;  // h0/R of the films (film.h); 0: the paper's √|w| law
+  double tolerance = 1e-6;      // velocity residual relative to max(1, max|v|)
   int max_newton_iterations = 60;
   int max_cg_iterations = 1000;
 
@@ -125,6 +126,7 @@ class EhdDrag {
   struct Geometry {  // per contact
     std::vector<Vec3> normal;
     std::vector<double> coefficient;  // a_c (0 without EHD)
+    std::vector<double> crossover;    // w* of a film of rest thickness (film.h), or 0
     std::vector<Vec3> affine;         // w⁰_c
     std::vector<double> dashpot;      // b_c (stokes_friction.h; 0 for `affine`)
   };

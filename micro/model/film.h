@@ -22,9 +22,24 @@
 // contact) and an affine part w⁰ = P(c d_y e_x) or 0; the drag potential
 // ⅔ a_c |w|^{3/2} then stays convex in v, which the velocity solve and the
 // implicit integrator rely on.
+//
+// A film of finite rest thickness (`film rest thickness` h0, units of R; 0,
+// the default, is the paper's law). The EHD law implies a film thickness
+// δ = η_s u A/f with the facet's area A = π ε R_c² (a Couette film of area A
+// carrying the drag f): in reduced units δ = π γ̃ ε R_c² |w|^{1/2}/a_c, which
+// vanishes as the sliding stops, where its drag's viscosity a_c/|w|^{1/2}
+// diverges. A real film keeps a thickness h0 set by the surfactant's
+// disjoining pressure, and drags linearly, η_s u A/h0, below the speed w* at
+// which δ falls to h0:
+//     w* = (h0 a_c / (π γ̃ ε R_c²))²,   f = a_c |w|/√w* for |w| < w*.
+// The drag is continuous at w*, and its potential — ½ (a_c/√w*) |w|² below,
+// ⅔ a_c |w|^{3/2} − ⅙ a_c w*^{3/2} above — stays convex (C¹). Both regimes
+// are f = s(|w|) w with the secant s = a_c/√max(|w|, w*) (FilmLaw below). A
+// declared extension of the paper's model: docs/physics.md, docs/oscillation.md.
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -43,6 +58,49 @@ inline double film_coefficient(double gamma_tilde, double contact_radius, double
                                double deformation) {
   return std::sqrt(0.75 * gamma_tilde * contact_radius * force * std::sqrt(deformation));
 }
+
+/// w* of a contact with coefficient a_c, radius R_c and deformation ε, for a
+/// film of rest thickness h0 (units of R; 0: none, w* = 0).
+inline double film_crossover(double rest_thickness, double gamma_tilde, double coefficient,
+                             double contact_radius, double deformation) {
+  if (!(rest_thickness > 0.0) || !(coefficient > 0.0)) return 0.0;
+  const double root =
+      rest_thickness * coefficient /
+      (3.14159265358979323846 * gamma_tilde * deformation * contact_radius * contact_radius);
+  return root * root;
+}
+
+/// One film's drag against its sliding speed (see the header): the secant
+/// s = |f|/|w|, the potential and whether it is in the linear regime.
+struct FilmLaw {
+  double coefficient;  // a_c
+  double crossover;    // w* (0: the paper's √|w| law at every speed)
+
+  double secant(double speed) const {
+    const double at = std::max(speed, crossover);
+    return at > 0.0 ? coefficient / std::sqrt(at) : 0.0;
+  }
+  bool linear(double speed) const { return speed < crossover; }
+  double potential(double speed) const {
+    if (linear(speed)) return 0.5 * secant(speed) * speed * speed;
+    return coefficient * ((2.0 / 3.0) * speed * std::sqrt(speed) -
+                          (1.0 / 6.0) * crossover * std::sqrt(crossover));
+  }
+  /// The potential's change from speed `before` to `after`, and the sum of
+  /// the magnitudes it was computed from (its rounding scale); on the EHD
+  /// branch as ⅔ a (after^{3/2} − before^{3/2}), without the constant.
+  struct Change {
+    double value, magnitude;
+  };
+  Change change(double before, double after) const {
+    if (linear(before) || linear(after)) {
+      const double a = potential(after), b = potential(before);
+      return {a - b, std::abs(a) + std::abs(b)};
+    }
+    const double now = after * std::sqrt(after), then = before * std::sqrt(before);
+    return {(2.0 / 3.0) * coefficient * (now - then), (2.0 / 3.0) * coefficient * (now + then)};
+  }
+};
 
 struct FilmModel {
   FilmVelocity velocity = FilmVelocity::tangential;
