@@ -18,7 +18,7 @@
 //         normal force      "normal force", "axial force"
 //         storage modulus   "storage modulus", "G'"
 //         loss modulus      "loss modulus", "G''"
-//         strain amplitude  "oscillation strain", "strain amplitude", "strain"
+//         strain amplitude  "oscillation strain", "strain amplitude"
 //         frequency         "angular frequency" (of an oscillation)
 //         curve label       "sample", "sample id", "curve", "label" (optional: groups rows)
 //     other columns (viscosity, time, temperature, ...) are ignored. Units come

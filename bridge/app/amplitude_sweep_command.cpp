@@ -26,8 +26,6 @@ namespace softglass::bridge {
 
 namespace {
 
-constexpr double kSoftening = 0.9;
-
 // The prediction at strain γ, log-log between the simulated amplitudes.
 double at_strain(const std::vector<double>& amplitudes, const std::vector<MaterialValue>& moduli,
                  double strain) {
@@ -95,13 +93,14 @@ struct Comparison {
 
 Comparison compare(const MeasuredAmplitudeSweep& m, const AmplitudeSweepPrediction& p) {
   Comparison c;
-  std::vector<double> softening, crossing, zero(m.strain.size(), 0.0);
+  std::vector<Estimate> storage, loss;  // no errors: the measurement's are not given
   for (std::size_t k = 0; k < m.strain.size(); ++k) {
-    softening.push_back(std::log(m.storage[k] / (kSoftening * m.storage.front())));
-    crossing.push_back(m.loss[k] > 0 ? std::log(m.storage[k] / m.loss[k]) : 1.0);
+    storage.push_back({m.storage[k], 0.0});
+    loss.push_back({m.loss[k], 0.0});
   }
-  c.measured_softening = first_crossing(m.strain, softening, zero);
-  c.measured_crossover = first_crossing(m.strain, crossing, zero);
+  const SweepStrains strains = sweep_strains(m.strain, storage, loss);
+  c.measured_softening = strains.softening;
+  c.measured_crossover = strains.crossover;
   std::vector<double> linear_s, linear_l, yielded_s, yielded_l;
   for (std::size_t k = 0; k < m.strain.size(); ++k) {
     const double g = m.strain[k];
@@ -192,14 +191,17 @@ void print_comparison(const Comparison& c, const MeasuredAmplitudeSweep& m,
 }  // namespace
 
 void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& command_line) {
+  // The inputs first, so that a bad one leaves no folder behind.
+  const Law law = read_law_file(o.law);
+  std::optional<MeasuredAmplitudeSweep> measured;
+  if (!o.data.empty()) measured = chosen_sweep(o.data, o.sample);
   std::filesystem::create_directories(o.output);
   AtomicOutput predicted_out(o.output / "amplitude_sweep.csv", o.force);
   std::optional<AtomicOutput> comparison_out, plot_out;
-  if (!o.data.empty()) {
+  if (measured) {
     comparison_out.emplace(o.output / "comparison.csv", o.force);
     plot_out.emplace(o.output / "comparison.png", o.force);
   }
-  const Law law = read_law_file(o.law);
   std::vector<std::string> lines =
       provenance("softglass bridge amplitude-sweep: a material's amplitude sweep from a law file",
                  command_line);
@@ -214,16 +216,15 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
             8);
   std::vector<AtomicOutput*> outputs{&predicted_out};
   std::optional<Comparison> c;
-  if (!o.data.empty()) {
-    const MeasuredAmplitudeSweep measured = chosen_sweep(o.data, o.sample);
-    c = compare(measured, p);
+  if (measured) {
+    c = compare(*measured, p);
     require(
         !c->strain.empty(),
         fmt::format("no measured strain of '{}' lies within the simulated amplitudes {:.3g} ... "
                     "{:.3g}",
                     o.data.string(), p.amplitudes.front(), p.amplitudes.back()));
-    print_comparison(*c, measured, p);
-    lines.push_back("measured: " + o.data.string() + ", curve '" + measured.label + "'");
+    print_comparison(*c, *measured, p);
+    lines.push_back("measured: " + o.data.string() + ", curve '" + measured->label + "'");
     write_csv(comparison_out->temporary_path(), comparison_out->final_path(), lines,
               comparison_table(*c), 8);
     outputs.push_back(&*comparison_out);
@@ -235,10 +236,13 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
         .x = c->strain,
         .panels = {{"G' [Pa]", c->storage, c->storage_predicted},
                    {"G'' [Pa]", c->loss, c->loss_predicted}}};
-    if (write_overlay_png(plot, plot_out->temporary_path()))
+    if (write_overlay_png(plot, plot_out->temporary_path())) {
       outputs.push_back(&*plot_out);
-    else
+    } else {
+      // An older plot (replaced with --force) would not show these numbers.
+      std::filesystem::remove(plot_out->final_path());
       fmt::print("no plot: gnuplot is missing or failed\n");
+    }
   }
   AtomicOutput::commit_together(outputs);
   for (const AtomicOutput* out : outputs) fmt::print("written  {}\n", out->final_path().string());

@@ -61,12 +61,15 @@ int main(int argc, char** argv) {
       "instead of a flow-curve table, the flow laws of this law file, kept as they are, with "
       "the amplitude-sweep law of --oscillation added (or replaced)");
   fit_law->excludes(fit_table);
-  fit_cmd->add_option("--packings", fit.packings,
-                      "its per-packing companion (CSV): errors from a packing bootstrap; without "
-                      "it, a parametric bootstrap from the table's standard errors");
-  fit_cmd->add_option("--structure", fit.structure,
-                      "structure table (CSV: phi, gamma_tilde, f_m, f_m_se) for the force law, "
-                      "when the flow-curve table has no f_m columns");
+  auto* fit_packings = fit_cmd->add_option(
+      "--packings", fit.packings,
+      "its per-packing companion (CSV): errors from a packing bootstrap; without "
+      "it, a parametric bootstrap from the table's standard errors");
+  auto* fit_structure =
+      fit_cmd->add_option("--structure", fit.structure,
+                          "structure table (CSV: phi, gamma_tilde, f_m, f_m_se) for the force law, "
+                          "when the flow-curve table has no f_m columns");
+  fit_law->excludes(fit_packings)->excludes(fit_structure);
   fit_cmd->add_option("--oscillation", fit.oscillation,
                       "oscillation table of `micro oscillate` (CSV): adds the amplitude-sweep law "
                       "(G', G'' against gamma0, plateau, softening and crossover strains)");

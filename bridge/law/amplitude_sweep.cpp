@@ -13,8 +13,6 @@ namespace softglass::bridge {
 
 namespace {
 
-constexpr double kSoftening = 0.9;  // G′ at the end of the linear regime, of its plateau
-
 bool same(double a, double b) {
   return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
 }
@@ -26,17 +24,40 @@ double relative(const Estimate& e) {
 }  // namespace
 
 Estimate first_crossing(const std::vector<double>& amplitudes, const std::vector<double>& f,
-                        const std::vector<double>& f_error) {
+                        const std::vector<double>& f_error, const std::vector<double>& common) {
   for (std::size_t k = 1; k < f.size(); ++k) {
     if (!(f[k] <= 0.0 && f[k - 1] > 0.0)) continue;
     const double a = std::log(amplitudes[k - 1]), b = std::log(amplitudes[k]);
+    if (!(b > a)) continue;  // a strain measured twice brackets nothing
     const double slope = (f[k] - f[k - 1]) / (b - a);
     const double at = a - f[k - 1] / slope;
     const double w = (at - a) / (b - a);
-    const double error = std::hypot((1 - w) * f_error[k - 1], w * f_error[k]) / std::abs(slope);
+    const double shared = common.empty() ? 0.0 : (1 - w) * common[k - 1] + w * common[k];
+    const double error =
+        std::hypot(std::hypot((1 - w) * f_error[k - 1], w * f_error[k]), shared) / std::abs(slope);
     return {std::exp(at), std::exp(at) * error};
   }
   return {0.0, 0.0};
+}
+
+SweepStrains sweep_strains(const std::vector<double>& amplitudes,
+                           const std::vector<Estimate>& storage,
+                           const std::vector<Estimate>& loss) {
+  // ln(G′/(0.9 G′_plateau)) and ln(G′/G″), both decreasing through 0 where the
+  // strains are. Each amplitude's own errors are independent; the plateau's
+  // shifts every softening value but its own (ln(1/0.9) exactly) together.
+  const Estimate& plateau = storage.front();
+  std::vector<double> softening, softening_error, plateau_shift, crossing, crossing_error;
+  for (std::size_t k = 0; k < storage.size(); ++k) {
+    const double g = std::max(storage[k].value, 1e-300);
+    softening.push_back(std::log(g / (kSoftening * plateau.value)));
+    softening_error.push_back(k ? relative(storage[k]) : 0.0);
+    plateau_shift.push_back(k ? relative(plateau) : 0.0);
+    crossing.push_back(loss[k].value > 0.0 ? std::log(g / loss[k].value) : 1.0);
+    crossing_error.push_back(std::hypot(relative(storage[k]), relative(loss[k])));
+  }
+  return {first_crossing(amplitudes, softening, softening_error, plateau_shift),
+          first_crossing(amplitudes, crossing, crossing_error)};
 }
 
 AmplitudeSweepLaw make_amplitude_sweep_law(const OscillationTable& table,
@@ -76,7 +97,6 @@ AmplitudeSweepLaw make_amplitude_sweep_law(const OscillationTable& table,
           table.source, phi, by_phi.begin()->first));
     law.phi.push_back(phi);
     std::vector<Estimate> storage, loss;
-    std::vector<double> softening, softening_error, crossing, crossing_error;
     for (const auto& [gamma0, point] : sweep) {
       storage.push_back(point->storage);
       loss.push_back(point->loss);
@@ -84,23 +104,13 @@ AmplitudeSweepLaw make_amplitude_sweep_law(const OscillationTable& table,
     if (storage.front().value <= 0.0)
       throw InputError(fmt::format("{}: phi = {}: G' = {} at the smallest amplitude; allowed: > 0",
                                    table.source, phi, storage.front().value));
-    const Estimate plateau = storage.front();
-    for (std::size_t k = 0; k < storage.size(); ++k) {
-      // ln(G′/(0.9 G′_plateau)) and ln(G′/G″), each with the error of its first term
-      // (the plateau's error is the same at every amplitude and shifts the strain
-      // little): both decrease through 0 where the strains are.
-      const double g = std::max(storage[k].value, 1e-300);
-      softening.push_back(std::log(g / (kSoftening * plateau.value)));
-      softening_error.push_back(std::hypot(relative(storage[k]), k ? relative(plateau) : 0.0));
-      crossing.push_back(loss[k].value > 0.0 ? std::log(g / loss[k].value) : 1.0);
-      crossing_error.push_back(std::hypot(relative(storage[k]), relative(loss[k])));
-    }
+    const SweepStrains strains = sweep_strains(law.amplitudes, storage, loss);
     law.storage.push_back(storage);
     law.loss.push_back(loss);
-    law.plateau_storage.push_back(plateau);
+    law.plateau_storage.push_back(storage.front());
     law.plateau_loss.push_back(loss.front());
-    law.softening_strain.push_back(first_crossing(law.amplitudes, softening, softening_error));
-    law.crossover_strain.push_back(first_crossing(law.amplitudes, crossing, crossing_error));
+    law.softening_strain.push_back(strains.softening);
+    law.crossover_strain.push_back(strains.crossover);
   }
   if (law.amplitudes.size() < 3)
     throw InputError(
@@ -138,6 +148,8 @@ void validate(const AmplitudeSweepLaw& law, const std::string& source) {
           fail("moduli must be finite, errors >= 0");
     }
     if (!(law.plateau_storage[i].value > 0.0)) fail("'plateau storage' must be > 0");
+    if (!std::isfinite(law.plateau_loss[i].value) || !(law.plateau_loss[i].error >= 0.0))
+      fail("'plateau loss' must be finite, its error >= 0");
     for (const auto* strains : {&law.softening_strain, &law.crossover_strain})
       if (!((*strains)[i].value >= 0.0) || !((*strains)[i].error >= 0.0))
         fail("strains must be >= 0 (0: not reached) with errors >= 0");

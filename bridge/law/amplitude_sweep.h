@@ -3,9 +3,11 @@
 // amplitude γ0, and the numbers a rheologist reads off such a sweep:
 //
 //   plateau     G′ and G″ at the smallest amplitude (the linear plateau a
-//               rheometer reports; in this model G″ at small γ0 still grows
-//               like (ω̃/γ0)^½, the EHD film law having no linear limit:
-//               docs/oscillation.md);
+//               rheometer reports; with the paper's film law G″ at small γ0
+//               still grows like (ω̃/γ0)^½ and G′ falls with γ0, the law having
+//               no linear limit, so the softening strain below can be the
+//               films' rather than yielding; a film rest thickness gives the
+//               plateau back: docs/oscillation.md);
 //   softening   the γ0 where G′ falls to 0.9 of its plateau (the end of the
 //               linear regime);
 //   crossover   the γ0 where G′ = G″ (the yield strain of the amplitude sweep).
@@ -31,12 +33,25 @@ struct AmplitudeSweepLaw {
   std::vector<Estimate> plateau_storage, plateau_loss, softening_strain, crossover_strain;  // per φ
 };
 
+/// G′ at the end of the linear regime, as a fraction of its plateau.
+inline constexpr double kSoftening = 0.9;
+
 /// The first γ0 of `amplitudes` (increasing) where f, positive before,
 /// reaches 0, linear in ln γ0 between the two bracketing amplitudes, with its
-/// error from the errors of f at both ends (δ ln γ0 = δf/|df/d ln γ0|);
-/// {0, 0} when f never reaches 0 ("not reached").
+/// error δ ln γ0 = δf/|df/d ln γ0| from the independent errors of f at both
+/// ends (`f_error`) and an error `common` to several values (shifting them
+/// together; empty: none); {0, 0} when f never reaches 0 ("not reached").
 Estimate first_crossing(const std::vector<double>& amplitudes, const std::vector<double>& f,
-                        const std::vector<double>& f_error);
+                        const std::vector<double>& f_error, const std::vector<double>& common = {});
+
+/// The softening strain (G′ down to kSoftening of its value at the first
+/// amplitude) and the crossover strain (G′ = G″) of a sweep, with errors from
+/// the moduli's (0 errors: none).
+struct SweepStrains {
+  Estimate softening, crossover;
+};
+SweepStrains sweep_strains(const std::vector<double>& amplitudes,
+                           const std::vector<Estimate>& storage, const std::vector<Estimate>& loss);
 
 /// The law of `table` at frequency `frequency` (needed when the table holds
 /// several; InputError naming them otherwise). Every φ must have the same

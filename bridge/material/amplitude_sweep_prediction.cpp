@@ -21,8 +21,8 @@ MaterialValue scaled(const MaterialValue& v, double factor) {
   return {v.value * factor, v.statistical * std::abs(factor), v.interpolation * std::abs(factor)};
 }
 
-// A strain that may be "not reached" (0) at some φ: interpolated only where
-// both neighbours reached it, else 0.
+// A strain that may be "not reached" (0) at some φ: interpolated over the
+// sweep's volume fractions when every one of them reached it, else 0.
 MaterialValue strain_at(const AmplitudeSweepLaw& a, const std::vector<Estimate>& strains,
                         double phi) {
   for (const Estimate& e : strains)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -180,7 +181,8 @@ PeriodicSummary summarise_cycles(const std::vector<std::vector<double>>& cycles,
   for (std::size_t k = first; k < n; ++k) modulus.push_back(std::hypot(cycles[k][0], cycles[k][1]));
   const Slope s = slope_of(modulus);
   const double g = summary.complex_modulus();
-  summary.drift = s.error > 0.0 ? std::abs(s.value) / s.error : (s.value != 0.0 ? HUGE_VAL : 0.0);
+  summary.drift = s.error > 0.0 ? std::abs(s.value) / s.error
+                                : (s.value != 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
   summary.drift_change = g > 0.0 ? std::abs(s.value) * static_cast<double>(kept - 1) / g : 0.0;
   summary.periodic = summary.drift <= kMaxDrift ||
                      summary.drift_change <= kNegligibleDrift * target_relative_error;

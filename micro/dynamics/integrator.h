@@ -58,7 +58,7 @@ struct IntegratorSpec {
   std::string name = "auto";
   double tolerance = 0.0;           // local position error per step, units of R; 0: the scheme's
   double stability_fraction = 0.8;  // fraction of the explicit stability limit 2/λ
-  double max_step = 0.05;           // strain
+  double max_step = 0.05;           // time: strain in steady shear (shear_drive.h)
   // `implicit` only: the nonlinear solve of a step is converged when the largest
   // residual force is below this × the mean contact force.
   double solver_tolerance = 1e-7;

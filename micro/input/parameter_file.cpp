@@ -194,7 +194,7 @@ void declare_drag(ParameterHandler& prm, Entries& e) {
         "over R): the film drags linearly, eta_s u A/h0, below the sliding speed at which the "
         "EHD film would be thinner than h0 (a declared extension; docs/physics.md). 0: the "
         "paper's law at every speed.",
-        Patterns::Double(0.0, 1.0));
+        Patterns::Double(0.0, 0.5));
   entry(prm, "stokes reference", e.stokes_reference,
         "What the Stokes friction 6 pi eta_s R / f_r acts against: affine (the paper: the motion "
         "relative to the imposed flow) or neighbours (relative to the contacting particles, as "

@@ -124,8 +124,10 @@ void write_checkpoint(const std::filesystem::path& path, const ShearCheckpoint& 
               {kShearKind,
                c.particles,
                c.box,
-               {c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds, c.time},
-               "start, next sample, next check, next snapshot, worst error, seconds, time",
+               {c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds,
+                c.amplitude, c.time.value_or(0.0)},
+               "start, next sample, next check, next snapshot, worst error, seconds, drive "
+               "amplitude, time",
                counter_values(c.counters),
                "ShearCounters in declaration order",
                c.series,
@@ -140,8 +142,11 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   const std::string where = path.string();
   const H5File file = H5File::open(path);
   const H5Group root = file.root();
-  // The time was added after the first six entries (a steady run's is unused).
-  ReadParts parts = read_parts(root, where, kShearKind, 6, 9, 7);
+  // The drive's amplitude and the time were added after the first six
+  // entries: a checkpoint of six is of steady shear.
+  ReadParts parts = read_parts(root, where, kShearKind, 6, 9, 8);
+  if (parts.state.size() == 7)
+    throw InputError(fmt::format("'{}': 7 state entries; allowed: 6 or 8", where));
   ShearCheckpoint c;
   c.particles = std::move(parts.configuration.particles);
   c.box = parts.configuration.box;
@@ -169,7 +174,10 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   c.next_snapshot = parts.finite_state(3);
   c.worst = parts.worst_error(4);
   c.seconds = parts.finite_state(5);
-  if (parts.state.size() > 6) c.time = parts.finite_state(6);
+  if (parts.state.size() == 8) {
+    c.amplitude = parts.finite_state(6);
+    c.time = parts.finite_state(7);
+  }
   c.counters = {parts.count_at(0), parts.count_at(1),       parts.count_at(2),
                 parts.count_at(3), parts.count_at(4),       parts.count_at(5),
                 parts.count_at(6), parts.finite_counter(7), parts.finite_counter(8)};

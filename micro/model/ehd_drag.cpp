@@ -48,8 +48,8 @@ void EhdSettings::validate() const {
           "neighbours needs 'implicit'");
   require(stokes.reservoir_share > 0.0 && stokes.reservoir_share <= 1.0,
           fmt::format("Stokes reservoir share = {} is outside (0, 1]", stokes.reservoir_share));
-  require(std::isfinite(rest_thickness) && rest_thickness >= 0.0 && rest_thickness < 1.0,
-          fmt::format("film rest thickness = {} is outside [0, 1) (units of R)", rest_thickness));
+  require(std::isfinite(rest_thickness) && rest_thickness >= 0.0 && rest_thickness <= 0.5,
+          fmt::format("film rest thickness = {} is outside [0, 0.5] (units of R)", rest_thickness));
   require(tolerance > 0.0 && tolerance < 1e-2,
           fmt::format("velocity solve tolerance = {} is outside (0, 1e-2)", tolerance));
   require(max_newton_iterations >= 1, "velocity solve needs at least one Newton iteration");

@@ -41,6 +41,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "micro/geometry/lees_edwards_box.h"
@@ -66,7 +67,7 @@ inline double film_crossover(double rest_thickness, double gamma_tilde, double c
   if (!(rest_thickness > 0.0) || !(coefficient > 0.0)) return 0.0;
   const double root =
       rest_thickness * coefficient /
-      (3.14159265358979323846 * gamma_tilde * deformation * contact_radius * contact_radius);
+      (std::numbers::pi * gamma_tilde * deformation * contact_radius * contact_radius);
   return root * root;
 }
 

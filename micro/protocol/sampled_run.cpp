@@ -5,6 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "common/errors.h"
 #include "micro/analysis/layering.h"
 
 namespace softglass::micro {
@@ -75,10 +78,15 @@ class SampledRunner {
   // stored particles, a new integrator, the first evaluation from the stored
   // velocities.
   void restart_from(const ShearCheckpoint& c) {
+    const ShearDrive& drive = flow_.drive();
+    if (c.amplitude != drive.amplitude() || (!drive.is_steady() && !c.time))
+      throw InputError(fmt::format(
+          "the checkpoint was written under another drive (strain amplitude {}, this run's {}{})",
+          c.amplitude, drive.amplitude(), c.time ? "" : ", and it holds no time"));
     const std::shared_ptr<const ContactLaw> law = flow_.system().shared_law();
     const double skin = flow_.system().neighbours().skin();
-    flow_ = OverdampedShear(ContactSystem(c.particles, c.box, law, skin), flow_.model(),
-                            flow_.drive(), c.time);
+    flow_ = OverdampedShear(ContactSystem(c.particles, c.box, law, skin), flow_.model(), drive,
+                            c.time.value_or(0.0));
     owned_integrator_ = checkpointing_.new_integrator();
     integrator_ = owned_integrator_.get();
     start_ = c.start;
@@ -105,6 +113,7 @@ class SampledRunner {
                       next_check_,
                       next_snapshot_,
                       rule_.worst,
+                      flow_.drive().amplitude(),
                       flow_.time(),
                       run_.series,
                       run_.snapshots,

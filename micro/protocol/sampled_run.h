@@ -4,9 +4,10 @@
 // checkpoints and restart from them.
 //
 // The run's clock is the flow's time (overdamped_shear.h): the strain itself
-// in steady shear, time in units of 1/γ̇_ref under a drive. Samples land
-// exactly on their times (the integrator's step is cut there), so the n-th
-// sample of a run is at start + n × sample interval.
+// in steady shear, time in units of 1/γ̇_ref under a drive. Samples land on
+// their times (the integrator's step is cut there); the times are accumulated,
+// start + interval + interval + …, whose rounding stays far below the slack of
+// a sample (1e-9 of its interval) for the runs the protocols allow.
 //
 // The run is a class with one member per step — take a step, record a sample,
 // decide whether to stop, save a checkpoint or restart from one — sharing the
@@ -16,6 +17,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "micro/dynamics/integrator.h"
@@ -55,7 +57,11 @@ struct ShearCheckpoint {
   double start = 0.0;  // clock at which the run began
   double next_sample = 0.0, next_check = 0.0, next_snapshot = 0.0;
   double worst = 0.0;  // worst relative error at the last check
-  double time = 0.0;   // the flow's time under a drive (steady shear: unused, the cell's strain)
+  /// The drive it was written under: its amplitude (0: steady shear) and the
+  /// flow's time (steady shear: the cell's strain); absent from checkpoints
+  /// written before oscillatory shear existed, which are steady.
+  double amplitude = 0.0;
+  std::optional<double> time;
   TimeSeries series;
   std::vector<Snapshot> snapshots;
   ShearCounters counters;  // up to the checkpoint

@@ -29,10 +29,6 @@ void add_response_columns(UnitTable& t) {
   }
 }
 
-bool same(double a, double b) {
-  return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
-}
-
 }  // namespace
 
 OscillationAverage average_oscillations(const std::vector<StoredOscillationSummary>& runs) {
@@ -41,8 +37,9 @@ OscillationAverage average_oscillations(const std::vector<StoredOscillationSumma
   std::vector<std::filesystem::path> files;
   std::vector<std::uint64_t> fingerprints;
   for (const auto& r : runs) {
-    if (!same(r.volume_fraction, first.volume_fraction) || !same(r.amplitude, first.amplitude) ||
-        !same(r.frequency, first.frequency) || r.particles != first.particles)
+    if (!same_state(r.volume_fraction, first.volume_fraction) ||
+        !same_state(r.amplitude, first.amplitude) || !same_state(r.frequency, first.frequency) ||
+        r.particles != first.particles)
       throw InputError(fmt::format(
           "'{}' (phi = {:.4f}, gamma0 = {:.4g}, omega~ = {:.4g}, N = {}) is not at the state point "
           "of '{}'; average runs of one state point only",

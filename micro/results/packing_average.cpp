@@ -26,11 +26,11 @@ MeanAndError mean_of(const std::vector<double>& values) {
   return {mean, std::sqrt(squares / (k - 1.0) / k)};
 }
 
-bool same(double a, double b) {
+}  // namespace
+
+bool same_state(double a, double b) {
   return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
 }
-
-}  // namespace
 
 AveragedObservable average(const std::string& name, const std::vector<double>& means,
                            const std::vector<double>& errors) {
@@ -62,8 +62,8 @@ PackingAverage average_over_packings(const std::vector<StoredRunSummary>& runs) 
   if (runs.empty()) throw InputError("no run files to average");
   const StoredRunSummary& first = runs.front();
   for (const auto& r : runs) {
-    if (!same(r.gamma_tilde, first.gamma_tilde) ||
-        !same(r.volume_fraction, first.volume_fraction) || r.particles != first.particles) {
+    if (!same_state(r.gamma_tilde, first.gamma_tilde) ||
+        !same_state(r.volume_fraction, first.volume_fraction) || r.particles != first.particles) {
       throw InputError(fmt::format(
           "'{}' (gamma~ = {:.4g}, phi = {:.4f}, N = {}) is not at the state point of '{}' (gamma~ "
           "= "

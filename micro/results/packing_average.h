@@ -39,6 +39,10 @@ struct PackingAverage {
   const AveragedObservable& operator[](const std::string& name) const;
 };
 
+/// Whether two state variables (φ, γ̃, γ0, ω̃) of runs are the same, to a
+/// relative 1e-9 (their files store them from the same numbers).
+bool same_state(double a, double b);
+
 /// The mean over runs of one observable, with `within` from the runs' own
 /// errors and `between` from the scatter of their means.
 AveragedObservable average(const std::string& name, const std::vector<double>& means,

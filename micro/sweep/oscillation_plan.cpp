@@ -77,6 +77,16 @@ OscillationPlan make_oscillation_plan(const OscillationSpec& spec) {
       }
     }
   }
+  // File names print γ0 and ω̃ to four digits: two values closer than that
+  // would share one file.
+  for (std::size_t a = 0; a < plan.cases.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b)
+      require(plan.cases[a].file != plan.cases[b].file,
+              fmt::format("oscillation: gamma0 = {}, omega~ = {} and gamma0 = {}, omega~ = {} "
+                          "would share the result file {}; give values that differ in their "
+                          "first four digits",
+                          plan.cases[a].amplitude, plan.cases[a].frequency, plan.cases[b].amplitude,
+                          plan.cases[b].frequency, plan.cases[a].file.string()));
   std::stable_sort(plan.cases.begin(), plan.cases.end(),
                    [](const OscillationCase& a, const OscillationCase& b) {
                      if (a.volume_fraction != b.volume_fraction)

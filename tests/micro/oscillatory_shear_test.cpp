@@ -20,6 +20,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "common/errors.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/io/checkpoint_file.h"
 #include "micro/protocol/oscillatory_run.h"
@@ -131,8 +132,8 @@ INSTANTIATE_TEST_SUITE_P(Frequencies, LatticeOscillation, ::testing::Values(1e-2
 
 // A disordered packing in oscillation at small amplitude (the model preset
 // `literal` on a packing of N = 200 at φ = 0.80), returning the run.
-OscillationResult oscillate_packing(const Packing& packing, double skin, bool ehd,
-                                    double amplitude, double frequency) {
+OscillationResult oscillate_packing(const Packing& packing, double skin, bool ehd, double amplitude,
+                                    double frequency) {
   OscillationProtocol protocol;
   protocol.amplitude = amplitude;
   protocol.frequency = frequency;
@@ -140,9 +141,9 @@ OscillationResult oscillate_packing(const Packing& packing, double skin, bool eh
   ShearModel model;
   model.gamma_tilde = protocol.peak_gamma_tilde();
   model.drag.enabled = ehd;
-  OverdampedShear flow(ContactSystem(packing.particles, packing.box, testing::named_law("seth2011"),
-                                     skin),
-                       model, ShearDrive::oscillatory(amplitude));
+  OverdampedShear flow(
+      ContactSystem(packing.particles, packing.box, testing::named_law("seth2011"), skin), model,
+      ShearDrive::oscillatory(amplitude));
   const auto integrator = make_integrator(oscillation_integrator({}, protocol));
   OscillationResult r = run_oscillation(flow, *integrator, protocol);
   EXPECT_TRUE(r.converged) << r.stop_reason;
@@ -169,9 +170,10 @@ TEST(DisorderedOscillation, WithoutFilmsTheLinearLimitIsTheStaticModulus) {
   const double static_modulus = shear_modulus(at_rest).flow_gradient_modulus;
   const OscillationResult slow = oscillate_packing(packing, 0.3, false, 1e-5, 1e-9);
   const OscillationResult fast = oscillate_packing(packing, 0.3, false, 1e-5, 1e-8);
-  std::printf("[ measured ] G' = %.7g against static %.7g; G'' = %.4g, %.4g at omega~ = 1e-9, 1e-8\n",
-              slow.summary["storage"].mean, static_modulus, slow.summary["loss"].mean,
-              fast.summary["loss"].mean);
+  std::printf(
+      "[ measured ] G' = %.7g against static %.7g; G'' = %.4g, %.4g at omega~ = 1e-9, 1e-8\n",
+      slow.summary["storage"].mean, static_modulus, slow.summary["loss"].mean,
+      fast.summary["loss"].mean);
   EXPECT_NEAR(slow.summary["storage"].mean, static_modulus, 1e-3 * static_modulus);
   EXPECT_NEAR(fast.summary["loss"].mean / slow.summary["loss"].mean, 10.0, 0.3);
   EXPECT_LT(slow.summary["loss"].mean, 0.01 * static_modulus);
@@ -239,7 +241,9 @@ TEST(OscillationCheckpoints, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
                    nullptr),
                Interrupted);
   const ShearCheckpoint stored = read_checkpoint(file);
-  EXPECT_GT(stored.time, 0.0);
+  ASSERT_TRUE(stored.time.has_value());
+  EXPECT_GT(*stored.time, 0.0);
+  EXPECT_EQ(stored.amplitude, protocol.amplitude);
   const OscillationResult resumed = run({}, &stored);
   ASSERT_EQ(whole.series.size(), resumed.series.size());
   for (std::size_t k = 0; k < whole.series.size(); ++k) {
@@ -250,6 +254,14 @@ TEST(OscillationCheckpoints, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
         << k;
   }
   EXPECT_EQ(whole.summary["storage"].mean, resumed.summary["storage"].mean);
+
+  // A checkpoint of another drive is refused rather than resumed.
+  ShearCheckpoint other = stored;
+  other.amplitude = 0.1;
+  EXPECT_THROW(run({}, &other), InputError);
+  other = stored;
+  other.time.reset();
+  EXPECT_THROW(run({}, &other), InputError);
 }
 
 // The protocol refuses what it cannot run, naming the entry.
