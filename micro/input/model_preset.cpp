@@ -30,12 +30,14 @@ const std::vector<ModelPreset>& presets() {
        "the paper as stated: seth2011 contact law, Stokes friction against the affine flow",
        {{"contact law", "law", "seth2011"}, {"drag", "stokes reference", "affine"}}},
       {"softglass",
-       "seth2011's branches at nominal strain (piecewise, breakpoints eps = 0.4, 0.8) and the "
-       "Stokes friction against the neighbours (docs/fidelity.md)",
+       "seth2011's branches at nominal strain (piecewise, breakpoints eps = 0.4, 0.8), the "
+       "Stokes friction against the neighbours and films of rest thickness 0.002 R "
+       "(docs/fidelity.md)",
        {{"contact law", "law", "piecewise"},
         {"contact law", "piecewise breakpoints", "0.4, 0.8"},
         {"contact law", "piecewise exponents", "1.5, 2, 3"},
-        {"drag", "stokes reference", "neighbours"}}},
+        {"drag", "stokes reference", "neighbours"},
+        {"drag", "film rest thickness", "0.002"}}},
   };
   return list;
 }

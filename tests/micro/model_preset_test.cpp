@@ -27,11 +27,13 @@ TEST_F(ModelPreset, LiteralIsThePapersReading) {
   EXPECT_EQ(p.contact_law.name, "seth2011");
   EXPECT_EQ(p.shear_model.drag.stokes.reference, StokesReference::affine);
   EXPECT_EQ(p.shear_model.mobility_factor, 0.01);
+  EXPECT_EQ(p.shear_model.drag.rest_thickness, 0.0) << "the paper's film law";
 }
 
 TEST_F(ModelPreset, SoftglassSetsTheNominalBranchesAndTheNeighbourFriction) {
   const MicroParameters p = read("subsection model\n  set preset = softglass\nend\n");
   EXPECT_EQ(p.contact_law.name, "piecewise");
+  EXPECT_EQ(p.shear_model.drag.rest_thickness, 0.002);
   EXPECT_EQ(p.contact_law.coefficients.numbers("breakpoints"), (std::vector<double>{0.4, 0.8}));
   EXPECT_EQ(p.contact_law.coefficients.numbers("exponents"), (std::vector<double>{1.5, 2, 3}));
   EXPECT_EQ(p.shear_model.drag.stokes.reference, StokesReference::neighbours);
