@@ -130,6 +130,12 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
         "amplitude-sweep` gives the whole sweep",
         p.angular_frequency, p.plateau_storage.value, p.plateau_loss.value, p.amplitudes.front(),
         p.softening_strain.value, p.crossover_strain.value));
+    if (o.frequency)
+      lines.push_back(fmt::format(
+          "asked for omega = {:.4g} rad/s: the law's amplitude sweep holds at {:.4g} rad/s for this "
+          "E* and eta_s (ratio {:.3g}); run `micro oscillate` at omega~ = {:.4g} for yours",
+          *o.frequency, p.angular_frequency, p.angular_frequency / *o.frequency,
+          *o.frequency * o.viscosity / request.modulus));
   }
   const std::string text = material_text(material, lines);
   if (!out) {
@@ -137,7 +143,10 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
     return;
   }
   print_material_report(material);
-  if (sweep) print_amplitude_sweep_prediction(*sweep);
+  if (sweep) {
+    print_amplitude_sweep_prediction(*sweep);
+    if (o.frequency) fmt::print("{}\n", lines.back());
+  }
   write(*out, text);
   out->commit();
   fmt::print("written  {}\n", out->final_path().string());

@@ -45,6 +45,9 @@ struct MaterialOptions {
   std::filesystem::path law, output;  // output empty: standard output
   double phi = 0.0, viscosity = 0.0;
   ModulusSource source;
+  /// The angular frequency [rad/s] the user's amplitude sweep is at: set
+  /// against the one the law's holds at for this E* and η_s (ω̃ E*/η_s).
+  std::optional<double> frequency;
   bool extrapolate = false, force = false;
 };
 

@@ -128,6 +128,11 @@ int main(int argc, char** argv) {
   material_cmd->add_option("--viscosity", material.viscosity, "solvent viscosity eta_s [Pa s]")
       ->required()
       ->check(positive);
+  material_cmd
+      ->add_option("--frequency", material.frequency,
+                   "angular frequency of your amplitude sweep [rad/s]: set against the one the "
+                   "law's amplitude sweep holds at for this E* and eta_s")
+      ->check(positive);
   material_cmd->add_option("-o,--output", material.output,
                            "material file (.prm); default: print it");
   material_cmd->add_flag("--extrapolate", material.extrapolate,
