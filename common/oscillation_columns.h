@@ -17,6 +17,9 @@ inline constexpr const char* seed = "seed";               ///< per-packing table
 inline constexpr const char* converged = "converged";     ///< runs that met the stopping rule
 inline constexpr const char* cycles = "periodic_cycles";  ///< cycles averaged (all runs)
 inline constexpr const char* shear_modulus = "G0";        ///< static linear modulus of the packings
+/// The packings' static modulus of the x–y simple shear alone: the one the
+/// Lees–Edwards oscillation loads (G0 is the mean over six shears).
+inline constexpr const char* flow_gradient_modulus = "G0_xy";
 
 inline constexpr const char* storage = "storage";  ///< G′ of σ
 inline constexpr const char* loss = "loss";        ///< G″ of σ

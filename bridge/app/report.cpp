@@ -9,10 +9,16 @@
 
 namespace softglass::bridge {
 
+// Relative errors below this are noise (the integrators' tolerances are 1e-3 …
+// 1e-6 of a step's displacement; repeated deterministic cycles agree to 1e-10).
+constexpr double kNoiseLevel = 1e-8;
+
 std::string with_error(double value, double error, int digits) {
   if (!std::isfinite(value)) return "not fitted";
-  // No error, or only rounding noise (one packing: no packing-to-packing spread).
-  if (!std::isfinite(error) || error <= 1e-12 * std::abs(value))
+  // No error, or only noise: one packing has no packing-to-packing spread, and
+  // the cycles of a deterministic (unyielded) oscillation repeat to the
+  // solver's tolerance, far below what any digit printed here could show.
+  if (!std::isfinite(error) || error <= kNoiseLevel * std::abs(value))
     return fmt::format("{:.4g}", value);
   // Print the value to the decimal place of the error's last significant digit.
   const int place = static_cast<int>(std::floor(std::log10(error))) - (digits - 1);

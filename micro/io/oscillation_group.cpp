@@ -149,6 +149,7 @@ StoredOscillationSummary read_oscillation_summary(const std::filesystem::path& p
   s.packing_fingerprint = configuration_fingerprint(packing.group("configuration"));
   s.volume_fraction = positive(packing, "volume_fraction");
   s.shear_modulus = positive(packing, "shear_modulus");
+  s.flow_gradient_modulus = positive(packing, "shear_modulus_flow_gradient");
   s.particles = count(packing.read_scalar("particles"), where, "dataset '/packing/particles'");
   s.amplitude = positive(g, "amplitude");
   s.frequency = positive(g, "frequency");

@@ -28,7 +28,8 @@ void write_oscillation(H5Group&& g, const OscillationRecord& record);
 /// What an oscillatory run concluded, read back for the tables.
 struct StoredOscillationSummary {
   std::filesystem::path file;
-  double volume_fraction = 0.0, amplitude = 0.0, frequency = 0.0, shear_modulus = 0.0;
+  double volume_fraction = 0.0, amplitude = 0.0, frequency = 0.0;
+  double shear_modulus = 0.0, flow_gradient_modulus = 0.0;  // the packing's static G0, x–y G0
   std::size_t particles = 0, periodic_cycles = 0;
   bool converged = false;
   std::vector<ObservableEstimate> observables;  // oscillation_observable_names() order

@@ -56,15 +56,15 @@ OscillationAverage average_oscillations(const std::vector<StoredOscillationSumma
   a.volume_fraction = first.volume_fraction;
   a.amplitude = first.amplitude;
   a.frequency = first.frequency;
-  std::vector<double> moduli, no_errors(runs.size(), 0.0);
+  std::vector<double> moduli, xy_moduli, no_errors(runs.size(), 0.0);
   for (const auto& r : runs) {
     a.converged_runs += r.converged;
     a.periodic_cycles += r.periodic_cycles;
     moduli.push_back(r.shear_modulus);
+    xy_moduli.push_back(r.flow_gradient_modulus);
   }
-  const AveragedObservable g = average(columns::shear_modulus, moduli, no_errors);
-  a.shear_modulus = g.mean;
-  a.shear_modulus_error = g.standard_error();
+  a.shear_modulus = average(columns::shear_modulus, moduli, no_errors);
+  a.flow_gradient_modulus = average(columns::flow_gradient_modulus, xy_moduli, no_errors);
   for (std::size_t q = 0; q < first.observables.size(); ++q) {
     std::vector<double> means, errors;
     for (const auto& r : runs) {
@@ -80,8 +80,10 @@ UnitTable oscillation_table(const std::vector<OscillationAverage>& points) {
   UnitTable t;
   add_state_columns(t, columns::packings);
   add_response_columns(t);
-  add_column(t, columns::shear_modulus);
-  add_column(t, columns::error_of(columns::shear_modulus));
+  for (const char* modulus : {columns::shear_modulus, columns::flow_gradient_modulus}) {
+    add_column(t, modulus);
+    add_column(t, columns::error_of(modulus));
+  }
   add_column(t, columns::cycles);
   add_column(t, columns::converged);
   for (const auto& p : points) {
@@ -92,8 +94,9 @@ UnitTable oscillation_table(const std::vector<OscillationAverage>& points) {
       row.push_back(o.standard_error());
     }
     row.insert(row.end(),
-               {p.shear_modulus, p.shear_modulus_error, static_cast<double>(p.periodic_cycles),
-                static_cast<double>(p.converged_runs)});
+               {p.shear_modulus.mean, p.shear_modulus.standard_error(),
+                p.flow_gradient_modulus.mean, p.flow_gradient_modulus.standard_error(),
+                static_cast<double>(p.periodic_cycles), static_cast<double>(p.converged_runs)});
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -105,6 +108,7 @@ UnitTable oscillation_packing_table(const std::vector<StoredOscillationSummary>&
   add_state_columns(t, columns::seed);
   add_response_columns(t);
   add_column(t, columns::shear_modulus);
+  add_column(t, columns::flow_gradient_modulus);
   add_column(t, columns::cycles);
   add_column(t, columns::converged);
   for (std::size_t k = 0; k < runs.size(); ++k) {
@@ -116,7 +120,8 @@ UnitTable oscillation_packing_table(const std::vector<StoredOscillationSummary>&
       row.push_back(o.estimate.standard_error);
     }
     row.insert(row.end(),
-               {r.shear_modulus, static_cast<double>(r.periodic_cycles), r.converged ? 1.0 : 0.0});
+               {r.shear_modulus, r.flow_gradient_modulus, static_cast<double>(r.periodic_cycles),
+                r.converged ? 1.0 : 0.0});
     t.rows.push_back(std::move(row));
   }
   return t;

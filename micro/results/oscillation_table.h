@@ -14,7 +14,8 @@ namespace softglass::micro {
 struct OscillationAverage {
   std::size_t runs = 0, converged_runs = 0, particles = 0, periodic_cycles = 0;
   double volume_fraction = 0.0, amplitude = 0.0, frequency = 0.0;
-  double shear_modulus = 0.0, shear_modulus_error = 0.0;  // static G0 of the packings
+  AveragedObservable shear_modulus;          // static G0 of the packings (six shears)
+  AveragedObservable flow_gradient_modulus;  // their x–y static modulus
   std::vector<AveragedObservable> observables;            // oscillation_observable_names() order
 };
 

@@ -43,7 +43,7 @@ TEST_F(MicroCli, OscillateWritesTheTablesAndRunFilesAndSkipsFinishedWork) {
   for (const char* column :
        {"phi [1]", "omega_tilde [1]", "gamma0 [1]", "storage [E*]", "storage_se [E*]",
         "loss [E*]", "loss_film [E*]", "intensity_3 [1]", "e3 [E*]", "v1 [eta_s]", "N1 [E*]",
-        "G0 [E*]", "periodic_cycles [1]", "converged [1]"})
+        "G0 [E*]", "G0_xy [E*]", "periodic_cycles [1]", "converged [1]"})
     EXPECT_NE(table.find(column), std::string::npos) << column;
   EXPECT_TRUE(fs::exists(work() / "out/oscillation_packings.csv"));
   EXPECT_TRUE(fs::exists(work() / "out/oscillation.h5"));
