@@ -63,8 +63,8 @@ std::unique_ptr<Scene> make_channel(ParameterHandler& prm, const Material& mater
   ReducedSceneSpec<1> spec;
   spec.description = fmt::format(
       "plane channel, half height {} m: u_x(y) on [0, H], symmetry at y = 0, "
-      "{} at y = H",
-      H, slip.any() ? "slip" + slip_description(slip, kChannelWalls) : "no slip");
+      "{} at y = H{}",
+      H, slip.any() ? "slip" : "no slip", slip_description(slip, kChannelWalls));
   spec.weights = {.radial_weight = 0, .rate_radius_power = 0, .measure_factor = 2.0};
   spec.flow_unit = "m^2/s";
   spec.drive = [law, H](double G) {
@@ -92,8 +92,8 @@ std::unique_ptr<Scene> make_pipe(ParameterHandler& prm, const Material& material
   const HerschelBulkley law = material.shear;
   ReducedSceneSpec<1> spec;
   spec.description =
-      fmt::format("pipe, radius {} m: u_z(r) on [0, R] (axisymmetric), {} at r = R", R,
-                  slip.any() ? "slip" + slip_description(slip, kPipeWall) : "no slip");
+      fmt::format("pipe, radius {} m: u_z(r) on [0, R] (axisymmetric), {} at r = R{}", R,
+                  slip.any() ? "slip" : "no slip", slip_description(slip, kPipeWall));
   spec.weights = {
       .radial_weight = 1, .rate_radius_power = 0, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = [law, R](double G) {

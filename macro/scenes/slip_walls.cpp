@@ -25,8 +25,8 @@ void declare_slip_walls(dealii::ParameterHandler& prm, const std::vector<Wall>& 
       "slip walls", "",
       Patterns::List(Patterns::Selection(fmt::format("{}", fmt::join(names(walls), "|"))), 0,
                      walls.size()),
-      fmt::format("the smooth walls, which slip by the law of subsection slip: a comma-separated "
-                  "list of {} (empty: no slip)",
+      fmt::format("the smooth walls, which slip by the law of subsection slip, named from: {} "
+                  "(comma-separated; empty: no slip)",
                   fmt::join(names(walls), ", ")));
 }
 
