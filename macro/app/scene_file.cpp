@@ -9,6 +9,7 @@
 #include "common/errors.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material_parameters.h"
+#include "macro/material/slip_parameters.h"
 #include "macro/scenes/scene.h"
 
 namespace softglass::macro::app {
@@ -18,6 +19,7 @@ namespace Patterns = dealii::Patterns;
 void declare_scene_file(dealii::ParameterHandler& prm) {
   declare_scenes(prm);
   declare_material(prm);
+  declare_slip_law(prm);
   fe::declare_solver_settings(prm);
   prm.enter_subsection("sweep");
   prm.declare_entry("values", "", Patterns::List(Patterns::Double(), 0, 100000),

@@ -15,17 +15,28 @@ double plug_half_width(const HerschelBulkley& law, const PlaneChannel& channel) 
   return std::min(law.yield_stress / channel.pressure_gradient, channel.half_height);
 }
 
-double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel) {
+namespace {
+
+// V_s(τ_w) of a slipping wall, 0 without slip.
+double slip_velocity(const SlipLaw* wall, double wall_stress) {
+  return wall ? wall->velocity(wall_stress) : 0.0;
+}
+
+}  // namespace
+
+double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel, const SlipLaw* wall) {
   const double tau_w = wall_stress(channel), phi = law.yield_stress / tau_w;
-  if (phi >= 1.0) return 0.0;
-  const double n = law.flow_index, H = channel.half_height;
-  return 2.0 * H * H * std::pow(tau_w / law.consistency, 1.0 / n) * n *
+  const double H = channel.half_height, slip = 2.0 * H * slip_velocity(wall, tau_w);
+  if (phi >= 1.0) return slip;
+  const double n = law.flow_index;
+  return slip + 2.0 * H * H * std::pow(tau_w / law.consistency, 1.0 / n) * n *
          std::pow(1.0 - phi, (n + 1.0) / n) * ((1.0 - phi) / (2.0 * n + 1.0) + phi / (n + 1.0));
 }
 
-double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y) {
+double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y,
+                const SlipLaw* wall) {
   const double G = channel.pressure_gradient;
-  return (law.rate_integral(wall_stress(channel)) - law.rate_integral(G * std::abs(y))) / G;
+  return slip_velocity(wall, wall_stress(channel)) + (law.rate_integral(wall_stress(channel)) - law.rate_integral(G * std::abs(y))) / G;
 }
 
 double flow_rate(const RegularisedLaw& law, const PlaneChannel& channel) {

@@ -22,6 +22,16 @@
 // Limits: Bingham (Buckingham) Q = (2GH³/3μ)(1 − 3φ/2 + φ³/2); power law
 // Q = 2H²(τ_w/K)^{1/n} n/(2n+1); Newtonian Q = 2GH³/(3μ), u = G(H² − y²)/(2μ).
 //
+// Wall slip. If both walls slip by a law V_s(σ_w) (slip_law.h), the stress
+// profile is unchanged — τ_w = GH is fixed by the balance alone — and the
+// material at the walls moves at V_s(GH): the profile above shifts by that
+// uniform velocity, the plug included, and
+//
+//     u(y) = V_s(GH) + [Φ(τ_w) − Φ(G|y|)] / G,     Q = Q_no-slip + 2H V_s(GH).
+//
+// Without a slip yield stress the channel flows under any G, as a sliding
+// plug below the yield stress (φ ≥ 1).
+//
 // A regularised law has no plug (γ̇_ε > 0 wherever τ > 0); the same two
 // integrals, evaluated by quadrature (rate_moment.h), give the exact solution
 // of the regularised problem. A regularised FE solver should converge to that
@@ -30,6 +40,7 @@
 
 #include "macro/material/herschel_bulkley.h"
 #include "macro/material/regularised_law.h"
+#include "macro/material/slip_law.h"
 
 namespace softglass::macro::exact {
 
@@ -44,11 +55,14 @@ double wall_stress(const PlaneChannel& channel);
 /// y0 = min(τ_y/G, H) [m]: the plug is |y| ≤ y0.
 double plug_half_width(const HerschelBulkley& law, const PlaneChannel& channel);
 
-/// Q [m²/s], the flow rate per unit width (spanwise), closed form.
-double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel);
+/// Q [m²/s], the flow rate per unit width (spanwise), closed form; both walls
+/// slip by `wall` (null: no slip).
+double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel,
+                 const SlipLaw* wall = nullptr);
 
-/// u(y) [m/s] for |y| ≤ H, closed form.
-double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y);
+/// u(y) [m/s] for |y| ≤ H, closed form; both walls slip by `wall` (null: no slip).
+double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y,
+                const SlipLaw* wall = nullptr);
 
 /// Q [m²/s] of the regularised problem (quadrature, numerics/quadrature.h).
 double flow_rate(const RegularisedLaw& law, const PlaneChannel& channel);

@@ -32,9 +32,27 @@
 //     γ̇(τ2) ln(R2/R1) ≤ Ω(τ1) ≤ γ̇(τ1) ln(R2/R1);
 // with s = τ(Ω/ln(R2/R1)) from the flow curve, τ1 = s gives Ω(τ1) ≤ Ω and
 // τ1 = (R2/R1)² s gives Ω(τ1) ≥ Ω: the root lies in [s, (R2/R1)² s].
+//
+// Wall slip. If the bob or the cup slips by a law V_s(σ_w) (slip_law.h), the
+// material at each cylinder moves relative to it at the slip velocity of the
+// wall stress there, τ1 at the bob and τ2 at the cup (the balance above holds
+// whatever the walls do), and the material lags the bob and leads the cup.
+// Adding the angular velocities of the two slip layers, V/r,
+//
+//     ω(r) = V_s,2(τ2)/R2 + ½ ∫_{τ_lo}^{τ(r)} γ̇(τ)/τ dτ,
+//     Ω    = V_s,1(τ1)/R1 + V_s,2(τ2)/R2 + ½ ∫_{τ_lo}^{τ1} γ̇(τ)/τ dτ,
+//
+// which still increases with T, continuously from 0: without a slip yield
+// stress a slipping cell turns under any torque, the unyielded material
+// beyond R_c rotating rigidly at V_s,2/R2 (a partially yielded gap), or all of
+// it when τ1 ≤ τ_y. The bracket of T(Ω) widens: at the root one of the three
+// terms is at least Ω/3, so τ1 is at least the smallest of s taken at Ω/3,
+// σ_w,1(R1 Ω/3) and (R2/R1)² σ_w,2(R2 Ω/3); (R2/R1)² s stays an upper bound,
+// the slip terms being positive.
 #pragma once
 
 #include "macro/material/herschel_bulkley.h"
+#include "macro/material/slip_law.h"
 
 namespace softglass::macro::exact {
 
@@ -44,22 +62,32 @@ struct CouetteCell {
   double length = 1.0;        ///< L [m], the wetted length
 };
 
+/// The cylinders' slip laws; null: no slip (the default).
+struct CouetteWalls {
+  const SlipLaw* inner = nullptr;  ///< the bob
+  const SlipLaw* outer = nullptr;  ///< the cup
+};
+
 /// τ(r) = T/(2π L r²) [Pa].
 double shear_stress(const CouetteCell& cell, double torque, double r);
 
 /// R_c = √(T/(2π L τ_y)) [m], +inf for τ_y = 0. Compare with R1 and R2.
 double yield_radius(const HerschelBulkley& law, const CouetteCell& cell, double torque);
 
-/// ω(r) = v_θ/r [rad/s] at R1 ≤ r ≤ R2 under torque T [N m].
+/// ω(r) = v_θ/r [rad/s] of the material at R1 ≤ r ≤ R2 under torque T [N m].
 double angular_velocity(const HerschelBulkley& law, const CouetteCell& cell, double torque,
-                        double r);
+                        double r, const CouetteWalls& walls = {});
 
-/// Ω = ω(R1) [rad/s] under torque T [N m]; 0 below the static yield torque.
-double rotation_rate(const HerschelBulkley& law, const CouetteCell& cell, double torque);
+/// Ω [rad/s], the bob's, under torque T [N m]; without slip 0 below the static
+/// yield torque.
+double rotation_rate(const HerschelBulkley& law, const CouetteCell& cell, double torque,
+                     const CouetteWalls& walls = {});
 
 /// T [N m] at rotation rate Ω ≥ 0 [rad/s], the inverse of rotation_rate to
-/// ~1e-13 relative; at Ω = 0 the static yield torque 2π L R1² τ_y (the limit
-/// Ω → 0⁺).
-double torque(const HerschelBulkley& law, const CouetteCell& cell, double rotation_rate);
+/// ~1e-13 relative; at Ω = 0 the limit Ω → 0⁺: the static yield torque
+/// 2π L R1² τ_y without slip, the smaller of it and the torques at which
+/// the walls begin to slip (their slip yield stresses) with slip.
+double torque(const HerschelBulkley& law, const CouetteCell& cell, double rotation_rate,
+              const CouetteWalls& walls = {});
 
 }  // namespace softglass::macro::exact

@@ -14,13 +14,15 @@ double plug_radius(const HerschelBulkley& law, const Pipe& pipe) {
   return std::min(2.0 * law.yield_stress / pipe.pressure_gradient, pipe.radius);
 }
 
-double flow_rate(const HerschelBulkley& law, const Pipe& pipe) {
+double flow_rate(const HerschelBulkley& law, const Pipe& pipe, const SlipLaw* wall) {
   const double tau_w = wall_stress(pipe), phi = law.yield_stress / tau_w;
-  if (phi >= 1.0) return 0.0;
-  const double n = law.flow_index, R = pipe.radius;
+  const double R = pipe.radius;
+  const double slip = wall ? std::numbers::pi * R * R * wall->velocity(tau_w) : 0.0;
+  if (phi >= 1.0) return slip;
+  const double n = law.flow_index;
   const double bracket = (1.0 - phi) * (1.0 - phi) / (3.0 * n + 1.0) +
                          2.0 * phi * (1.0 - phi) / (2.0 * n + 1.0) + phi * phi / (n + 1.0);
-  return std::numbers::pi * R * R * R * std::pow(tau_w / law.consistency, 1.0 / n) * n *
+  return slip + std::numbers::pi * R * R * R * std::pow(tau_w / law.consistency, 1.0 / n) * n *
          std::pow(1.0 - phi, (n + 1.0) / n) * bracket;
 }
 

@@ -19,10 +19,14 @@
 //
 // and 0 for φ ≥ 1. Limits: Bingham, the Buckingham–Reiner formula
 // Q = (πR⁴G/8μ)(1 − 4φ/3 + φ⁴/3); Newtonian, Hagen–Poiseuille Q = πR⁴G/(8μ).
+//
+// Wall slip by a law V_s(σ_w) (slip_law.h) leaves τ(r) as it is and shifts the
+// profile by the uniform V_s(τ_w): Q = Q_no-slip + πR² V_s(GR/2).
 #pragma once
 
 #include "macro/material/herschel_bulkley.h"
 #include "macro/material/regularised_law.h"
+#include "macro/material/slip_law.h"
 
 namespace softglass::macro::exact {
 
@@ -37,8 +41,8 @@ double wall_stress(const Pipe& pipe);
 /// r0 = min(2τ_y/G, R) [m]: the plug is r ≤ r0.
 double plug_radius(const HerschelBulkley& law, const Pipe& pipe);
 
-/// Q [m³/s], closed form.
-double flow_rate(const HerschelBulkley& law, const Pipe& pipe);
+/// Q [m³/s], closed form; the wall slips by `wall` (null: no slip).
+double flow_rate(const HerschelBulkley& law, const Pipe& pipe, const SlipLaw* wall = nullptr);
 
 /// w(r) [m/s] for 0 ≤ r ≤ R, closed form.
 double velocity(const HerschelBulkley& law, const Pipe& pipe, double r);

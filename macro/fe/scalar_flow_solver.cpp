@@ -22,6 +22,14 @@
 // newton_continuation.h, which also holds the modified tangent and the
 // continuation in ε).
 //
+// Slip walls (scalar_problem.h) add the wall's potential ∫_Γs ρ D(V_s) ds to
+// J, so R gains ∫_Γs ρ s σ_ε(V_s) v ds and the Newton matrix
+// ∫_Γs ρ s² σ_ε'(V_s) δu v ds, with the slip law regularised at
+// ε_V = ε · WallSlip::length (slip_law.h): a symmetric positive addition, the
+// consistent Jacobian of the residual, so Newton converges as quadratically
+// as without slip. The slip walls are left out of the Dirichlet constraints;
+// their value in Drive::boundary_values is the wall's u_w.
+//
 // Continuation. The solver starts at ε = γ̇_c (nearly a Newtonian fluid with
 // the scene's viscosity scale) and divides ε by 10 per stage down to the
 // target. The last two stages (10ε and ε) give the regularisation error
@@ -119,9 +127,10 @@ class ScalarFlowSolver<dim>::Implementation {
  public:
   Implementation(const Triangulation<dim>& base_mesh, unsigned mapping_degree,
                  const SectionWeights& weights, std::shared_ptr<const ShearLaw> law,
-                 const SolverSettings& settings)
+                 const WallSlip& slip, const SolverSettings& settings)
       : weights_(weights),
         law_(std::move(law)),
+        slip_(slip),
         settings_(settings),
         communicator_(dim == 1 ? MPI_COMM_SELF : settings.mesh_communicator),
         system_(communicator_, MatrixKind::positive_definite),
@@ -138,6 +147,9 @@ class ScalarFlowSolver<dim>::Implementation {
             *law_, settings),
         augmented_lagrangian_({mapping_, fe_, dof_handler_, weights_, communicator_}, system_,
                               constraints_, *law_, settings) {
+    require(!slip_.any() || settings.method == Method::regularised,
+            "solver: method = augmented-lagrangian cannot take slip walls (its u-step is linear "
+            "with the walls' values fixed); allowed with slip walls: method = regularised");
     coarse_.copy_triangulation(base_mesh);
   }
 
@@ -181,6 +193,22 @@ class ScalarFlowSolver<dim>::Implementation {
     return regularised_ ? regularised_->stress(rate) : law_->stress(rate);
   }
 
+  /// The slip velocity V_s = s (u − u_w) on slip wall `id` and the wall
+  /// stress of the law regularised at ε_V = ε · length (ε: `rate_scale`).
+  struct WallState {
+    double velocity;
+    WallStress stress;
+  };
+  WallState wall_state(const Point<dim>& x, double u, types::boundary_id id,
+                       double rate_scale) const {
+    const double velocity = s(x) * (u - drive_.boundary_values.at(id));
+    return {velocity, slip_.law->regularised(velocity, rate_scale * slip_.length)};
+  }
+  bool slips(const typename DoFHandler<dim>::active_cell_iterator& cell, unsigned face) const {
+    return slip_.any() && cell->face(face)->at_boundary() &&
+           slip_.walls.count(cell->face(face)->boundary_id()) > 0;
+  }
+
   double rho(const Point<dim>& x) const { return weights_.rho(x[0]); }
   double s(const Point<dim>& x) const { return weights_.s(x[0]); }
 
@@ -199,6 +227,7 @@ class ScalarFlowSolver<dim>::Implementation {
 
   SectionWeights weights_;
   std::shared_ptr<const ShearLaw> law_;
+  WallSlip slip_;
   SolverSettings settings_;
   Drive drive_;
   MPI_Comm communicator_;
@@ -265,6 +294,7 @@ void ScalarFlowSolver<dim>::Implementation::make_constraints() {
     constraints->reinit(system_.relevant);
     DoFTools::make_hanging_node_constraints(dof_handler_, *constraints);
     for (const auto& [id, value] : drive_.boundary_values) {
+      if (slip_.walls.count(id) > 0) continue;  // Robin, not Dirichlet
       VectorTools::interpolate_boundary_values(
           mapping_, dof_handler_, id, Functions::ConstantFunction<dim>(homogeneous ? 0.0 : value),
           *constraints);
@@ -298,6 +328,10 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
   Vector<double> cell_residual(n);
   std::vector<Tensor<1, dim>> gradients(quadrature.size());
   std::vector<types::global_dof_index> dofs(n);
+  const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
+  FEFaceValues<dim> face_values(mapping_, fe_, face_quadrature,
+                                update_values | update_quadrature_points | update_JxW_values);
+  std::vector<double> face_u(face_quadrature.size());
 
   for (const auto& cell : owned_cells(dof_handler_)) {
     fe_values.reinit(cell);
@@ -324,6 +358,26 @@ void ScalarFlowSolver<dim>::Implementation::assemble_system(const RegularisedLaw
           const Tensor<1, dim> grad_j = fe_values.shape_grad(j, q);
           cell_matrix(i, j) +=
               weight * (eta.value * (grad_i * grad_j) + anisotropy * n_i * (direction * grad_j));
+        }
+      }
+    }
+    // Slip walls: ∫ ρ s σ_ε(V) φ_i ds and ∫ ρ s² σ_ε'(V) φ_i φ_j ds.
+    for (const unsigned f : cell->face_indices()) {
+      if (!slips(cell, f)) continue;
+      face_values.reinit(cell, f);
+      face_values.get_function_values(field, face_u);
+      for (const unsigned q : face_values.quadrature_point_indices()) {
+        const Point<dim>& x = face_values.quadrature_point(q);
+        const WallState wall =
+            wall_state(x, face_u[q], cell->face(f)->boundary_id(), law.rate_scale());
+        const double weight = rho(x) * s(x) * face_values.JxW(q);
+        for (unsigned i = 0; i < n; ++i) {
+          const double phi_i = face_values.shape_value(i, q);
+          cell_residual(i) += weight * wall.stress.value * phi_i;
+          if (!with_matrix) continue;
+          for (unsigned j = 0; j < n; ++j)
+            cell_matrix(i, j) +=
+                weight * s(x) * wall.stress.derivative * phi_i * face_values.shape_value(j, q);
         }
       }
     }
@@ -429,9 +483,10 @@ Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional
       mapping_, fe_, quadrature,
       update_values | update_gradients | update_quadrature_points | update_JxW_values);
   const QGauss<dim - 1> face_quadrature(fe_.degree + 1);
-  FEFaceValues<dim> face_values(mapping_, fe_, face_quadrature,
-                                update_gradients | update_quadrature_points | update_JxW_values);
-  std::vector<double> values(quadrature.size());
+  FEFaceValues<dim> face_values(
+      mapping_, fe_, face_quadrature,
+      update_values | update_gradients | update_quadrature_points | update_JxW_values);
+  std::vector<double> values(quadrature.size()), face_u(face_quadrature.size());
   std::vector<Tensor<1, dim>> gradients(quadrature.size()), face_gradients(face_quadrature.size());
   // This rank's share of flow, dissipation, boundary integral, volume, yielded volume.
   std::array<double, 5> sums{};
@@ -451,9 +506,23 @@ Outputs ScalarFlowSolver<dim>::Implementation::evaluate(const BoundaryFunctional
       if (local.yielded) yielded += w;
       ++k;
     }
-    if (!boundary.integrand || !cell->at_boundary()) continue;
+    if (!cell->at_boundary()) continue;
     for (const unsigned f : cell->face_indices()) {
-      if (!cell->face(f)->at_boundary() || cell->face(f)->boundary_id() != boundary.id) continue;
+      // The walls' dissipation σ_w V_s (slip walls exist only with the
+      // regularised method: the constructor refuses them to ALG2).
+      if (slips(cell, f)) {
+        face_values.reinit(cell, f);
+        face_values.get_function_values(field, face_u);
+        for (const unsigned q : face_values.quadrature_point_indices()) {
+          const Point<dim>& x = face_values.quadrature_point(q);
+          const WallState wall = wall_state(x, face_u[q], cell->face(f)->boundary_id(),
+                                            regularised_->rate_scale());
+          dissipation += wall.stress.value * wall.velocity * rho(x) * face_values.JxW(q);
+        }
+      }
+      if (!boundary.integrand || !cell->face(f)->at_boundary() ||
+          cell->face(f)->boundary_id() != boundary.id)
+        continue;
       face_values.reinit(cell, f);
       face_values.get_function_gradients(field, face_gradients);
       for (const unsigned q : face_values.quadrature_point_indices()) {
@@ -586,9 +655,9 @@ template <int dim>
 ScalarFlowSolver<dim>::ScalarFlowSolver(const Triangulation<dim>& base_mesh,
                                         unsigned mapping_degree, const SectionWeights& weights,
                                         std::shared_ptr<const ShearLaw> law,
-                                        const SolverSettings& settings)
+                                        const WallSlip& slip, const SolverSettings& settings)
     : impl_(std::make_unique<Implementation>(base_mesh, mapping_degree, weights, std::move(law),
-                                             settings)) {}
+                                             slip, settings)) {}
 
 template <int dim>
 ScalarFlowSolver<dim>::~ScalarFlowSolver() = default;

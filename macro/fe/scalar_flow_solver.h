@@ -28,7 +28,8 @@ namespace softglass::macro::fe {
 /// The integrals one solution yields.
 struct Outputs {
   double flow = 0.0;              ///< c ∫ ρ u dx
-  double dissipation = 0.0;       ///< c ∫ ρ τ(γ̇) γ̇ dx
+  /// c ∫ ρ τ(γ̇) γ̇ dx + c ∫_Γs ρ σ_w V_s ds: bulk and wall dissipation
+  double dissipation = 0.0;
   double yielded_fraction = 0.0;  ///< ∫_{|τ|>τ_y} ρ dx / ∫ ρ dx
   double boundary = 0.0;          ///< c ∫_Γ g(γ̇) ρ ds on the requested boundary
   double max_value = 0.0;         ///< max |u| at the nodes
@@ -56,10 +57,13 @@ template <int dim>
 class ScalarFlowSolver {
  public:
   /// `base_mesh` is copied; every operating point starts from it (refined
-  /// settings.global_refinements times) and adapts its own copy.
+  /// settings.global_refinements times) and adapts its own copy. Walls in
+  /// `slip` take the Robin condition of their slip law (scalar_problem.h);
+  /// InputError if any does and the method is the augmented Lagrangian, which
+  /// has no slip walls.
   ScalarFlowSolver(const dealii::Triangulation<dim>& base_mesh, unsigned mapping_degree,
                    const SectionWeights& weights, std::shared_ptr<const ShearLaw> law,
-                   const SolverSettings& settings);
+                   const WallSlip& slip, const SolverSettings& settings);
   ~ScalarFlowSolver();
 
   /// Solves one operating point; NumericalError if a solve does not converge.

@@ -15,6 +15,10 @@
 // material dragged along at the rim — a lower bound of a real overfill,
 // which also wets the edge face.
 //
+// Slip (`slip walls = cone, plate`, either or both) by the law of `subsection
+// slip`. The closed form stays the no-slip one of the ideal cone, so the
+// deviation from it then includes the slip's effect on the torque.
+//
 // Normal force. The plate carries F = ∫ (−σ_zz) dA. For the steady simple
 // shear of the ideal cone (uniform rate) the radial momentum balance gives
 // F = πR² N1/2 (exact/cone_plate.h). Here the local rate on the plate varies
@@ -32,11 +36,19 @@
 #include "macro/scenes/entries.h"
 #include "macro/scenes/meshes.h"
 #include "macro/scenes/reduced_scene.h"
+#include "macro/scenes/slip_walls.h"
 
 namespace softglass::macro {
 
 using dealii::ParameterHandler;
 namespace Patterns = dealii::Patterns;
+
+namespace {
+
+// The cone with its truncation (id 3) and the plate (id 2): meshes.h.
+const std::vector<Wall> kWalls{{"cone", 3}, {"plate", 2}};
+
+}  // namespace
 
 void declare_cone_plate(ParameterHandler& prm) {
   prm.enter_subsection("cone-plate");
@@ -54,6 +66,7 @@ void declare_cone_plate(ParameterHandler& prm) {
       "collar of the rim's height beyond the cone's edge, top and side free)");
   prm.declare_entry("radial cells", "24", Patterns::Integer(2, 10000), "cells along the radius");
   prm.declare_entry("gap cells", "2", Patterns::Integer(1, 1000), "cells across the gap");
+  declare_slip_walls(prm, kWalls);
   prm.leave_subsection();
 }
 
@@ -79,6 +92,7 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
                       fill, h_t, 2.0 * h_t / (R * std::tan(beta))));
   const unsigned radial = prm.get_integer("radial cells"), gap = prm.get_integer("gap cells");
   prm.leave_subsection();
+  const fe::WallSlip slip = read_slip_walls(prm, "cone-plate", kWalls, R * std::tan(beta));
 
   dealii::Triangulation<2> mesh;
   meshes::cone_plate(mesh, R, beta, h_t, spherical, fill, radial, gap);
@@ -93,8 +107,8 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
                    : fmt::format("overfilled: a collar out to {} R beyond the cone's edge", fill);
   spec.description = fmt::format(
       "cone and plate R = {} m, beta = {} deg, truncation {} m, sample {}: omega(r, z) in the "
-      "meridian plane, cone at Omega, plate fixed",
-      R, beta * 180.0 / std::numbers::pi, h_t, sample);
+      "meridian plane, cone at Omega, plate fixed{}",
+      R, beta * 180.0 / std::numbers::pi, h_t, sample, slip_description(slip, kWalls));
   spec.kind = DriveKind::rotation;
   spec.mapping_degree = spherical && fill <= 1.0 ? 2 : 1;  // curved cells at a spherical rim
   spec.weights = {
@@ -108,6 +122,7 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
     spec.normal_force = {.id = 2, .integrand = [n1](double rate) { return 0.5 * n1(rate); }};
   }
   spec.reference = [law, cone](double omega) { return exact::torque(law, cone, omega); };
+  spec.slip = slip;
   // The cone's uniform rate Ω/β and the stress 3M/(2πR³) of a small angle.
   spec.instrument =
       InstrumentConstants{.strain_constant = 1.0 / beta,

@@ -7,6 +7,10 @@
 //                      distance h_b below the bob's base and a free surface
 //                      level with the bob's top; the torque's deviation from the
 //                      ideal cell is the end effect.
+//
+// Slip (`slip walls = bob, cup`, either or both): the bob (with its base) and
+// the cup (with its bottom) slide by the law of `subsection slip`; the closed
+// form of the ideal cell then has the same slip (exact/couette.h).
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>
 
@@ -17,11 +21,19 @@
 #include "macro/scenes/entries.h"
 #include "macro/scenes/meshes.h"
 #include "macro/scenes/reduced_scene.h"
+#include "macro/scenes/slip_walls.h"
 
 namespace softglass::macro {
 
 using dealii::ParameterHandler;
 namespace Patterns = dealii::Patterns;
+
+namespace {
+
+// The bob and its base (id 0), the cup and its bottom (id 1): meshes.h.
+const std::vector<Wall> kWalls{{"bob", 0}, {"cup", 1}};
+
+}  // namespace
 
 void declare_couette(ParameterHandler& prm) {
   prm.enter_subsection("couette");
@@ -33,6 +45,7 @@ void declare_couette(ParameterHandler& prm) {
   prm.declare_entry("bottom gap", "0.0075", Patterns::Double(),
                     "h_b [m], bob base to cup bottom (end effects only), > 0");
   prm.declare_entry("gap cells", "8", Patterns::Integer(1, 1000), "cells across R2 - R1");
+  declare_slip_walls(prm, kWalls);
   prm.leave_subsection();
 }
 
@@ -49,12 +62,20 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   const double h_b = entries::positive(prm, "couette", "bottom gap", "m");
   const unsigned cells = prm.get_integer("gap cells");
   prm.leave_subsection();
+  const fe::WallSlip slip = read_slip_walls(prm, "couette", kWalls, R2 - R1);
 
   const HerschelBulkley law = material.shear;
   const exact::CouetteCell cell{.inner_radius = R1, .outer_radius = R2, .length = L};
+  const auto slips = [&slip](dealii::types::boundary_id id) {
+    return slip.walls.count(id) > 0 ? slip.law.get() : nullptr;
+  };
+  const exact::CouetteWalls walls{.inner = slips(0), .outer = slips(1)};
   // γ̇_c: the Newtonian rate at the bob, 2ΩR2²/(R2² − R1²).
   const double rate_factor = 2.0 * R2 * R2 / (R2 * R2 - R1 * R1);
-  const auto reference = [law, cell](double omega) { return exact::torque(law, cell, omega); };
+  // The closed form holds the slip law by pointer; the lambda keeps it alive.
+  const auto reference = [law, cell, walls, keep = slip.law](double omega) {
+    return exact::torque(law, cell, omega, walls);
+  };
   // ISO 3219: the representative rate and stress of a narrow gap, at the
   // radius whose square is the mean of R1² and R2² (no end correction).
   const double r1s = R1 * R1, r2s = R2 * R2;
@@ -73,14 +94,15 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
     ReducedSceneSpec<1> spec;
     spec.description = fmt::format(
         "Couette cell R1 = {} m, R2 = {} m, L = {} m without end effects: omega(r), bob at Omega, "
-        "cup fixed",
-        R1, R2, L);
+        "cup fixed{}",
+        R1, R2, L, slip_description(slip, kWalls));
     spec.kind = DriveKind::rotation;
     spec.weights = {
         .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi * L};
     spec.drive = drive;
     spec.reference = reference;
     spec.instrument = instrument;
+    spec.slip = slip;
     return make_reduced_scene(mesh, std::move(spec), law, settings);
   }
   dealii::Triangulation<2> mesh;
@@ -88,14 +110,15 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   ReducedSceneSpec<2> spec;
   spec.description = fmt::format(
       "Couette cell R1 = {} m, R2 = {} m, L = {} m with its bottom (gap {} m) and free surface: "
-      "omega(r, z) in the meridian plane",
-      R1, R2, L, h_b);
+      "omega(r, z) in the meridian plane{}",
+      R1, R2, L, h_b, slip_description(slip, kWalls));
   spec.kind = DriveKind::rotation;
   spec.weights = {
       .radial_weight = 1, .rate_radius_power = 1, .measure_factor = 2.0 * std::numbers::pi};
   spec.drive = drive;
   spec.reference = reference;
   spec.instrument = instrument;
+  spec.slip = slip;
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }
 

@@ -25,7 +25,7 @@ class ReducedScene final : public Scene {
                const HerschelBulkley& law, const fe::SolverSettings& settings)
       : spec_(std::move(spec)),
         extent_(body_extent(mesh, spec_.weights)),
-        solver_(mesh, spec_.mapping_degree, spec_.weights, shear_law(law), settings) {}
+        solver_(mesh, spec_.mapping_degree, spec_.weights, shear_law(law), spec_.slip, settings) {}
 
   std::string description() const override { return spec_.description; }
 
@@ -59,9 +59,10 @@ class ReducedScene final : public Scene {
   SceneResult solve(double drive) override {
     const fe::PointResult r = solver_.run(spec_.drive(drive), spec_.normal_force);
     const bool rotation = spec_.kind == DriveKind::rotation;
-    // Torque from the dissipation: T Ω = ∫ τ γ̇ dV (the discrete reaction of
-    // the rotor with the test function ω_h/Ω, which is 1 there and 0 on the
-    // stator); flow rate c∫ρu directly.
+    // Torque from the dissipation: T Ω = ∫ τ γ̇ dV + ∫ σ_w V_s dA over slip
+    // walls (the discrete reaction of the rotor with the test function ω_h/Ω,
+    // which is 1 there and 0 on the stator; with slip walls, the power balance
+    // of scalar_problem.h); flow rate c∫ρu directly.
     const auto main = [&](const fe::Outputs& o) {
       return rotation ? o.dissipation / drive : o.flow;
     };

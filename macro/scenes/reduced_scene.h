@@ -34,6 +34,8 @@ struct ReducedSceneSpec {
   std::string flow_unit = "m^3/s";
   /// Rotational rheometers: how the instrument reports Ω and M as γ̇ and τ.
   std::optional<InstrumentConstants> instrument;
+  /// The walls that slip (scenes/slip_walls.h); none by default.
+  fe::WallSlip slip;
 };
 
 /// Builds the scene; `mesh` is copied by the solver.

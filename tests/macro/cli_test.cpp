@@ -157,6 +157,35 @@ TEST_F(MacroCli, EntriesOfAnotherSceneAreRefused) {
       << error_;
 }
 
+// Slip walls: the scene's own wall names only (a name of no wall, or of
+// another scene's wall, is refused when the file is read), a slip law with
+// its coefficients stated and allowed, and not with the augmented Lagrangian.
+TEST_F(MacroCli, SlipInputsAreCheckedNamingTheEntry) {
+  const std::string law = "subsection slip\n set coefficient = 2e-5\n set exponent = 2\nend\n";
+  for (const char* wall : {"rotor", "cone", "bob, plate"}) {
+    EXPECT_EQ(run(couette(std::string(" set slip walls = ") + wall + "\n") + law), 2) << wall;
+    EXPECT_NE(error_.find("slip walls"), std::string::npos) << error_;
+  }
+  EXPECT_EQ(run(couette(" set slip walls = bob\n") +
+                "subsection slip\n set coefficient = -1e-5\n set exponent = 2\nend\n"),
+            2);
+  EXPECT_NE(error_.find("slip: 'coefficient' = -1e-05 is not allowed"), std::string::npos)
+      << error_;
+  EXPECT_EQ(run(couette(" set slip walls = cup\n")), 2);  // the law's coefficients unset
+  EXPECT_NE(error_.find("slip: 'coefficient' = 0 is not allowed"), std::string::npos) << error_;
+  EXPECT_EQ(run(couette(" set slip walls = cup\n") +
+                "subsection slip\n set coefficient = 2e-5\n set exponent = 0\nend\n"),
+            2);
+  EXPECT_NE(error_.find("slip: 'exponent' = 0 is not allowed"), std::string::npos) << error_;
+  EXPECT_EQ(run(couette(" set slip walls = bob\n") + law +
+                "subsection solver\n set method = augmented-lagrangian\nend\n"),
+            2);
+  EXPECT_NE(error_.find("augmented-lagrangian cannot take slip walls"), std::string::npos)
+      << error_;
+  EXPECT_FALSE(fs::exists(dir_ / "out")) << "a refused run creates nothing";
+  EXPECT_EQ(run(couette(" set slip walls = bob, cup\n") + law), 0) << error_;
+}
+
 TEST_F(MacroCli, UnitsAfterNumbersAreRejected) {
   EXPECT_EQ(run(couette(" set length = 50 mm\n")), 2);
   EXPECT_NE(error_.find("length"), std::string::npos) << error_;
