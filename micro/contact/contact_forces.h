@@ -16,6 +16,7 @@
 
 #include "micro/contact/contact_law.h"
 #include "micro/geometry/lees_edwards_box.h"
+#include "micro/contact/wall_contacts.h"
 #include "micro/geometry/neighbour_list.h"
 
 namespace softglass::micro {
@@ -56,8 +57,9 @@ struct ContactField {
       Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V), if requested
   double energy = 0.0;
   double force_magnitude_sum = 0.0;  // Σ_c |f_c|
-  std::size_t contact_count = 0;
+  std::size_t contact_count = 0;  // pairs only
   ContactList contacts;
+  WallContacts walls;  // with walls (wall_contacts.h): always filled
 
   std::size_t memory_bytes() const;
 

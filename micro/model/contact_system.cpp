@@ -60,7 +60,19 @@ bool ContactSystem::ensure_neighbours(double extra_nonaffine, double strain) {
 
 const ContactField& ContactSystem::compute_forces(const ForceRequest& request) {
   compute_contact_forces(*law_, box_, particles_.position, neighbours_, request, field_);
+  if (walls_.present())
+    add_wall_forces(*law_, walls_, particles_.position, particles_.radius, request, field_);
   return field_;
+}
+
+void ContactSystem::set_walls(const Walls& walls) {
+  walls.check_inside(box_.side(), particles_.max_radius(), neighbours_.skin());
+  walls_ = walls;
+}
+
+double ContactSystem::occupied_volume_fraction() const {
+  if (!walls_.present()) return volume_fraction();
+  return particles_.total_volume() / (box_.side() * box_.side() * walls_.gap());
 }
 
 Particles ContactSystem::wrapped_in_label_order() const {
@@ -78,6 +90,7 @@ void ContactSystem::rescale(double factor) {
   for (auto& x : particles_.position) x *= factor;
   const double strain = box_.strain();
   box_ = LeesEdwardsBox(box_.side() * factor);
+  walls_ = {walls_.lower * factor, walls_.upper * factor};
   box_.set_strain(strain);
   for (auto& x : particles_.position) box_.wrap(x);
   rebuild();

@@ -36,6 +36,14 @@ class ContactSystem {
   double volume_fraction() const { return particles_.total_volume() / box_.volume(); }
   const NeighbourList& neighbours() const { return neighbours_; }
 
+  /// Smooth walls (wall_contacts.h); none by default. Checked against the
+  /// cell, the largest radius and the skin (InputError).
+  void set_walls(const Walls& walls);
+  const Walls& walls() const { return walls_; }
+  /// φ of the particles in the volume they can occupy: the slab L²(y_hi − y_lo)
+  /// between the walls, or the cell.
+  double occupied_volume_fraction() const;
+
   /// Elastic forces at the current configuration (the list must be valid).
   const ContactField& compute_forces(const ForceRequest& request = {});
   const ContactField& forces() const { return field_; }
@@ -57,7 +65,7 @@ class ContactSystem {
   /// (x_i += increment · y_i e_x; either sign).
   void shear(double increment);
   void set_strain(double strain);
-  /// Scales positions and cell by `factor` (compression when < 1).
+  /// Scales positions, cell and walls by `factor` (compression when < 1).
   void rescale(double factor);
 
   double max_nonaffine_displacement() const { return max_nonaffine_; }
@@ -80,6 +88,7 @@ class ContactSystem {
   Particles particles_;
   LeesEdwardsBox box_;
   std::shared_ptr<const ContactLaw> law_;
+  Walls walls_;
   NeighbourList neighbours_;
   ContactField field_;
   std::vector<Vec3> nonaffine_;  // since the last build

@@ -56,6 +56,8 @@ void EhdSettings::validate() const {
   require(max_cg_iterations >= 1, "velocity solve needs at least one CG iteration");
 }
 
+const WallContacts EhdDrag::kNoWalls{};
+
 EhdDrag::EhdDrag(EhdSettings settings) : settings_(settings) {
   settings_.validate();
 }
@@ -118,7 +120,7 @@ void EhdDrag::gather(std::span<const Vec3> per_contact, std::span<Vec3> out) con
 
 void EhdDrag::gradient_at(const ContactList& c, std::span<const Vec3> force,
                           std::span<const Vec3> v, std::vector<Vec3>& w,
-                          std::vector<Vec3>& gradient) {
+                          std::vector<Vec3>& gradient, bool trial) {
   const std::size_t m = c.size();
 #pragma omp parallel for schedule(static) if (m >= kParallelContacts)
   for (std::size_t k = 0; k < m; ++k) {
@@ -134,6 +136,7 @@ void EhdDrag::gradient_at(const ContactList& c, std::span<const Vec3> force,
   }
   for (std::size_t a = 0; a < v.size(); ++a) gradient[a] = reservoir_[a] * v[a] - force[a];
   gather(scratch_, gradient);
+  walls_.add_gradient(v, trial, gradient);
 }
 
 int EhdDrag::newton_direction(const ContactList& c, std::span<const double> friction,
@@ -160,6 +163,7 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
     block_inverse_[c.i[k]] += block;
     block_inverse_[c.j[k]] += block;
   }
+  walls_.add_blocks(settings_.tolerance * velocity_scale, friction, block_inverse_);
   for (auto& b : block_inverse_) b = b.inverse().eval();
 
   // H p = ζ p + Σ_c ±A_c (p_i − p_j),  A_c q = s_c (P q − θ_c ŵ(ŵ·q)) + b_c q.
@@ -173,6 +177,7 @@ int EhdDrag::newton_direction(const ContactList& c, std::span<const double> fric
     }
     for (std::size_t a = 0; a < n; ++a) out[a] = reservoir_[a] * in[a];
     gather(scratch_, out);
+    walls_.add_hessian_times(in, out);
   };
 
   // The drag Hessian is positive definite (ζ > 0): no truncation needed. A
@@ -222,6 +227,9 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
   }
   for (std::size_t a = 0; a < n; ++a) gradient_trial_[a] = reservoir_[a] * trial_[a] - force[a];
   gather(scratch_, gradient_trial_);
+  const FilmLaw::Change walls = walls_.change_to(trial_, gradient_trial_);
+  change += walls.value;
+  magnitude += walls.magnitude;
   // Each term carries a relative rounding error of a few ε; 64ε of their
   // magnitudes bounds the error of the sum with a margin.
   return {change, 64.0 * std::numeric_limits<double>::epsilon() * magnitude};
@@ -229,10 +237,12 @@ EhdDrag::Change EhdDrag::change_along_step(const ContactList& c, std::span<const
 
 VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde, double rate,
                                   std::span<const double> friction, std::span<const Vec3> force,
-                                  std::span<Vec3> v) {
+                                  std::span<Vec3> v, const WallContacts& walls) {
   const std::size_t n = v.size();
   const std::size_t m = c.size();
   prepare(c, gamma_tilde, rate, friction);
+  walls_.prepare(walls, settings_.film, settings_.enabled, gamma_tilde, rate,
+                 settings_.rest_thickness);
   build_incidence(c, n);
   for (auto* vec : {&w_trial_, &unit_w_}) vec->resize(m);
   secant_.resize(m);
@@ -241,7 +251,7 @@ VelocitySolveStats EhdDrag::solve(const ContactList& c, double gamma_tilde, doub
   s_.resize(m);
   VelocitySolveStats stats;
 
-  gradient_at(c, force, v, w_, gradient_);
+  gradient_at(c, force, v, w_, gradient_, false);
   if (settings_.coupling == DragCoupling::lagged) {
     // One sweep with the drag of the previous velocities: ζ v = F^e + F^EHD(v_prev).
     for (std::size_t a = 0; a < n; ++a) v[a] -= gradient_[a] / reservoir_[a];
@@ -276,19 +286,25 @@ int EhdDrag::jacobi_sweeps(const ContactList& c, std::span<const double> frictio
                            std::span<const Vec3> force, std::span<Vec3> v, Residual& r) {
   int sweeps = 0;
   while (r.residual > settings_.tolerance) {
+    if (walls_.size() > 0) {
+      wall_secant_.assign(v.size(), 0.0);
+      walls_.add_secants(wall_secant_);
+    }
     for (std::size_t a = 0; a < v.size(); ++a) {
       double local = 0.0, pairs = 0.0;
       for (std::size_t e = incidence_start_[a]; e < incidence_start_[a + 1]; ++e) {
         local += secant_[incidence_[e] >> 1];
         pairs += geometry_.dashpot[incidence_[e] >> 1];
       }
+      if (walls_.size() > 0) local += wall_secant_[a];
       trial_[a] = v[a] - gradient_[a] / (reservoir_[a] + 0.75 * local + pairs);
     }
-    gradient_at(c, force, trial_, w_trial_, gradient_trial_);
+    gradient_at(c, force, trial_, w_trial_, gradient_trial_, true);
     const Residual trial = relative_residual(gradient_trial_, trial_, friction);
     if (trial.residual > 0.5 * r.residual) break;
     std::copy(trial_.begin(), trial_.end(), v.begin());
     w_.swap(w_trial_);
+    walls_.accept_trial();
     gradient_.swap(gradient_trial_);
     r = trial;
     ++sweeps;
@@ -303,6 +319,7 @@ void EhdDrag::newton(const ContactList& c, std::span<const double> friction,
                      std::span<const Vec3> force, std::span<Vec3> v, Residual r,
                      VelocitySolveStats& stats) {
   relief_.assign(c.size(), 0.0);
+  walls_.reset_relief();
   double first_norm = 0.0;
   for (int it = 0;; ++it) {
     if (it > 0) r = relative_residual(gradient_, v, friction);
@@ -331,8 +348,10 @@ void EhdDrag::newton(const ContactList& c, std::span<const double> friction,
       const double before = w_[k].norm(), after = w_trial_[k].norm();
       relief_[k] = after >= keep * before ? 0.5 : 0.0;
     }
+    walls_.update_relief(keep);
     std::copy(trial_.begin(), trial_.end(), v.begin());
     w_.swap(w_trial_);
+    walls_.accept_trial();
     gradient_.swap(gradient_trial_);
   }
 }
@@ -388,6 +407,19 @@ DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde, doub
     }
   }
   return sum;
+}
+
+}  // namespace softglass::micro
+
+namespace softglass::micro {
+
+void EhdDrag::wall_drag(const WallContacts& walls, double gamma_tilde, double rate,
+                        std::span<const Vec3> v, std::span<Vec3> per_film,
+                        std::span<Vec3> drag) const {
+  WallFilms films;
+  films.prepare(walls, settings_.film, settings_.enabled, gamma_tilde, rate,
+                settings_.rest_thickness);
+  films.forces(v, per_film, drag);
 }
 
 }  // namespace softglass::micro

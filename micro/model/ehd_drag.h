@@ -62,6 +62,7 @@
 #include "micro/contact/contact_forces.h"
 #include "micro/model/film.h"
 #include "micro/model/stokes_friction.h"
+#include "micro/model/wall_films.h"
 #include "micro/numerics/block_cg.h"
 
 namespace softglass::micro {
@@ -109,10 +110,18 @@ class EhdDrag {
   /// Non-affine velocities v for the given contacts, Stokes frictions ζ
   /// (6π γ̃ R/f_r) and elastic forces, under the affine flow c y e_x at shear
   /// rate c (`rate`, in units of the rate of γ̃: 1 in steady shear); `v` holds
-  /// the initial guess on entry. Throws NumericalError if Newton fails.
+  /// the initial guess on entry; `walls` the particles' wall contacts, whose
+  /// films (wall_films.h) join the pairs'. Throws NumericalError if Newton fails.
   VelocitySolveStats solve(const ContactList& contacts, double gamma_tilde, double rate,
                            std::span<const double> friction, std::span<const Vec3> elastic_force,
-                           std::span<Vec3> v);
+                           std::span<Vec3> v, const WallContacts& walls = kNoWalls);
+
+  /// The drag of each wall film on its particle at velocities v and rate c
+  /// (into `per_film`, sized like `walls`), and their sum per particle in
+  /// `drag` if not empty. The walls take the opposite forces.
+  void wall_drag(const WallContacts& walls, double gamma_tilde, double rate,
+                 std::span<const Vec3> v, std::span<Vec3> per_film,
+                 std::span<Vec3> drag = {}) const;
 
   /// Σ_c d ⊗ f at velocities v and shear rate c of the pair forces that
   /// dissipate, each part apart (σ^v = −(film + friction)/V); also the sum of
@@ -133,9 +142,11 @@ class EhdDrag {
   void prepare(const ContactList& contacts, double gamma_tilde, double rate,
                std::span<const double> friction);
   void build_incidence(const ContactList& contacts, std::size_t n);
-  /// ∇Φ(v); leaves the tangential relative velocities in `w`.
+  /// ∇Φ(v); leaves the tangential relative velocities in `w` (and the wall
+  /// films' in their current or `trial` buffer).
   void gradient_at(const ContactList& contacts, std::span<const Vec3> force,
-                   std::span<const Vec3> v, std::vector<Vec3>& w, std::vector<Vec3>& gradient);
+                   std::span<const Vec3> v, std::vector<Vec3>& w, std::vector<Vec3>& gradient,
+                   bool trial);
   /// Φ(v + tδ) − Φ(v) for the Newton step δ, without cancellation, and a bound
   /// on its rounding error; leaves the trial point, its tangential velocities
   /// and gradient in the trial buffers.
@@ -165,8 +176,12 @@ class EhdDrag {
   int newton_direction(const ContactList& contacts, std::span<const double> friction,
                        double velocity_scale, double eta);
 
+  static const WallContacts kNoWalls;
+
   EhdSettings settings_;
   Geometry geometry_;
+  WallFilms walls_;  // the one-body films of the wall contacts
+  std::vector<double> wall_secant_;  // Σ of a particle's wall films' secants (Jacobi)
   double rate_ = 1.0;          // c of the solve in progress
   std::vector<Vec3> scratch_;  // per-contact vectors
   std::vector<std::size_t> incidence_start_;

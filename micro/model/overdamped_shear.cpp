@@ -56,7 +56,8 @@ void OverdampedShear::evaluate() {
   if (with_drag) {
     const double c = rate();
     last_solve_ =
-        drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, field.force, p.velocity);
+        drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, field.force, p.velocity,
+                    field.walls);
     if (stress_valid_)
       viscous_virial_ =
           drag_.virial(field.contacts, model_.gamma_tilde, c, p.velocity, {}, friction_);
@@ -73,6 +74,11 @@ void OverdampedShear::evaluate() {
   update_max_speed();
   evaluated_ = true;
   ++evaluations_;
+}
+
+void OverdampedShear::wall_drag(std::span<Vec3> per_film) const {
+  if (!evaluated_) throw std::logic_error("wall drag requested before an evaluation");
+  drag_.wall_drag(system_.forces().walls, model_.gamma_tilde, rate(), velocities(), per_film);
 }
 
 void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {

@@ -71,6 +71,11 @@ class BackwardEuler final : public Integrator {
   std::string name() const override { return "implicit"; }
 
   double step(OverdampedShear& flow, double max_step) override {
+    // The frozen drag of a step holds pair films only: with walls the step
+    // would drop the wall films' drag (contact/wall_contacts.h).
+    if (flow.system().walls().present())
+      throw InputError("integrator 'implicit' does not carry the wall films: with walls use "
+                       "scheme = euler");
     if (!flow.evaluated()) flow.evaluate();
     double h = std::min({proposal_, spec_.max_step, max_step});
     ContactSystem& system = flow.system();
