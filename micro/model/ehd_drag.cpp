@@ -378,7 +378,8 @@ void EhdDrag::line_search(const ContactList& c, std::span<const Vec3> force,
 
 DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde, double rate,
                                   std::span<const Vec3> v, std::span<Vec3> drag,
-                                  std::span<const double> friction) const {
+                                  std::span<const double> friction,
+                                  std::span<Vec3> per_contact) const {
   std::vector<double> dashpot;
   if (settings_.stokes.has_pairs()) {
     if (friction.size() != v.size())
@@ -401,6 +402,7 @@ DissipativeVirial EhdDrag::virial(const ContactList& c, double gamma_tilde, doub
       sum.friction += c.separation[k] * dashpot_force.transpose();
     }
     const Vec3 f = film + dashpot_force;
+    if (!per_contact.empty()) per_contact[k] = f;
     if (!drag.empty()) {
       drag[c.i[k]] += f;
       drag[c.j[k]] -= f;

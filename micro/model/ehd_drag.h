@@ -125,11 +125,13 @@ class EhdDrag {
 
   /// Σ_c d ⊗ f at velocities v and shear rate c of the pair forces that
   /// dissipate, each part apart (σ^v = −(film + friction)/V); also the sum of
-  /// those forces on each particle if `drag` is not empty. `friction` (ζ) is
+  /// those forces on each particle if `drag` is not empty, and each
+  /// contact's (on i from j) if `per_contact` is not empty. `friction` (ζ) is
   /// needed for the dashpots only.
   DissipativeVirial virial(const ContactList& contacts, double gamma_tilde, double rate,
                            std::span<const Vec3> v, std::span<Vec3> drag = {},
-                           std::span<const double> friction = {}) const;
+                           std::span<const double> friction = {},
+                           std::span<Vec3> per_contact = {}) const;
 
  private:
   struct Geometry {  // per contact

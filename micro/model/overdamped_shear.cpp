@@ -76,11 +76,6 @@ void OverdampedShear::evaluate() {
   ++evaluations_;
 }
 
-void OverdampedShear::wall_drag(std::span<Vec3> per_film) const {
-  if (!evaluated_) throw std::logic_error("wall drag requested before an evaluation");
-  drag_.wall_drag(system_.forces().walls, model_.gamma_tilde, rate(), velocities(), per_film);
-}
-
 void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
   std::copy(velocity.begin(), velocity.end(), system_.particles().velocity.begin());
   if (time() >= stress_from_) {

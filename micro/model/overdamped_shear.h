@@ -101,9 +101,6 @@ class OverdampedShear {
   /// evaluation did not compute it.
   StressSample stress() const;
   std::size_t contact_count() const { return system_.forces().contact_count; }
-  /// The EHD drag of each wall film (system().forces().walls) on its particle
-  /// at the last evaluation's velocities; the wall takes the opposite force.
-  void wall_drag(std::span<Vec3> per_film) const;
   const VelocitySolveStats& last_solve() const { return last_solve_; }
   std::size_t evaluations() const { return evaluations_; }
 

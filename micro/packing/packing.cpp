@@ -36,7 +36,7 @@ PackingReport describe_packing(ContactSystem& system) {
   const std::size_t n = system.size();
   PackingReport r;
   r.particles = n;
-  r.volume_fraction = system.volume_fraction();
+  r.volume_fraction = system.occupied_volume_fraction();
   r.side = system.box().side();
   r.coordination = 2.0 * static_cast<double>(c.size()) / static_cast<double>(n);
   for (std::size_t k = 0; k < c.size(); ++k) {
@@ -102,11 +102,18 @@ Packing make_packing(const PackingSpec& spec, std::shared_ptr<const ContactLaw> 
 
   ContactSystem system(Particles(std::move(centres), std::move(radii)), LeesEdwardsBox(side), law,
                        spec.skin);
+  const std::size_t iterations = compress(system, spec, progress);
+  return {system.wrapped_in_label_order(), system.box(), finish_report(system, spec, iterations, start)};
+}
 
+std::size_t compress(ContactSystem& system, const PackingSpec& spec,
+                     const std::function<void(double)>& progress) {
   FireSettings stage = spec.relaxation;
   stage.force_tolerance = std::max(spec.stage_tolerance, spec.relaxation.force_tolerance);
   stage.max_iterations = spec.stage_iterations;
   std::size_t iterations = minimise_fire(system, stage).iterations;
+  // Every length scales with the cell (walls included), so φ — of the cell or
+  // of the slab between walls — goes like the inverse cube of the scale.
   double phi = spec.initial_volume_fraction;
   while (phi < spec.volume_fraction) {
     const double next = std::min(phi + spec.compression_step, spec.volume_fraction);
@@ -119,12 +126,16 @@ Packing make_packing(const PackingSpec& spec, std::shared_ptr<const ContactLaw> 
   if (spec.initial_volume_fraction == spec.volume_fraction) {
     iterations += minimise_fire(system, spec.relaxation).iterations;
   }
+  return iterations;
+}
 
+PackingReport finish_report(ContactSystem& system, const PackingSpec& spec, std::size_t iterations,
+                            std::chrono::steady_clock::time_point start) {
   PackingReport report = describe_packing(system);
   report.iterations = iterations;
   report.converged = report.residual <= spec.relaxation.force_tolerance;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {system.wrapped_in_label_order(), system.box(), report};
+  return report;
 }
 
 }  // namespace softglass::micro

@@ -10,6 +10,7 @@
 // from `seed`.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -61,6 +62,16 @@ struct Packing {
   LeesEdwardsBox box;
   PackingReport report;
 };
+
+/// From the system at spec.initial_volume_fraction, compresses it stage by
+/// stage to spec.volume_fraction (of the cell, or of the slab between its
+/// walls) and relaxes it to force balance; returns the FIRE iterations.
+std::size_t compress(ContactSystem& system, const PackingSpec& spec,
+                     const std::function<void(double)>& progress);
+/// The report of a compressed system: describe_packing with the protocol's
+/// iterations, convergence and time since `start`.
+PackingReport finish_report(ContactSystem& system, const PackingSpec& spec, std::size_t iterations,
+                            std::chrono::steady_clock::time_point start);
 
 /// `progress(φ)` is called after every compression stage, if given.
 Packing make_packing(const PackingSpec& spec, std::shared_ptr<const ContactLaw> law,
