@@ -6,6 +6,7 @@
 //   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
 //   micro summary A.h5 B.h5  average runs of one state point over packings
 //   micro sweep FILE.prm     flow curves over φ, γ̃ and packings (MPI: mpirun -n K micro sweep …)
+//   micro slip FILE.prm      particles between smooth walls: wall stress, slip velocity, profile
 //   micro oscillate FILE.prm amplitude and frequency sweeps of oscillatory shear: G′, G″, LAOS
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
@@ -21,6 +22,7 @@
 #include "common/version.h"
 #include "micro/app/commands.h"
 #include "micro/app/oscillate_command.h"
+#include "micro/app/slip_command.h"
 #include "micro/app/sweep_command.h"
 #include "micro/app/workers.h"
 #include "micro/input/parameter_file.h"
@@ -83,6 +85,15 @@ int main(int argc, char** argv) {
   summary->add_option("--csv", csv, "also write the table as CSV");
   summary->add_flag("-f,--force", options.force, "overwrite an existing CSV file");
 
+  CLI::App* slip = app.add_subcommand(
+      "slip", "particles sheared between two smooth walls: wall stress, slip velocity, velocity "
+              "profile per apparent rate (docs/physics.md, 'Wall slip'); resumable");
+  slip->add_option("parameter_file", options.parameter_file,
+                   "slip file: a run's parameters plus subsection 'walls'")
+      ->required();
+  slip->add_flag("-f,--force", options.force, "redo runs whose files exist");
+  slip->add_flag("-q,--quiet", options.quiet, "no progress lines");
+
   // The commands that run a sweep of cases share their options (sweep_work.h).
   micro::SweepOptions sweep_options, oscillate_options;
   std::size_t only_case = 0;
@@ -135,6 +146,7 @@ int main(int argc, char** argv) {
     if (*pack) micro::pack_command(options);
     if (*run) micro::run_command(options);
     if (*summary) micro::summary_command(run_files, csv, options.force);
+    if (*slip) micro::slip_command(options);
     if (*sweep) micro::sweep_command(sweep_options, workers);
     if (*oscillate) micro::oscillate_command(oscillate_options, workers);
     if (*analyze) {

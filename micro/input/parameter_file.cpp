@@ -472,6 +472,38 @@ void declare_oscillation(ParameterHandler& prm, OscillationEntries& o) {
   prm.leave_subsection();
 }
 
+// The `walls` subsection of a slip file (`micro slip`, protocol/wall_run.h).
+struct WallEntries {
+  SlipSpec spec;
+  std::string directory = "slip";
+  unsigned long packings = 1, first_seed = 1, bins = 20;
+};
+
+void declare_walls(ParameterHandler& prm, WallEntries& w) {
+  prm.enter_subsection("walls");
+  entry(prm, "apparent rates", w.spec.apparent_rates,
+        "Apparent shear rates gamma~_app = (V_top - V_bottom) eta_s / (H E*) the walls impose "
+        "(comma-separated); each is the model's gamma~ of its run.",
+        Patterns::List(Patterns::Double(1e-14, 1e-1), 1, 1000, ","));
+  entry(prm, "packings", w.packings, "Packings (seeds first seed, first seed + 1, ...).",
+        Patterns::Integer(1, 1000));
+  entry(prm, "first seed", w.first_seed, "Seed of the first packing.", Patterns::Integer(0));
+  entry(prm, "strain", w.spec.run.strain,
+        "Apparent strain of each run (the first part, a transient, is cut by MSER-5).",
+        Patterns::Double(0.0, 1e4));
+  entry(prm, "sample interval", w.spec.run.sample_interval, "Apparent strain between samples.",
+        Patterns::Double(0.0, 1.0));
+  entry(prm, "central fraction", w.spec.run.sampling.central_fraction,
+        "Share of the gap, centred, in which the bulk stress and shear rate are measured.",
+        Patterns::Double(0.0, 1.0));
+  entry(prm, "profile bins", w.bins, "Bins of the velocity profile across the gap.",
+        Patterns::Integer(2, 10000));
+  entry(prm, "output directory", w.directory,
+        "Folder of the runs: runs/*.h5 and *.csv, slip.csv. Relative to the current directory.",
+        Patterns::Anything());
+  prm.leave_subsection();
+}
+
 }  // namespace
 
 // Parses `file`, then fills in what its model preset sets and the file does
@@ -507,7 +539,9 @@ void parse_extended_file(ParameterHandler& prm, const std::filesystem::path& fil
     throw InputError(fmt::format(
         "'{}' sets nothing in subsection '{}': it is not {} file (a run file is for `micro "
         "run`); {}",
-        file.string(), extension, extension == "sweep" ? "a sweep" : "an oscillation", example));
+        file.string(), extension,
+        extension == "sweep" ? "a sweep" : extension == "walls" ? "a slip" : "an oscillation",
+        example));
   }
 }
 
@@ -577,6 +611,27 @@ OscillationParameters read_oscillation_file(const std::filesystem::path& file) {
     throw InputError(fmt::format("oscillation: {}", error.what()));
   }
   return osc;
+}
+
+SlipParameters read_slip_file(const std::filesystem::path& file) {
+  ParameterHandler prm;
+  Entries e;
+  WallEntries w;
+  declare(prm, e);
+  declare_walls(prm, w);
+  parse_extended_file(prm, file, "walls",
+                      "a slip file names at least its apparent rates, e.g. 'subsection walls / set "
+                      "apparent rates = 1e-6, 1e-5' (docs/physics.md, 'Wall slip')");
+  SlipParameters slip;
+  slip.base = convert(prm, e, file);
+  slip.spec = w.spec;
+  slip.spec.packings = static_cast<unsigned>(w.packings);
+  slip.spec.first_seed = static_cast<unsigned>(w.first_seed);
+  slip.spec.run.sampling.bins = w.bins;
+  require(!w.directory.empty(), "walls: output directory is empty");
+  slip.spec.directory = w.directory;
+  slip.spec.run.validate();
+  return slip;
 }
 
 MicroParameters case_parameters(const MicroParameters& base, const SweepCaseSettings& c) {

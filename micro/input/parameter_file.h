@@ -13,6 +13,7 @@
 #include "micro/model/overdamped_shear.h"
 #include "micro/packing/packing.h"
 #include "micro/protocol/shear_run.h"
+#include "micro/protocol/wall_run.h"
 #include "micro/sweep/oscillation_plan.h"
 #include "micro/sweep/sweep_plan.h"
 
@@ -44,6 +45,21 @@ struct SweepParameters {
   SweepSpec spec;
 };
 SweepParameters read_sweep_file(const std::filesystem::path& file);
+
+/// A slip file (`micro slip`): a parameter file plus a `walls` subsection —
+/// particles sheared between two smooth walls (docs/physics.md, "Wall slip")
+/// at each apparent rate, for each packing.
+struct SlipSpec {
+  std::vector<double> apparent_rates{1e-5};  // γ̃_app, each a run's γ̃
+  unsigned packings = 1, first_seed = 1;
+  WallRunSpec run;
+  std::filesystem::path directory = "slip";
+};
+struct SlipParameters {
+  MicroParameters base;
+  SlipSpec spec;
+};
+SlipParameters read_slip_file(const std::filesystem::path& file);
 
 /// What a sweep sets in each case's parameters.
 struct SweepCaseSettings {
