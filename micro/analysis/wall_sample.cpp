@@ -82,7 +82,9 @@ WallSample measure_wall_sample(const OverdampedShear& flow, const WallSampleSett
     const double y = p.position[a].y();
     const double u = rate * y + p.velocity[a].x();
     const double above = std::clamp((y_b - y) / (y_b - y_a), 0.0, 1.0);
-    s.reservoir_term += stokes.reservoir(friction[a]) * p.velocity[a].x() * above / area;
+    const double reservoir = stokes.reservoir(friction[a]) * p.velocity[a].x() / area;
+    s.reservoir_term += reservoir * above;
+    s.reservoir_total += reservoir;
     const double t = (y - walls.lower) / gap * static_cast<double>(settings.bins);
     const auto bin = static_cast<std::size_t>(
         std::clamp(std::floor(t), 0.0, static_cast<double>(settings.bins - 1)));

@@ -23,7 +23,8 @@
 // Averaged over the central planes, the sum weights particle α by the share
 // of (y_a, y_b) above it (`reservoir_term`). This holds at every sample, to the
 // velocity solve's tolerance; with the reservoir friction relative to the
-// affine flow (a declared choice), the bulk stress differs from σ_w by it.
+// affine flow (a declared choice), the bulk stress differs from σ_w by it,
+// and the upper wall's stress from the lower's by the sum over all particles.
 //
 // Bulk rate and slip. u_x = c y_α + v_α,x fitted linearly in y_α over the
 // particles in the central slab gives γ̇_bulk (units of the reference rate);
@@ -50,6 +51,7 @@ struct WallSample {
   double contacts_lower = 0.0, contacts_upper = 0.0;          // wall contacts per area (R⁻²)
   double bulk_stress = 0.0, bulk_stress_elastic = 0.0;        // central σ_yx and its elastic part
   double reservoir_term = 0.0;  // the reservoir friction's share (see the header)
+  double reservoir_total = 0.0;  // (1/A) Σ_α ζ_r v_α,x: σ_w,hi − σ_w,lo by force balance
   double bulk_rate = 0.0;       // γ̇_bulk / γ̇_ref
   double slip_velocity = 0.0;   // V_s, units γ̇_ref R
   std::vector<double> profile;  // mean u_x per bin (units γ̇_ref R); NaN for an empty bin

@@ -32,7 +32,9 @@ WallPacking make_wall_packing(const PackingSpec& spec, std::shared_ptr<const Con
     volume += 4.0 / 3.0 * std::numbers::pi * r * r * r;
     max_radius = std::max(max_radius, r);
   }
-  const double slab = 2.0 * (max_radius + spec.skin);
+  // 1e-9 R more than the least slab: the compression's rescalings must not
+  // round it below (Walls::check_inside).
+  const double slab = 2.0 * (max_radius + spec.skin) + 1e-9;
   const double side = wall_cell_side(volume, spec.volume_fraction, slab);
   const double gap = side - slab;
   require(gap >= kMinWallGap,
