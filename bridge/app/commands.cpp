@@ -10,6 +10,7 @@
 
 #include "bridge/app/law_file.h"
 #include "bridge/app/report.h"
+#include "bridge/law/crossover_estimate.h"
 #include "bridge/law/law.h"
 #include "bridge/material/material.h"
 #include "bridge/output/tables.h"
@@ -122,6 +123,7 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
   request.modulus = contact_modulus(o.source, law, o.phi, o.extrapolate, lines);
   const Material material = make_material(law, request);
   std::optional<AmplitudeSweepPrediction> sweep;
+  std::vector<std::string> frequency_lines;
   if (sweep_covers(law, o.phi)) {
     const AmplitudeSweepPrediction& p = sweep.emplace(predict_amplitude_sweep(law, request));
     lines.push_back(fmt::format(
@@ -131,22 +133,33 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
         p.angular_frequency, p.plateau_storage.value, p.plateau_loss.value, p.amplitudes.front(),
         p.softening_strain.value, p.crossover_strain.value));
     if (o.frequency)
-      lines.push_back(fmt::format(
+      frequency_lines.push_back(fmt::format(
           "asked for omega = {:.4g} rad/s: the law's amplitude sweep holds at {:.4g} rad/s for this "
           "E* and eta_s (ratio {:.3g}); run `micro oscillate` at omega~ = {:.4g} for yours",
           *o.frequency, p.angular_frequency, p.angular_frequency / *o.frequency,
           *o.frequency * o.viscosity / request.modulus));
   }
+  if (o.frequency) {
+    // From the flow law alone, with or without a simulated sweep.
+    const double yield_strain = interpolate_value(law.phi, law.yield_strain, o.phi).value;
+    const double k = law.k[index(Quantity::sigma)]->value;  // every law has k
+    const double omega_tilde = *o.frequency * o.viscosity / request.modulus;
+    frequency_lines.push_back(fmt::format(
+        "crossover strain estimate at omega = {:.4g} rad/s: {:.3g} (an elastic-perfectly-plastic "
+        "loop, G' = G'' at {:.3f} times the strain of the flow stress at the peak rate; "
+        "gamma_y = {:.4g}, k = {:.3g}, omega~ = {:.3g}; docs/oscillation.md)",
+        *o.frequency, crossover_strain_estimate(yield_strain, k, omega_tilde),
+        elastoplastic_crossover_ratio(), yield_strain, k, omega_tilde));
+  }
+  lines.insert(lines.end(), frequency_lines.begin(), frequency_lines.end());
   const std::string text = material_text(material, lines);
   if (!out) {
     fmt::print("{}", text);
     return;
   }
   print_material_report(material);
-  if (sweep) {
-    print_amplitude_sweep_prediction(*sweep);
-    if (o.frequency) fmt::print("{}\n", lines.back());
-  }
+  if (sweep) print_amplitude_sweep_prediction(*sweep);
+  for (const std::string& line : frequency_lines) fmt::print("{}\n", line);
   write(*out, text);
   out->commit();
   fmt::print("written  {}\n", out->final_path().string());

@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
   material_cmd
       ->add_option("--frequency", material.frequency,
                    "angular frequency of your amplitude sweep [rad/s]: set against the one the "
-                   "law's amplitude sweep holds at for this E* and eta_s")
+                   "law's amplitude sweep holds at for this E* and eta_s, and the crossover "
+                   "strain the flow law implies there")
       ->check(positive);
   material_cmd->add_option("-o,--output", material.output,
                            "material file (.prm); default: print it");

@@ -163,6 +163,14 @@ TEST_F(BridgeCli, MaterialForThePapersEmulsion) {
   expect_contains(emulsion.out, {"interpolated between", "written  material.prm"});
   expect_contains(testing::read_text(work() / "material.prm"),
                   {"9.92 gamma_i / R", "E* = 40000 Pa"});
+  // Given the user's amplitude-sweep frequency, the crossover strain the flow
+  // law implies, on screen and in the file, without a simulated sweep.
+  const Outcome at_frequency = bridge(
+      "material law.prm --phi 0.80 --modulus 40e3 --viscosity 1e-3 --frequency 1 -o m1.prm");
+  ASSERT_EQ(at_frequency.code, 0) << at_frequency.err;
+  expect_contains(at_frequency.out, {"crossover strain estimate at omega = 1 rad/s"});
+  expect_contains(testing::read_text(work() / "m1.prm"),
+                  {"# crossover strain estimate at omega = 1 rad/s", "omega~ = 2.5e-08"});
 
   const Outcome outside = bridge("material law.prm --phi 0.95 --modulus 40e3 --viscosity 1e-3");
   EXPECT_EQ(outside.code, 2);
