@@ -82,7 +82,8 @@ WallSample measure_wall_sample(const OverdampedShear& flow, const WallSampleSett
     const double y = p.position[a].y();
     const double u = rate * y + p.velocity[a].x();
     const double above = std::clamp((y_b - y) / (y_b - y_a), 0.0, 1.0);
-    const double reservoir = stokes.reservoir(friction[a]) * p.velocity[a].x() / area;
+    const double slip_past_solvent = p.velocity[a].x() - flow.solvent_flow().velocity(y, rate);
+    const double reservoir = stokes.reservoir(friction[a]) * slip_past_solvent / area;
     s.reservoir_term += reservoir * above;
     s.reservoir_total += reservoir;
     const double t = (y - walls.lower) / gap * static_cast<double>(settings.bins);

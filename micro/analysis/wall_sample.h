@@ -17,14 +17,17 @@
 //
 // Force balance. Every particle is force-free at every instant (overdamped
 // motion), so the particles below a plane y₀ balance: the lower wall's drag,
-// the force across the plane, and the one-body Stokes friction −ζ_r v_α
-// against the affine flow (the reservoir share, model/stokes_friction.h):
-//     σ_yx(y₀) = σ_w,lo + (1/A) Σ_{y_α<y₀} ζ_r v_α,x .
+// the force across the plane, and the one-body Stokes friction
+// −ζ_r (v_α,x − v̄(y_α)) against the solvent (the reservoir share,
+// model/stokes_friction.h; v̄ the solvent's non-affine velocity,
+// model/solvent_flow.h):
+//     σ_yx(y₀) = σ_w,lo + (1/A) Σ_{y_α<y₀} ζ_r (v_α,x − v̄(y_α)) .
 // Averaged over the central planes, the sum weights particle α by the share
 // of (y_a, y_b) above it (`reservoir_term`). This holds at every sample, to the
-// velocity solve's tolerance; with the reservoir friction relative to the
-// affine flow (a declared choice), the bulk stress differs from σ_w by it,
-// and the upper wall's stress from the lower's by the sum over all particles.
+// velocity solve's tolerance. The bulk stress differs from σ_w by it, and the
+// upper wall's stress from the lower's by the sum over all particles: against
+// the local mean flow both are the fluctuations' (zero on average up to the
+// profile's lag); against the affine flow they are a body force on the plug.
 //
 // Bulk rate and slip. u_x = c y_α + v_α,x fitted linearly in y_α over the
 // particles in the central slab gives γ̇_bulk (units of the reference rate);

@@ -109,6 +109,8 @@ void slip_command(const CommandOptions& options) {
       ContactSystem system(walls->packing.particles, walls->packing.box, law, packing.skin);
       system.set_walls(walls->walls);
       OverdampedShear flow(std::move(system), model);
+      if (spec.solvent == SolventReference::local_mean)
+        flow.set_solvent_flow(SolventFlow::local_mean(walls->walls.lower, walls->walls.upper));
       const auto integrator = make_integrator(scheme.resolved_for(rate));
       const WallRunResult run = run_wall_shear(flow, *integrator, spec.run);
       const WallRunSummary summary = summarise_wall_run(run);

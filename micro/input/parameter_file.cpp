@@ -477,6 +477,7 @@ struct WallEntries {
   SlipSpec spec;
   std::string directory = "slip";
   unsigned long packings = 1, first_seed = 1, bins = 20;
+  std::string solvent = "local mean";
 };
 
 void declare_walls(ParameterHandler& prm, WallEntries& w) {
@@ -485,6 +486,11 @@ void declare_walls(ParameterHandler& prm, WallEntries& w) {
         "Apparent shear rates gamma~_app = (V_top - V_bottom) eta_s / (H E*) the walls impose "
         "(comma-separated); each is the model's gamma~ of its run.",
         Patterns::List(Patterns::Double(1e-14, 1e-1), 1, 1000, ","));
+  entry(prm, "solvent flow", w.solvent,
+        "What the reservoir share of the Stokes friction acts against between the walls: the "
+        "local mean flow of the particles (the solvent is carried with them) or the affine flow "
+        "of the apparent rate (docs/physics.md, 'Wall slip').",
+        Patterns::Selection(solvent_reference_names()));
   entry(prm, "packings", w.packings, "Packings (seeds first seed, first seed + 1, ...).",
         Patterns::Integer(1, 1000));
   entry(prm, "first seed", w.first_seed, "Seed of the first packing.", Patterns::Integer(0));
@@ -628,6 +634,7 @@ SlipParameters read_slip_file(const std::filesystem::path& file) {
   slip.spec.packings = static_cast<unsigned>(w.packings);
   slip.spec.first_seed = static_cast<unsigned>(w.first_seed);
   slip.spec.run.sampling.bins = w.bins;
+  slip.spec.solvent = parse_solvent_reference(w.solvent);
   require(!w.directory.empty(), "walls: output directory is empty");
   slip.spec.directory = w.directory;
   slip.spec.run.validate();

@@ -51,6 +51,7 @@ SweepParameters read_sweep_file(const std::filesystem::path& file);
 /// at each apparent rate, for each packing.
 struct SlipSpec {
   std::vector<double> apparent_rates{1e-5};  // γ̃_app, each a run's γ̃
+  SolventReference solvent = SolventReference::local_mean;  // model/solvent_flow.h
   unsigned packings = 1, first_seed = 1;
   WallRunSpec run;
   std::filesystem::path directory = "slip";

@@ -53,18 +53,30 @@ void OverdampedShear::evaluate() {
     ordered_at_build_ = system_.neighbours().builds();
   }
 
+  // A solvent flowing with v̄(y) instead of affinely: −ζ_r (v − v̄ e_x) is the
+  // reservoir friction of the affine case plus the fixed force ζ_r v̄ e_x.
+  std::span<const Vec3> force = field.force;
+  if (!solvent_.affine()) {
+    driving_force_.assign(field.force.begin(), field.force.end());
+    for (std::size_t a = 0; a < n; ++a)
+      driving_force_[a].x() += model_.drag.stokes.reservoir(friction_[a]) *
+                               solvent_.velocity(p.position[a].y(), rate());
+    force = driving_force_;
+  }
+
   if (with_drag) {
     const double c = rate();
     last_solve_ =
-        drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, field.force, p.velocity,
+        drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, force, p.velocity,
                     field.walls);
     if (stress_valid_)
       viscous_virial_ =
           drag_.virial(field.contacts, model_.gamma_tilde, c, p.velocity, {}, friction_);
   } else {
-    for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * field.force[a];
+    for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * force[a];
     viscous_virial_ = {};
   }
+  solvent_.update(p.position, p.velocity, friction_, rate());
   elastic_virial_ = field.virial;
 
   double rate = 0.0;
@@ -125,6 +137,7 @@ void OverdampedShear::save(Snapshot& into) const {
   const Particles& p = system_.particles();
   into.position.assign(p.position.begin(), p.position.end());
   into.velocity.assign(p.velocity.begin(), p.velocity.end());
+  into.solvent = solvent_;
   system_.save_tracking(into.tracking);
   into.strain = strain();
   into.time = time_;
@@ -139,6 +152,7 @@ void OverdampedShear::restore(const Snapshot& s) {
   system_.restore_positions(s.position, s.strain);
   time_ = s.time;
   system_.particles().velocity.assign(s.velocity.begin(), s.velocity.end());
+  solvent_ = s.solvent;
   system_.restore_tracking(s.tracking);
   relaxation_rate_ = s.relaxation_rate;
   max_speed_ = s.max_speed;

@@ -29,6 +29,7 @@
 #include "micro/model/contact_system.h"
 #include "micro/model/ehd_drag.h"
 #include "micro/model/shear_drive.h"
+#include "micro/model/solvent_flow.h"
 
 namespace softglass::micro {
 
@@ -92,6 +93,10 @@ class OverdampedShear {
   /// run sets its next sample time so that steps between samples skip it.
   void sample_stress_from(double time) { stress_from_ = time; }
   bool evaluated() const { return evaluated_; }
+  /// What the reservoir friction acts against (solvent_flow.h): the affine
+  /// flow unless set (the wall scene sets the local mean flow).
+  void set_solvent_flow(SolventFlow solvent) { solvent_ = std::move(solvent); }
+  const SolventFlow& solvent_flow() const { return solvent_; }
 
   /// Non-affine velocities v of the last evaluation (units γ̇ R).
   std::span<const Vec3> velocities() const { return system_.particles().velocity; }
@@ -117,6 +122,7 @@ class OverdampedShear {
   /// Everything `step` and `evaluate` change, for rejecting a trial step.
   struct Snapshot {
     std::vector<Vec3> position, velocity;
+    SolventFlow solvent;
     ContactSystem::Tracking tracking;
     double strain, time, relaxation_rate, max_speed;
     Eigen::Matrix3d elastic_virial;
@@ -139,6 +145,8 @@ class OverdampedShear {
   EhdDrag drag_;
   std::vector<double> friction_;      // ζ_α
   std::vector<double> mobility_;      // 1/ζ_α
+  SolventFlow solvent_;
+  std::vector<Vec3> driving_force_;  // F^e + ζ_r v̄(y) e_x, with a non-affine solvent flow
   std::size_t ordered_at_build_ = 0;  // the list build whose particle order they follow
   bool evaluated_ = false;
   bool stress_valid_ = false;

@@ -71,9 +71,11 @@ class BackwardEuler final : public Integrator {
   std::string name() const override { return "implicit"; }
 
   double step(OverdampedShear& flow, double max_step) override {
-    // The frozen drag of a step holds pair films only: with walls the step
-    // would drop the wall films' drag (contact/wall_contacts.h).
-    if (flow.system().walls().present())
+    // The frozen drag of a step holds pair films only, and the reservoir
+    // friction against the affine flow: with walls the step would drop the
+    // wall films' drag (contact/wall_contacts.h) and the solvent's mean flow
+    // (model/solvent_flow.h).
+    if (flow.system().walls().present() || !flow.solvent_flow().affine())
       throw InputError("integrator 'implicit' does not carry the wall films: with walls use "
                        "scheme = euler");
     if (!flow.evaluated()) flow.evaluate();
