@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The parameter reference, docs/parameters.md, made from the tools themselves:
 # every entry of `micro template`, `micro template --sweep`, `micro template
-# --oscillation` and `macro template`
+# --oscillation`, `micro template --slip` and `macro template`
 # (one table a subsection: default, allowed values, documentation, in the
 # templates' own words) and the `--help` of micro, bridge, macro and each of
 # their subcommands (found in the tools' own list of subcommands).
@@ -229,6 +229,8 @@ template=$("${tool[micro]}" template --sweep)
 micro_sweep=$(parse_prm "micro template --sweep" <<<"$template")
 template=$("${tool[micro]}" template --oscillation)
 micro_oscillation=$(parse_prm "micro template --oscillation" <<<"$template")
+template=$("${tool[micro]}" template --slip)
+micro_slip=$(parse_prm "micro template --slip" <<<"$template")
 template=$("${tool[macro]}" template)
 macro_scene=$(parse_prm "macro template" <<<"$template")
 
@@ -238,6 +240,8 @@ body=$(
     micro "$micro_run"
   parameter_file "micro oscillation file" "micro oscillate" "micro template --oscillation" \
     "$micro_oscillation" micro "$micro_run"
+  parameter_file "micro slip file" "micro slip" "micro template --slip" "$micro_slip" \
+    micro "$micro_run"
   parameter_file "macro scene file" macro "macro template" "$macro_scene"
   command_line
 )

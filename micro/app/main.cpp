@@ -54,11 +54,14 @@ int main(int argc, char** argv) {
   add_run_options(run);
   CLI::App* tmpl =
       app.add_subcommand("template", "print a documented parameter file with all defaults");
-  bool sweep_template = false, oscillation_template = false;
+  bool sweep_template = false, oscillation_template = false, slip_template = false;
   tmpl->add_flag("--sweep", sweep_template, "the template of a sweep file (micro sweep)");
   tmpl->add_flag("--oscillation", oscillation_template,
                  "the template of an oscillation file (micro oscillate)")
       ->excludes("--sweep");
+  tmpl->add_flag("--slip", slip_template, "the template of a slip file (micro slip)")
+      ->excludes("--sweep")
+      ->excludes("--oscillation");
   CLI::App* analyze = app.add_subcommand(
       "analyze", "structure of a run's stationary part: g(r, theta), g_lm(r), r_m, f_m Sigma_m");
   micro::AnalyzeOptions analyze_options;
@@ -140,6 +143,7 @@ int main(int argc, char** argv) {
     if (*tmpl)
       std::fputs(micro::parameter_template(sweep_template         ? micro::TemplateKind::sweep
                                            : oscillation_template ? micro::TemplateKind::oscillation
+                                           : slip_template        ? micro::TemplateKind::slip
                                                                   : micro::TemplateKind::run)
                      .c_str(),
                  stdout);

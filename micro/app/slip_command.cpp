@@ -11,6 +11,7 @@
 #include "common/atomic_output.h"
 #include "common/errors.h"
 #include "common/h5_file.h"
+#include "micro/analysis/plug_slip.h"
 #include "micro/input/parameter_file.h"
 #include "micro/packing/wall_packing.h"
 
@@ -63,6 +64,38 @@ void write_run(const std::filesystem::path& h5, const WallRunResult& run,
   out.commit();
 }
 
+// What a run's result depends on: the model and packing (the parameter file
+// without its walls subsection) and the walls' run settings — not the list of
+// rates, packings or the output folder, which only say which runs there are.
+std::string run_identity(const SlipParameters& prm) {
+  const SlipSpec& s = prm.spec;
+  return prm.base.text +
+         fmt::format("# walls: strain {}, sample interval {}, central fraction {}, profile bins "
+                     "{}, solvent flow {}\n",
+                     s.run.strain, s.run.sample_interval, s.run.sampling.central_fraction,
+                     s.run.sampling.bins, to_string(s.solvent));
+}
+
+// Rows of plug_slip.csv for one packing: the plug's σ_w at slip speeds
+// U = V η_s/(E* R) from 1e-13 to 1e-2, eight per decade (analysis/plug_slip.h).
+std::vector<std::string> plug_rows(double phi, unsigned seed, const PlugSlipLaw& law) {
+  std::vector<std::string> rows;
+  for (int i = -13 * 8; i <= -2 * 8; ++i) {
+    const double u = std::pow(10.0, i / 8.0);
+    rows.push_back(fmt::format("{},{},{:.6e},{:.8e}", phi, seed, u, law.wall_stress(u)));
+  }
+  return rows;
+}
+
+// The law of the packing's wall contacts at rest.
+PlugSlipLaw plug_law(const WallPacking& walls, std::shared_ptr<const ContactLaw> law, double skin,
+                     double rest_thickness) {
+  ContactSystem system(walls.packing.particles, walls.packing.box, std::move(law), skin);
+  system.set_walls(walls.walls);
+  const double side = walls.packing.box.side();
+  return PlugSlipLaw(system.compute_forces().walls, side * side, rest_thickness);
+}
+
 }  // namespace
 
 void slip_command(const CommandOptions& options) {
@@ -77,18 +110,41 @@ void slip_command(const CommandOptions& options) {
     return s.resolved_for(spec.apparent_rates.front());
   }();
   const std::filesystem::path runs = spec.directory / "runs";
-  std::filesystem::create_directories(runs);
+  const std::string identity = run_identity(prm);
   const auto law = std::shared_ptr<const ContactLaw>(make_contact_law(prm.base.contact_law));
-  std::vector<std::string> rows;
+  std::vector<std::string> rows, plug;
   for (unsigned k = 0; k < spec.packings; ++k) {
     PackingSpec packing = prm.base.packing;
     packing.seed = spec.first_seed + k;
-    std::optional<WallPacking> walls;
+    const WallPacking walls = make_wall_packing(packing, law);
+    if (!options.quiet)
+      std::cout << fmt::format("packing seed {}: N = {}, phi = {}, gap H = {:.3f} R, side {:.3f} R\n",
+                               packing.seed, packing.particles, packing.volume_fraction,
+                               walls.walls.gap(), walls.packing.box.side());
+    const PlugSlipLaw plug_slip =
+        plug_law(walls, law, packing.skin, prm.base.shear_model.drag.rest_thickness);
+    for (const std::string& row : plug_rows(packing.volume_fraction, packing.seed, plug_slip))
+      plug.push_back(row);
+    if (!options.quiet) {
+      const auto& u = plug_slip.crossovers();
+      std::cout << fmt::format("  plug slip law: sigma_w/E* = {:.4g} (V eta_s/(E* R))^1/2{}\n",
+                               plug_slip.coefficient(),
+                               u.empty() ? std::string()
+                                         : fmt::format(" above the films' crossovers U* = {:.2g} "
+                                                       "(median; {:.2g} ... {:.2g})",
+                                                       u[u.size() / 2], u.front(), u.back()));
+    }
+    std::filesystem::create_directories(runs);
     for (const double rate : spec.apparent_rates) {
       const std::string stem = fmt::format("phi{:.3f}_g{:.2e}_s{}", packing.volume_fraction, rate,
                                            packing.seed);
       const std::filesystem::path h5 = runs / (stem + ".h5"), row = runs / (stem + ".csv");
       if (std::filesystem::exists(h5) && std::filesystem::exists(row) && !options.force) {
+        require(H5File::open(h5).root().read_string("parameters") == identity,
+                fmt::format("{} is the finished result of another computation (other model, "
+                            "packing or walls run settings): use another output directory, or "
+                            "--force to replace it",
+                            h5.string()));
         std::ifstream in(row);
         std::string line;
         std::getline(in, line);
@@ -97,26 +153,19 @@ void slip_command(const CommandOptions& options) {
         if (!options.quiet) std::cout << fmt::format("{}: done before, kept\n", stem);
         continue;
       }
-      if (!walls) {
-        walls = make_wall_packing(packing, law);
-        if (!options.quiet)
-          std::cout << fmt::format("packing seed {}: N = {}, phi = {}, gap H = {:.3f} R, side {:.3f} R\n",
-                                   packing.seed, packing.particles, packing.volume_fraction,
-                                   walls->walls.gap(), walls->packing.box.side());
-      }
       ShearModel model = prm.base.shear_model;
       model.gamma_tilde = rate;
-      ContactSystem system(walls->packing.particles, walls->packing.box, law, packing.skin);
-      system.set_walls(walls->walls);
+      ContactSystem system(walls.packing.particles, walls.packing.box, law, packing.skin);
+      system.set_walls(walls.walls);
       OverdampedShear flow(std::move(system), model);
       if (spec.solvent == SolventReference::local_mean)
-        flow.set_solvent_flow(SolventFlow::local_mean(walls->walls.lower, walls->walls.upper));
+        flow.set_solvent_flow(SolventFlow::local_mean(walls.walls.lower, walls.walls.upper));
       const auto integrator = make_integrator(scheme.resolved_for(rate));
       const WallRunResult run = run_wall_shear(flow, *integrator, spec.run);
       const WallRunSummary summary = summarise_wall_run(run);
-      write_run(h5, run, summary, walls->walls, prm.base.text);
+      write_run(h5, run, summary, walls.walls, identity);
       const std::string line =
-          summary_row(packing.volume_fraction, rate, packing.seed, walls->walls.gap(), summary);
+          summary_row(packing.volume_fraction, rate, packing.seed, walls.walls.gap(), summary);
       write_file(row, row.string(), [&](std::ostream& o) { o << summary_header() << '\n' << line << '\n'; });
       rows.push_back(line);
       if (!options.quiet)
@@ -133,7 +182,13 @@ void slip_command(const CommandOptions& options) {
     o << summary_header() << '\n';
     for (const std::string& r : rows) o << r << '\n';
   });
-  if (!options.quiet) std::cout << "table: " << table.string() << '\n';
+  const std::filesystem::path plug_table = spec.directory / "plug_slip.csv";
+  write_file(plug_table, plug_table.string(), [&](std::ostream& o) {
+    o << "phi,seed,slip_speed,wall_stress\n";
+    for (const std::string& r : plug) o << r << '\n';
+  });
+  if (!options.quiet)
+    std::cout << "table: " << table.string() << "\nplug slip law: " << plug_table.string() << '\n';
 }
 
 }  // namespace softglass::micro

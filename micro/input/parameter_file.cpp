@@ -364,7 +364,8 @@ MicroParameters convert(const ParameterHandler& prm, const Entries& e,
 
   std::ostringstream text;
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
-  p.text = without_subsection(without_subsection(text.str(), "sweep"), "oscillation");
+  p.text = without_subsection(
+      without_subsection(without_subsection(text.str(), "sweep"), "oscillation"), "walls");
   return p;
 }
 
@@ -681,15 +682,19 @@ std::string parameter_template(TemplateKind kind) {
   Entries e;
   SweepEntries s;
   OscillationEntries o;
+  WallEntries w;
   declare(prm, e);
   if (kind == TemplateKind::sweep) declare_sweep(prm, s);
   if (kind == TemplateKind::oscillation) declare_oscillation(prm, o);
+  if (kind == TemplateKind::slip) declare_walls(prm, w);
   std::ostringstream text;
   text
       << (kind == TemplateKind::sweep
               ? "# softglass micro: sweep file for `micro sweep` (docs/sweeps.md).\n"
           : kind == TemplateKind::oscillation
               ? "# softglass micro: oscillation file for `micro oscillate` (docs/oscillation.md).\n"
+          : kind == TemplateKind::slip
+              ? "# softglass micro: slip file for `micro slip` (docs/physics.md, 'Wall slip').\n"
               : "# softglass micro: parameter file for `micro pack` and `micro run`.\n")
       << "# Reduced units: lengths R (mean radius), stresses E*, time 1/gamma_dot (strain).\n";
   prm.print_parameters(text, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);

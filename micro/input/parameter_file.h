@@ -86,7 +86,7 @@ OscillationParameters read_oscillation_file(const std::filesystem::path& file);
 
 /// The documented template with all defaults: of a run file, or of a sweep or
 /// an oscillation file (the same plus subsection `sweep` or `oscillation`).
-enum class TemplateKind { run, sweep, oscillation };
+enum class TemplateKind { run, sweep, oscillation, slip };
 std::string parameter_template(TemplateKind kind = TemplateKind::run);
 
 }  // namespace softglass::micro
