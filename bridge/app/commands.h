@@ -70,6 +70,21 @@ struct AmplitudeSweepOptions {
 /// per branch, the crossover strains, an overlay plot).
 void amplitude_sweep_command(const AmplitudeSweepOptions& options, const std::string& command_line);
 
+struct SlipLawOptions {
+  std::filesystem::path table, output;  // output empty: standard output
+  std::filesystem::path below_yield;    // a law file: fit only rows below its yield stress
+  std::optional<double> max_stress;     // fit only rows with sigma_w <= this [E*]
+  std::optional<double> phi;            // the volume fraction of the SI law
+  // SI: all three or none.
+  std::optional<double> modulus, viscosity, radius;
+  bool extrapolate = false, force = false;
+};
+
+/// Fits the wall slip law Ṽ γ̃ = A σ̃_w^p of a `micro slip` table per volume
+/// fraction (bridge/slip/slip_law.h) and, with E*, η_s and R, writes the
+/// macro `subsection slip` (power-law, β = A R E*^(1−p)/η_s) at φ.
+void slip_law_command(const SlipLawOptions& options, const std::string& command_line);
+
 struct RescaleOptions {
   std::filesystem::path data, law;  // law empty: the paper's constants
   std::filesystem::path output = "rescaled.csv";

@@ -7,6 +7,10 @@
 //   bridge amplitude-sweep LAW.prm --phi … --plateau-modulus … --viscosity … [--data SWEEP.csv]
 //                                                 a material's amplitude sweep, against a measured
 //                                                 one
+//   bridge slip-law SLIP.csv [--below-yield LAW.prm | --max-stress S]
+//                  [--modulus … --viscosity … --radius … [--phi …] [-o slip.prm]]
+//                                                 the wall slip law of a `micro slip` table, and
+//                                                 the macro `subsection slip` in SI
 //   bridge rescale DATA.csv --viscosity … (--yield-strain … | --shear-modulus … |
 //                  --law LAW.prm --phi …)
 //                                                 measured curves on the universal curve
@@ -194,6 +198,42 @@ int main(int argc, char** argv) {
                       "allow phi outside the amplitude sweep's volume fractions");
   sweep_cmd->add_flag("-f,--force", sweep.force, "overwrite existing results");
 
+  SlipLawOptions slip;
+  CLI::App* slip_cmd = app.add_subcommand(
+      "slip-law",
+      "fit the wall slip law V~ gamma~ = A sigma~_w^p of a `micro slip` table per volume fraction "
+      "(weighted least squares in log-log); with --modulus, --viscosity and --radius, the macro "
+      "`subsection slip` (power-law, beta = A R E*^(1-p) / eta_s) at phi");
+  slip_cmd->add_option("table", slip.table, "slip table of `micro slip` (slip.csv)")->required();
+  slip_cmd
+      ->add_option("--below-yield", slip.below_yield,
+                   "law file of `bridge fit`: fit only rows whose wall stress lies below the "
+                   "law's yield stress at their phi (the sliding plug a rheometer sees below "
+                   "yield)");
+  slip_cmd->add_option("--max-stress", slip.max_stress, "fit only rows with wall stress <= this [E*]")
+      ->check(positive);
+  slip_cmd->add_option("--phi", slip.phi, "volume fraction of the SI law (default: the table's, if one)")
+      ->check(CLI::Range(0.0, 1.0));
+  auto* slip_modulus =
+      slip_cmd->add_option("--modulus", slip.modulus, "contact modulus E* [Pa]")->check(positive);
+  auto* slip_viscosity = slip_cmd
+                             ->add_option("--viscosity", slip.viscosity,
+                                          "solvent viscosity eta_s [Pa s]")
+                             ->check(positive);
+  auto* slip_radius =
+      slip_cmd
+          ->add_option("--radius", slip.radius,
+                       "particle (droplet) radius R [m]: beta is proportional to it")
+          ->check(positive);
+  for (CLI::Option* a : {slip_modulus, slip_viscosity, slip_radius})
+    for (CLI::Option* b : {slip_modulus, slip_viscosity, slip_radius})
+      if (a != b) a->needs(b);
+  slip_cmd->add_option("-o,--output", slip.output,
+                       "slip-law fragment (.prm) for scene files; default: print it");
+  slip_cmd->add_flag("--extrapolate", slip.extrapolate,
+                     "allow phi outside the table's volume fractions (stated in the file)");
+  slip_cmd->add_flag("-f,--force", slip.force, "overwrite an existing slip-law file");
+
   RescaleOptions rescale;
   RescaleSettings& s = rescale.settings;
   CLI::App* rescale_cmd =
@@ -257,6 +297,9 @@ int main(int argc, char** argv) {
       throw CLI::ValidationError("fit: give a flow-curve table, or --law with --oscillation");
     if (*fit_cmd && !fit.law.empty() && fit.oscillation.empty())
       throw CLI::ValidationError("fit: --law only adds an amplitude sweep: give --oscillation");
+    if (*slip_cmd && !slip.output.empty() && !slip.modulus)
+      throw CLI::ValidationError(
+          "slip-law: -o writes the macro slip law: give --modulus, --viscosity and --radius");
     for (const auto& [cmd, source, name] :
          {std::tuple(material_cmd, &material.source, "material"),
           std::tuple(sweep_cmd, &sweep.source, "amplitude-sweep")}) {
@@ -275,6 +318,7 @@ int main(int argc, char** argv) {
     if (*material_cmd) material_command(material, command_line);
     if (*rescale_cmd) rescale_command(rescale, command_line);
     if (*sweep_cmd) amplitude_sweep_command(sweep, command_line);
+    if (*slip_cmd) slip_law_command(slip, command_line);
     return int(kExitOk);
   });
 }

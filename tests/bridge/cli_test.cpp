@@ -2,9 +2,11 @@
 // input, 3 output exists), messages that name the problem, result files that
 // appear whole or not at all, and the three subcommands end to end on a
 // synthetic sweep.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -434,6 +436,76 @@ TEST_F(BridgeCli, PlotScriptDrawsTheFiguresFromTheTables) {
     EXPECT_TRUE(png.starts_with("\x89PNG")) << name;
   }
   EXPECT_NE(run("fit missing.prm 2> /dev/null"), 0) << "a missing table is an error";
+}
+
+// A slip table as `micro slip` writes it, from the reduced law
+// V~ gamma~ = 20 sigma~^1.9 at phi = 0.8 (V~ = A sigma~^p / gamma_app).
+std::string slip_table() {
+  std::string csv =
+      "phi,gamma_app,seed,gap,stationary_samples,converged,wall_stress,wall_stress_se,"
+      "slip_velocity,slip_velocity_se\n";
+  for (const double rate : {1e-6, 1e-5, 1e-4, 1e-3}) {
+    const double s = 0.5 * std::sqrt(rate), v = 20.0 * std::pow(s, 1.9) / rate;
+    csv += fmt::format("0.8,{},1,10.5,250,1,{:.17g},{:.3g},{:.17g},{:.3g}\n", rate, s, 1e-3 * s, v,
+                       1e-3 * v);
+  }
+  return csv;
+}
+
+TEST_F(BridgeCli, SlipLawFitsTheTableAndWritesTheMacroFragment) {
+  testing::write_text(work() / "slip.csv", slip_table());
+  const Outcome reduced = bridge("slip-law slip.csv");
+  ASSERT_EQ(reduced.code, 0) << reduced.err;
+  expect_contains(reduced.out, {"phi = 0.8: 4 of 4 rows", "A = 20", "p = 1.9", "chi2/dof"});
+
+  const std::string si = "slip-law slip.csv --modulus 4e4 --viscosity 1e-3 --radius 2e-6";
+  const Outcome printed = bridge(si);
+  ASSERT_EQ(printed.code, 0) << printed.err;
+  EXPECT_TRUE(printed.out.starts_with("# softglass bridge slip-law")) << printed.out;
+  // beta = A R E*^(1-p)/eta_s
+  const double beta = 20.0 * 2e-6 * std::pow(4e4, 1.0 - 1.9) / 1e-3;
+  expect_contains(printed.out, {"subsection slip", "set law          = power-law",
+                                fmt::format("set coefficient  = {:.6g}", beta),
+                                "set exponent     = 1.9", "proportional to R"});
+
+  const Outcome written = bridge(si + " -o slip.prm");
+  ASSERT_EQ(written.code, 0) << written.err;
+  expect_contains(written.out, {"beta = A R E*^(1-p) / eta_s", "written  slip.prm"});
+  expect_contains(testing::read_text(work() / "slip.prm"), {"# command:", "subsection slip"});
+  EXPECT_EQ(bridge(si + " -o slip.prm").code, 3);
+  EXPECT_EQ(bridge(si + " -o slip.prm --force").code, 0);
+}
+
+TEST_F(BridgeCli, SlipLawRefusesBadInputAndWritesNothing) {
+  testing::write_text(work() / "slip.csv", slip_table());
+  std::string missing = slip_table();
+  missing.replace(missing.find("slip_velocity_se"), 16, "other");
+  testing::write_text(work() / "missing.csv", missing);
+  std::string not_a_number = slip_table();
+  not_a_number.replace(not_a_number.find("0.8,1e-06"), 3, "nan");
+  testing::write_text(work() / "nan.csv", not_a_number);
+  const std::string si = " --modulus 4e4 --viscosity 1e-3 --radius 2e-6 -o out.prm";
+  const struct {
+    std::string arguments;
+    std::vector<std::string> words;
+  } cases[] = {
+      {"slip-law slip.csv --modulus 4e4 --viscosity 1e-3 --radius 0 -o out.prm", {"--radius"}},
+      {"slip-law slip.csv --modulus 4e4 --viscosity 1e-3 --radius -2e-6 -o out.prm", {"--radius"}},
+      {"slip-law slip.csv --modulus 4e4 --viscosity 1e-3 -o out.prm", {"--radius"}},
+      {"slip-law slip.csv -o out.prm", {"--modulus"}},
+      {"slip-law missing.csv" + si, {"missing.csv", "slip_velocity_se", "missing"}},
+      {"slip-law nan.csv" + si, {"nan.csv", "line 2", "phi"}},
+      {"slip-law slip.csv --max-stress 1e-3" + si, {"phi = 0.8", "1 usable row", "at least 2"}},
+      {"slip-law slip.csv --phi 0.9" + si, {"phi = 0.9", "--extrapolate"}},
+      {"slip-law absent.csv" + si, {"absent.csv"}},
+  };
+  for (const auto& c : cases) {
+    const Outcome o = bridge(c.arguments);
+    EXPECT_EQ(o.code, 2) << c.arguments << "\n" << o.err;
+    for (const std::string& w : c.words) expect_contains(o.err, {w});
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+    EXPECT_FALSE(fs::exists(work() / "out.prm")) << c.arguments;
+  }
 }
 
 }  // namespace
