@@ -217,6 +217,24 @@ TEST(SolventFlow, IsTheFrictionWeightedLocalMeanAndExertsNoNetForce) {
   EXPECT_NEAR(flow.velocity(7.77, 0.4), 0.5 * 7.77 - 1.0, 1e-14);
 }
 
+// N = 150 at φ = 0.80 between walls (a gap of 7 R), the piecewise law.
+struct SmallWallPacking {
+  PackingSpec spec = [] {
+    PackingSpec s;
+    s.particles = 150;
+    s.volume_fraction = 0.8;
+    return s;
+  }();
+  std::shared_ptr<const ContactLaw> law = named_law("piecewise");
+  WallPacking packing = make_wall_packing(spec, law);
+
+  OverdampedShear flow(const ShearModel& model) const {
+    ContactSystem system(packing.packing.particles, packing.packing.box, law, spec.skin);
+    system.set_walls(packing.walls);
+    return OverdampedShear(std::move(system), model);
+  }
+};
+
 // Below the yield stress the particles between smooth walls move as a plug
 // that slips on both walls. Against the affine flow the reservoir friction
 // pulls every particle of the plug towards the affine velocity at its height,
@@ -225,17 +243,12 @@ TEST(SolventFlow, IsTheFrictionWeightedLocalMeanAndExertsNoNetForce) {
 // the plug has nothing to push against but the walls, and the bulk carries
 // the wall stress (to the fluctuations about the slab means: 2 % of it).
 TEST(WallRun, APlugCarriesTheWallStressOnlyAgainstTheLocalMeanFlow) {
-  PackingSpec spec;
-  spec.particles = 150;
-  spec.volume_fraction = 0.8;
-  const auto law = named_law("piecewise");
-  const WallPacking p = make_wall_packing(spec, law);
+  const SmallWallPacking small;
+  const WallPacking& p = small.packing;
   auto summary = [&](bool local_mean) {
     ShearModel model;
     model.gamma_tilde = 1e-5;  // σ_w ≈ 3e-4 E*, a quarter of σ_y
-    ContactSystem system(p.packing.particles, p.packing.box, law, spec.skin);
-    system.set_walls(p.walls);
-    OverdampedShear flow(std::move(system), model);
+    OverdampedShear flow = small.flow(model);
     if (local_mean) flow.set_solvent_flow(SolventFlow::local_mean(p.walls.lower, p.walls.upper));
     const auto integrator = make_integrator({.name = "euler", .tolerance = 1e-4});
     WallRunSpec run_spec;
@@ -265,16 +278,12 @@ TEST(WallRun, APlugCarriesTheWallStressOnlyAgainstTheLocalMeanFlow) {
 // friction's share equals the lower wall's stress, and the upper wall's less
 // the whole reservoir friction the lower's, to the velocity solve's tolerance.
 TEST(WallRun, WallStressBalancesTheBulkStress) {
-  PackingSpec spec;
-  spec.particles = 150;
-  spec.volume_fraction = 0.8;
-  const auto law = named_law("piecewise");
-  const WallPacking p = make_wall_packing(spec, law);
+  const SmallWallPacking small;
+  const WallPacking& p = small.packing;
+  const PackingSpec& spec = small.spec;
   ShearModel model;
   model.gamma_tilde = 1e-4;
-  ContactSystem system(p.packing.particles, p.packing.box, law, spec.skin);
-  system.set_walls(p.walls);
-  OverdampedShear flow(std::move(system), model);
+  OverdampedShear flow = small.flow(model);
   const auto integrator = make_integrator({.name = "euler", .tolerance = 1e-4});
   WallRunSpec run_spec;
   run_spec.strain = 3.0;
