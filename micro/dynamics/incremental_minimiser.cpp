@@ -83,10 +83,7 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
     w[k] = drag.film.project(drag.normal[k], du) + drag.affine[k];
     const double speed = w[k].norm();
     const FilmLaw law{drag.coefficient[k], drag.crossover[k]};
-    // The paper's law (no rest thickness) as it always was, to the last bit.
-    value.dissipation += law.crossover > 0.0
-                             ? h * law.potential(speed)
-                             : h * (2.0 / 3.0) * drag.coefficient[k] * speed * std::sqrt(speed);
+    value.dissipation += h * law.potential(speed);
     Vec3 f = w[k] * law.secant(speed);                // a |w|^{1/2} ŵ on the EHD branch (film.h)
     if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + c d_y e_x
       const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());

@@ -84,8 +84,9 @@ struct FilmLaw {
   bool linear(double speed) const { return speed < crossover; }
   double potential(double speed) const {
     if (linear(speed)) return 0.5 * secant(speed) * speed * speed;
-    return coefficient * ((2.0 / 3.0) * speed * std::sqrt(speed) -
-                          (1.0 / 6.0) * crossover * std::sqrt(crossover));
+    // Without a rest thickness the second term is exactly 0: the paper's ⅔ a |w|^{3/2}.
+    return (2.0 / 3.0) * coefficient * speed * std::sqrt(speed) -
+           (1.0 / 6.0) * coefficient * crossover * std::sqrt(crossover);
   }
   /// The potential's change from speed `before` to `after`, and the sum of
   /// the magnitudes it was computed from (its rounding scale); on the EHD

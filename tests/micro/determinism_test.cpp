@@ -18,11 +18,7 @@ bool same_bits(const T& a, const T& b) {
 
 TEST(Determinism, IdenticalRunsGiveBitIdenticalTimeSeries) {
   omp_set_num_threads(1);
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
-  spec.seed = 4;
+  const PackingSpec spec = testing::small_packing_spec(4);
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
 

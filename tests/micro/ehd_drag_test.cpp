@@ -65,11 +65,7 @@ constexpr double kMobility = 0.01;
 constexpr double kTolerance = 1e-10;
 
 ContactSystem drag_system() {
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
-  spec.seed = 1;
+  PackingSpec spec = testing::small_packing_spec(1);
   spec.relaxation.force_tolerance = 1e-6;  // a packing, not a perfectly balanced one
   const Packing packing = make_packing(spec, testing::named_law("seth2011"));
   return ContactSystem(packing.particles, packing.box, testing::named_law("seth2011"), spec.skin);

@@ -59,10 +59,7 @@ TEST(FilmRestThickness, TheLawIsACouetteFilmOfTheThickerThickness) {
 // The implicit velocities with films of rest thickness satisfy ζv = F^e +
 // F^film(v) with the Couette-film drag above.
 TEST(FilmRestThickness, ImplicitVelocitiesBalanceTheCouetteFilmDrag) {
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
+  const PackingSpec spec = testing::small_packing_spec(1);
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
   ContactSystem system(packing.particles, packing.box, law, spec.skin);
@@ -106,11 +103,7 @@ TEST(FilmRestThickness, ImplicitVelocitiesBalanceTheCouetteFilmDrag) {
 // storage modulus is the static one.
 TEST(FilmRestThickness, RestoresTheLinearViscoelasticPlateau) {
   omp_set_num_threads(1);
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
-  spec.seed = 1;
+  const PackingSpec spec = testing::small_packing_spec(1);
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
   const auto loss_and_storage = [&](double amplitude, double h0) {

@@ -63,6 +63,18 @@ inline ShortShear shear_briefly(const Packing& packing, std::shared_ptr<const Co
 }
 
 /// The contact law called `name` (no table file).
+/// The tests' small packing: N particles at φ, skin 0.3 (the neighbour grid
+/// of a cell of 9–10 R), the default relaxation.
+inline PackingSpec small_packing_spec(std::uint64_t seed, double phi = 0.8,
+                                      std::size_t particles = 200) {
+  PackingSpec spec;
+  spec.particles = particles;
+  spec.volume_fraction = phi;
+  spec.skin = 0.3;
+  spec.seed = seed;
+  return spec;
+}
+
 inline std::shared_ptr<const ContactLaw> named_law(const std::string& name) {
   ContactLawSpec spec;
   spec.name = name;

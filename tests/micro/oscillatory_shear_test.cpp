@@ -151,12 +151,7 @@ OscillationResult oscillate_packing(const Packing& packing, double skin, bool eh
 }
 
 Packing small_packing(unsigned seed) {
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
-  spec.seed = seed;
-  return make_packing(spec, testing::named_law("seth2011"));
+  return make_packing(testing::small_packing_spec(seed), testing::named_law("seth2011"));
 }
 
 // With the Stokes friction alone (no EHD films) the dynamics are linear at
@@ -204,11 +199,7 @@ struct Interrupted : std::runtime_error {
 // resumed run continues the same cycles bit for bit.
 TEST(OscillationCheckpoints, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
   omp_set_num_threads(1);
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
-  spec.seed = 7;
+  const PackingSpec spec = testing::small_packing_spec(7);
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
   OscillationProtocol protocol;

@@ -22,11 +22,7 @@ bool same_bits(const T& a, const T& b) {
 
 // A real (small) record: a packing, its G0, and a short sheared run.
 RunRecord small_record() {
-  PackingSpec spec;
-  spec.particles = 200;
-  spec.volume_fraction = 0.7;
-  spec.skin = 0.3;
-  spec.seed = 8;
+  const PackingSpec spec = testing::small_packing_spec(8, 0.7);
   const auto law = testing::named_law("seth2011");
   Packing packing = make_packing(spec, law);
 

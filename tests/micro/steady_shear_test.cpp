@@ -9,11 +9,7 @@ namespace softglass::micro {
 namespace {
 
 TEST(SteadyShear, StressSignsOfTheStationaryState) {
-  PackingSpec spec;
-  spec.particles = 300;
-  spec.volume_fraction = 0.8;
-  spec.skin = 0.3;
-  spec.seed = 6;
+  const PackingSpec spec = testing::small_packing_spec(6, 0.8, 300);
   const auto law = testing::named_law("seth2011");
   const Packing packing = make_packing(spec, law);
 
