@@ -219,12 +219,7 @@ TEST(SolventFlow, IsTheFrictionWeightedLocalMeanAndExertsNoNetForce) {
 
 // N = 150 at φ = 0.80 between walls (a gap of 7 R), the piecewise law.
 struct SmallWallPacking {
-  PackingSpec spec = [] {
-    PackingSpec s;
-    s.particles = 150;
-    s.volume_fraction = 0.8;
-    return s;
-  }();
+  PackingSpec spec = testing::small_packing_spec(1, 0.8, 150);
   std::shared_ptr<const ContactLaw> law = named_law("piecewise");
   WallPacking packing = make_wall_packing(spec, law);
 
