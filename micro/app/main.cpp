@@ -6,7 +6,8 @@
 //   micro analyze RUN.h5     structure of the stationary part: g(r,θ), g_lm(r), r_m, f_m Σ_m
 //   micro summary A.h5 B.h5  average runs of one state point over packings
 //   micro sweep FILE.prm     flow curves over φ, γ̃ and packings (MPI: mpirun -n K micro sweep …)
-//   micro slip FILE.prm      particles between smooth walls: wall stress, slip velocity, profile
+//   micro slip FILE.prm      particles between smooth walls: wall stress, slip velocity, profile,
+//                            the plug's slip law
 //   micro oscillate FILE.prm amplitude and frequency sweeps of oscillatory shear: G′, G″, LAOS
 //
 // Exit codes (common/errors.h): 0 success, 1 computation failed, 2 bad input,
@@ -90,7 +91,8 @@ int main(int argc, char** argv) {
 
   CLI::App* slip = app.add_subcommand(
       "slip", "particles sheared between two smooth walls: wall stress, slip velocity, velocity "
-              "profile per apparent rate (docs/physics.md, 'Wall slip'); resumable");
+              "profile per apparent rate, and the sliding plug's slip law (plug_slip.csv; "
+              "docs/physics.md, 'Wall slip'); resumable");
   slip->add_option("parameter_file", options.parameter_file,
                    "slip file: a run's parameters plus subsection 'walls'")
       ->required();
