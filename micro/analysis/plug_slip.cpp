@@ -17,18 +17,22 @@ PlugSlipLaw::PlugSlipLaw(const WallContacts& contacts, double area, double rest_
     const double rc = contacts.contact_radius[k], eps = contacts.deformation[k];
     const double a = film_coefficient(1.0, rc, contacts.force[k], eps);
     a_.push_back(a);
-    crossover_of_.push_back(film_crossover(rest_thickness, 1.0, a, rc, eps));
+    crossover_.push_back(film_crossover(rest_thickness, 1.0, a, rc, eps));
     coefficient_ += a;
   }
   coefficient_ /= 2.0 * area_;  // the mean of the two walls
-  if (rest_thickness > 0.0) crossover_ = crossover_of_;
-  std::sort(crossover_.begin(), crossover_.end());
+}
+
+std::vector<double> PlugSlipLaw::crossovers() const {
+  std::vector<double> sorted = crossover_;
+  std::sort(sorted.begin(), sorted.end());
+  return sorted;
 }
 
 double PlugSlipLaw::wall_stress(double speed) const {
   double sum = 0.0;
   for (std::size_t k = 0; k < a_.size(); ++k)
-    sum += FilmLaw{a_[k], crossover_of_[k]}.secant(speed) * speed;
+    sum += FilmLaw{a_[k], crossover_[k]}.secant(speed) * speed;
   return sum / (2.0 * area_);
 }
 

@@ -36,12 +36,12 @@ class PlugSlipLaw {
   double wall_stress(double speed) const;
   /// (1/A) Σ a_k/√γ̃: the coefficient S of σ_w = S √U above every crossover.
   double coefficient() const { return coefficient_; }
-  /// The films' crossover speeds U*_k, ascending (empty without a rest thickness).
-  const std::vector<double>& crossovers() const { return crossover_; }
+  /// The films' crossover speeds U*_k, ascending (all 0 without a rest thickness).
+  std::vector<double> crossovers() const;
 
  private:
   double area_ = 1.0, coefficient_ = 0.0;
-  std::vector<double> a_, crossover_of_, crossover_;  // per film: a_k(γ̃ = 1), U*_k; sorted U*
+  std::vector<double> a_, crossover_;  // per film: a_k(γ̃ = 1), U*_k
 };
 
 }  // namespace softglass::micro

@@ -126,10 +126,10 @@ void slip_command(const CommandOptions& options) {
     for (const std::string& row : plug_rows(packing.volume_fraction, packing.seed, plug_slip))
       plug.push_back(row);
     if (!options.quiet) {
-      const auto& u = plug_slip.crossovers();
+      const std::vector<double> u = plug_slip.crossovers();
       std::cout << fmt::format("  plug slip law: sigma_w/E* = {:.4g} (V eta_s/(E* R))^1/2{}\n",
                                plug_slip.coefficient(),
-                               u.empty() ? std::string()
+                               u.empty() || u.back() == 0.0 ? std::string()
                                          : fmt::format(" above the films' crossovers U* = {:.2g} "
                                                        "(median; {:.2g} ... {:.2g})",
                                                        u[u.size() / 2], u.front(), u.back()));

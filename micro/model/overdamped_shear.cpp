@@ -55,17 +55,17 @@ void OverdampedShear::evaluate() {
 
   // A solvent flowing with v̄(y) instead of affinely: −ζ_r (v − v̄ e_x) is the
   // reservoir friction of the affine case plus the fixed force ζ_r v̄ e_x.
+  const double c = rate();
   std::span<const Vec3> force = field.force;
   if (!solvent_.affine()) {
     driving_force_.assign(field.force.begin(), field.force.end());
     for (std::size_t a = 0; a < n; ++a)
-      driving_force_[a].x() += model_.drag.stokes.reservoir(friction_[a]) *
-                               solvent_.velocity(p.position[a].y(), rate());
+      driving_force_[a].x() +=
+          model_.drag.stokes.reservoir(friction_[a]) * solvent_.velocity(p.position[a].y(), c);
     force = driving_force_;
   }
 
   if (with_drag) {
-    const double c = rate();
     last_solve_ =
         drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, force, p.velocity,
                     field.walls);
@@ -76,7 +76,7 @@ void OverdampedShear::evaluate() {
     for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * force[a];
     viscous_virial_ = {};
   }
-  solvent_.update(p.position, p.velocity, friction_, rate());
+  solvent_.update(p.position, p.velocity, friction_, c);
   elastic_virial_ = field.virial;
 
   double rate = 0.0;

@@ -39,6 +39,17 @@ class MicroCli : public ::testing::Test {
 
   std::vector<std::string> files_in_work() const { return softglass::testing::file_names(work()); }
 
+  // `micro <subcommand> bad.prm --quiet` on `text` is refused before any work:
+  // exit 2, an error naming `words`, and no work/out folder.
+  void expect_refused(const std::string& subcommand, const std::string& text,
+                      const std::string& words) const {
+    parameters("bad.prm", text);
+    const Outcome o = micro(subcommand + " bad.prm --quiet");
+    EXPECT_EQ(o.code, 2) << text << o.out << o.err;
+    EXPECT_NE(o.err.find(words), std::string::npos) << o.err;
+    EXPECT_FALSE(fs::exists(work() / "out")) << "nothing written for: " << words;
+  }
+
   testing::TemporaryDirectory dir_;
 };
 

@@ -76,11 +76,7 @@ TEST_F(MicroCli, OscillateWritesTheTablesAndRunFilesAndSkipsFinishedWork) {
 
 TEST_F(MicroCli, OscillateRefusesBadFilesBeforeAnyWork) {
   const auto refused = [&](const std::string& text, const std::string& words) {
-    parameters("bad.prm", text);
-    const Outcome o = micro("oscillate bad.prm --quiet");
-    EXPECT_EQ(o.code, 2) << text << o.out << o.err;
-    EXPECT_NE(o.err.find(words), std::string::npos) << o.err;
-    EXPECT_FALSE(fs::exists(work() / "out")) << "nothing written for: " << words;
+    expect_refused("oscillate", text, words);
   };
   refused("subsection particles\n  set number = 200\nend\n", "sets nothing in subsection 'oscillation'");
   refused(oscillation_file("  set amplitudes = 0.01\n  set samples per cycle = 30\n"),

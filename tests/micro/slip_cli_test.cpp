@@ -92,11 +92,7 @@ TEST_F(MicroCli, SlipWritesTheTablesAndThePlugLawHoldsBelowYield) {
 
 TEST_F(MicroCli, SlipRefusesBadFilesBeforeAnyWork) {
   const auto refused = [&](const std::string& text, const std::string& words) {
-    parameters("bad.prm", text);
-    const Outcome o = micro("slip bad.prm --quiet");
-    EXPECT_EQ(o.code, 2) << text << o.out << o.err;
-    EXPECT_NE(o.err.find(words), std::string::npos) << o.err;
-    EXPECT_FALSE(fs::exists(work() / "out" / "runs")) << "nothing written for: " << words;
+    expect_refused("slip", text, words);
   };
   refused("subsection particles\n  set number = 150\nend\n", "sets nothing in subsection 'walls'");
   refused(slip_file("  set apparent rates = 1e-5\n", "implicit"), "does not carry the wall films");
