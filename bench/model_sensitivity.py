@@ -84,6 +84,10 @@ VARIANTS = {
     "half_nominal": (piecewise([0.2, 0.4], [1.5, 2, 3]),
                      "seth2011's branches at eps = 0.2, 0.4 (between seth2011 and nominal)"),
     "poly20": ({("particles", "polydispersity"): "0.2"}, "literal, 20 % polydispersity"),
+    # The shape of the radius distribution at the same 10 %: flat (the LAMMPS
+    # peer's) and skewed (emulsions' size distributions) against the Gaussian.
+    "uniform": ({("particles", "distribution"): "uniform"}, "radii uniform on 1 ± √3·0.1"),
+    "lognormal": ({("particles", "distribution"): "lognormal"}, "radii lognormal, 10 %"),
     # The film-dominated limit: friction against the affine flow below a free
     # sphere's Stokes drag. The explicit step scales like γ̃/f_r, so these run
     # implicit at every rate.
