@@ -107,31 +107,49 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
   pair_i_.clear();
   pair_j_.clear();
   block_.clear();
+  // The blocks are written entry by entry, in the order of operations of the
+  // matrix expressions in the comments (so to the last bit): built as Eigen
+  // expressions, their 3×3 temporaries went through the stack in halves and
+  // whole packets, whose reloads stalled on the partial stores.
+  //
   // Elastic contacts at the current point: K_c = k_n nnᵀ − (|f|/r)(I − nnᵀ); the
   // preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
+  // Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
+  // p − q and |K_c| is p + q.
   for (std::size_t k = 0; k < c.size(); ++k) {
     const double r = c.separation[k].norm();
     const Vec3 nk = c.separation[k] / r;
-    const Eigen::Matrix3d nn = nk * nk.transpose();
+    const double stiffness = c.stiffness[k];
     const double tangential = c.force[k] / r;
     pair_i_.push_back(c.i[k]);
     pair_j_.push_back(c.j[k]);
-    block_.push_back(c.stiffness[k] * nn - tangential * (identity - nn));
-    const Eigen::Matrix3d majorant = c.stiffness[k] * nn + tangential * (identity - nn);
-    diagonal_[c.i[k]] += majorant;
-    diagonal_[c.j[k]] += majorant;
+    Eigen::Matrix3d& block = block_.emplace_back();
+    Eigen::Matrix3d& di = diagonal_[c.i[k]];
+    Eigen::Matrix3d& dj = diagonal_[c.j[k]];
+    for (int col = 0; col < 3; ++col)
+      for (int row = 0; row < 3; ++row) {
+        const double nn = nk[row] * nk[col];
+        const double p = stiffness * nn;
+        const double q = tangential * ((row == col ? 1.0 : 0.0) - nn);
+        block(row, col) = p - q;
+        di(row, col) += p + q;
+        dj(row, col) += p + q;
+      }
   }
   // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header), plus (b/h) I
   // of the Stokes pair dashpots.
   // Its pairs are mostly the elastic ones, listed in the same order (both come
   // from the same neighbour list, particle by particle): a drag block is added
   // to its pair's elastic block when there is one, halving the product's work.
+  // The search for it starts at the block after the last one matched, where
+  // the same order puts it, and falls back to the particle's first block.
   const std::size_t elastic_pairs = block_.size();
-  std::size_t cursor = 0;
+  std::size_t cursor = 0, next = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
     const double a = drag.coefficient[k];
     if (a <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-    Eigen::Matrix3d b = (drag.dashpot[k] / h) * identity;
+    Eigen::Matrix3d b;
+    const double dashpot = drag.dashpot[k] / h;
     if (a > 0.0) {
       const double speed = w_[k].norm();
       const double floor_speed = (force_floor / a) * (force_floor / a);
@@ -139,16 +157,30 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
       const double s = law.secant(std::max(speed, floor_speed)) / h;
       // A film in its linear regime has the isotropic curvature s P: no relief.
       const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w_[k] / speed) : Vec3::Zero();
-      b += s * (drag.film.projector(drag.normal[k]) - relief_[k] * unit * unit.transpose());
+      const Vec3 relieved = relief_[k] * unit;
+      const Eigen::Matrix3d projector = drag.film.projector(drag.normal[k]);
+      for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row)
+          b(row, col) = (row == col ? dashpot : 0.0) +
+                        s * (projector(row, col) - relieved[row] * unit[col]);
+    } else {
+      b = dashpot * identity;
     }
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
-    while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;
-    std::size_t match = cursor;
-    while (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] != drag.j[k])
-      ++match;
-    if (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] == drag.j[k]) {
+    const auto matches = [&](std::size_t m) {
+      return m < elastic_pairs && pair_i_[m] == drag.i[k] && pair_j_[m] == drag.j[k];
+    };
+    std::size_t match = next;
+    if (!matches(match)) {
+      while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;
+      match = cursor;
+      while (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] != drag.j[k])
+        ++match;
+    }
+    if (matches(match)) {
       block_[match] += b;
+      next = match + 1;
     } else {
       pair_i_.push_back(drag.i[k]);
       pair_j_.push_back(drag.j[k]);

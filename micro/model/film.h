@@ -111,10 +111,15 @@ struct FilmModel {
   Vec3 project(const Vec3& n, const Vec3& q) const {
     return velocity == FilmVelocity::full ? q : Vec3(q - n * n.dot(q));
   }
-  /// P as a matrix.
+  /// P as a matrix, written entry by entry: as the expression I − n nᵀ, it went
+  /// through the stack in halves and whole packets, and the Hessian assemblies
+  /// that call it once per contact stalled on reloading it.
   Eigen::Matrix3d projector(const Vec3& n) const {
-    Eigen::Matrix3d p = Eigen::Matrix3d::Identity();
-    if (velocity != FilmVelocity::full) p -= n * n.transpose();
+    Eigen::Matrix3d p;
+    const bool tangential = velocity != FilmVelocity::full;
+    for (int col = 0; col < 3; ++col)
+      for (int row = 0; row < 3; ++row)
+        p(row, col) = (row == col ? 1.0 : 0.0) - (tangential ? n[row] * n[col] : 0.0);
     return p;
   }
   /// w⁰ = P(c d_y e_x) for the separation d at shear rate c (zero for `nonaffine`).
