@@ -47,6 +47,7 @@ import time
 # τ_y ≈ 0.51 (γ_i/R)(φ − φ_c)²; E* = 9.92 γ_i/R (Seth et al. 2006, the paper).
 PHI_C = 0.635
 E_STAR_PER_LAPLACE = 9.92
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def mason_g0(phi):
@@ -83,6 +84,13 @@ VARIANTS = {
                 "seth2011's branches at eps = 0.4, 0.8 (10 %, 20 % nominal strain)"),
     "half_nominal": (piecewise([0.2, 0.4], [1.5, 2, 3]),
                      "seth2011's branches at eps = 0.2, 0.4 (between seth2011 and nominal)"),
+    # The contact law of an elastic (neo-Hookean, nearly incompressible) sphere
+    # between frictionless plates, computed by finite elements
+    # (macro/particle/sphere_compression.h, written by `sphere_compression`).
+    "neohookean": ({("contact law", "law"): "table",
+                    ("contact law", "table file"): os.path.join(
+                        ROOT, "cases", "contact_law_neohookean.dat")},
+                   "the finite-element law of a neo-Hookean sphere (table)"),
     "poly20": ({("particles", "polydispersity"): "0.2"}, "literal, 20 % polydispersity"),
     # The shape of the radius distribution at the same 10 %: flat (the LAMMPS
     # peer's) and skewed (emulsions' size distributions) against the Gaussian.

@@ -239,6 +239,28 @@ TEST(ContactLawTable, HertzTableReproducesHertzAtAndBetweenPoints) {
   }
 }
 
+TEST(ContactLawTable, BundledElasticSphereLawIsHertzAtSmallStrainAndStiffensMildly) {
+  // cases/contact_law_neohookean.dat, computed by macro's sphere_compression
+  // (docs/physics.md): an elastic sphere follows Hertz where the contact is
+  // small (to its mesh's ±0.5 %) and stiffens beyond it, without reaching
+  // the n = 2 and 3 branches of seth2011 (its F'·ε/F, the local exponent,
+  // stays below 1.8 up to ε = 1).
+  const auto table = law("table", fs::path(SOFTGLASS_SOURCE_DIR) / "cases" /
+                                      "contact_law_neohookean.dat");
+  const auto hertz = law("hertz");
+  for (double eps : {0.003, 0.005, 0.01})
+    EXPECT_NEAR(table->force(eps) / hertz->force(eps), 1.0, 0.01) << "eps " << eps;
+  double last = 1.0;
+  for (double eps : {0.05, 0.2, 0.4, 0.8, 1.0}) {
+    const double ratio = table->force(eps) / hertz->force(eps);
+    EXPECT_GT(ratio, last) << "eps " << eps;
+    const double exponent = table->stiffness(eps) * eps / table->force(eps);
+    EXPECT_GT(exponent, 1.45) << "eps " << eps;
+    EXPECT_LT(exponent, 1.8) << "eps " << eps;
+    last = ratio;
+  }
+}
+
 TEST(ContactLawTable, InterpolatesLinearlyInLogLog) {
   // A table that is not a single power law: between (0.1, 1) and (0.2, 8) the
   // law is F = 1·(ε/0.1)^3; between (0.2, 8) and (0.4, 16) F = 8·(ε/0.2)^1.
