@@ -70,8 +70,8 @@ struct SphereCompressionSettings {
 struct CompressionState {
   double indentation = 0.0;     // δ/R, the plate's displacement towards the centre
   double force = 0.0;           // f/(E* R²), the force on one plate
-  double energy = 0.0;          // Π at equilibrium (elastic energy of the quarter sphere's
-                                // half, i.e. of the half sphere z ≥ 0, plus the penalty's)
+  double energy = 0.0;          // Π: the elastic energy of the half sphere z ≥ 0, plus the
+                                // penalty's
   double contact_radius = 0.0;  // a/R, the deformed radius of the contact
   double volume_change = 0.0;   // max |J̄ − 1| over the cells
   unsigned int newton_iterations = 0;
