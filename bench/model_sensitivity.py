@@ -69,11 +69,7 @@ VARIANTS = {
     "literal": ({}, "the paper read literally: seth2011, f_r = 0.01, tangential EHD"),
     # The model presets (micro/input/model_preset.h); softglass = nominal+neighbours.
     "softglass": ({("model", "preset"): "softglass"}, "the softglass model preset"),
-    "fr0.05": ({("shear", "mobility factor"): "0.05"}, "literal, f_r = 0.05"),
-    "fr0.2": ({("shear", "mobility factor"): "0.2"}, "literal, f_r = 0.2"),
-    "fr1": ({("shear", "mobility factor"): "1"}, "literal, f_r = 1"),
-    "fr0.003": ({("shear", "mobility factor"): "0.003"}, "literal, f_r = 0.003"),
-    "fr0.1": ({("shear", "mobility factor"): "0.1"}, "literal, f_r = 0.1"),
+    # Any other mobility factor: fr<value> (fr0.05, softglass+fr0.0625), see part().
     "ehd_off": ({("drag", "ehd"): "false"}, "literal without EHD drag"),
     "hertz": ({("contact law", "law"): "hertz"}, "Hertz at every ε"),
     "hertz_fr1": ({("contact law", "law"): "hertz", ("shear", "mobility factor"): "1"},
@@ -131,19 +127,33 @@ VARIANTS = {
 }
 
 
+def part(name):
+    """One part of a variant: a listed name, or fr<value>, the mobility factor
+    f_r = value (fr0.05, fr1: the friction's strength is the one continuous
+    knob the study scans)."""
+    if name in VARIANTS:
+        return VARIANTS[name]
+    if name.startswith("fr"):
+        try:
+            value = float(name[2:])
+        except ValueError:
+            return None
+        return {("shear", "mobility factor"): name[2:]}, f"f_r = {value:g}"
+    return None
+
+
 def resolve(name):
     """A variant's entries: a listed name, or names joined by '+' (their
     entries together, later ones winning), e.g. nominal+neighbours. Every
     variant starts from the `literal` model preset, the paper as stated (not
     from the default, which is one of the variants: softglass)."""
-    parts = name.split("+")
-    unknown = [p for p in parts if p not in VARIANTS]
-    if unknown:
+    parts = [part(p) for p in name.split("+")]
+    if None in parts:
         return None
     entries, texts = {("model", "preset"): "literal"}, []
-    for part in parts:
-        entries.update(VARIANTS[part][0])
-        texts.append(VARIANTS[part][1])
+    for part_entries, text in parts:
+        entries.update(part_entries)
+        texts.append(text)
     return entries, "; ".join(texts)
 
 
@@ -394,6 +404,7 @@ def main():
     if args.list:
         for name, (_, text) in VARIANTS.items():
             print(f"{name:<14} {text}")
+        print(f"{'fr<value>':<14} the mobility factor f_r = value (fr0.05, softglass+fr0.0625)")
         return
     args.phis = [p.strip() for p in args.phis.split(",")]
     args.rates = [r.strip() for r in args.rates.split(",")]
