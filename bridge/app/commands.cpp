@@ -66,12 +66,13 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
       constants_out(beside(o.output, "_constants.csv"), o.force);
   FlowCurveTable table = read_flow_curve_table(CsvTable::read(o.table));
   if (!o.structure.empty()) merge_structure(table, CsvTable::read(o.structure));
+  std::vector<PackingRun> runs;
+  if (!o.packings.empty()) runs = read_packing_runs(CsvTable::read(o.packings));
+  if (!o.rates.everything()) keep_rates(o.rates, table, runs);
   const Sweep sweep = make_sweep(table);
   const std::unique_ptr<Resampler> resampler =
-      o.packings.empty()
-          ? make_parametric_resampler(sweep)
-          : make_packing_resampler(sweep, read_packing_runs(CsvTable::read(o.packings)),
-                                   o.packings.string());
+      o.packings.empty() ? make_parametric_resampler(sweep)
+                         : make_packing_resampler(sweep, runs, o.packings.string());
   Progress bar("bootstrap", static_cast<double>(o.replicates), o.quiet);
   const SweepAnalysis a =
       analyse_sweep(sweep, *resampler, {o.replicates, o.seed},
@@ -93,6 +94,9 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
                        : "",
       sweep.groups.size(), o.packings.empty() ? "" : ", runs " + o.packings.string(),
       o.structure.empty() ? "" : ", structure " + o.structure.string()));
+  if (!o.rates.everything())
+    lines.push_back(fmt::format("rates:    only gamma~ = {:g} ... {:g} fitted", o.rates.lowest,
+                                o.rates.highest));
   for (const std::string& c : table.comments) lines.push_back("input |   " + c);
   lines.push_back("errors:   " + a.method);
   for (const std::string& w : a.warnings) lines.push_back("WARNING:  " + w);

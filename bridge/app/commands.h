@@ -18,6 +18,7 @@ struct FitOptions {
   std::filesystem::path structure;    // companion structure table with f_m (optional)
   std::filesystem::path oscillation;  // amplitude sweeps of `micro oscillate` (optional)
   std::optional<double> oscillation_frequency;  // which of its frequencies (ω̃)
+  RateWindow rates;                             // the state points fitted (γ̃ = 0 rows kept)
   std::filesystem::path output = "law.prm";
   std::size_t replicates = 1000;
   std::uint64_t seed = 1;

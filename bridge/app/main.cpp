@@ -81,6 +81,17 @@ int main(int argc, char** argv) {
       ->add_option("--oscillation-frequency", fit.oscillation_frequency,
                    "which frequency omega~ of the oscillation table, when it holds several")
       ->check(positive);
+  auto* fit_min_rate =
+      fit_cmd
+          ->add_option("--min-rate", fit.rates.lowest,
+                       "fit only the state points from this gamma~ on (the quasi-static rows "
+                       "stay): the exponent depends on the window, so compare a measured "
+                       "curve's over its own")
+          ->check(positive);
+  auto* fit_max_rate =
+      fit_cmd->add_option("--max-rate", fit.rates.highest, "fit only up to this gamma~")
+          ->check(positive);
+  fit_law->excludes(fit_min_rate)->excludes(fit_max_rate);
   fit_cmd->add_option("-o,--output", fit.output, "law file (.prm); tables beside it")
       ->capture_default_str();
   fit_cmd->add_option("--bootstrap", fit.replicates, "bootstrap replicates")

@@ -181,4 +181,18 @@ std::vector<PackingRun> read_packing_runs(const CsvTable& csv) {
   return runs;
 }
 
+void keep_rates(const RateWindow& window, FlowCurveTable& table, std::vector<PackingRun>& runs) {
+  require(std::isfinite(window.lowest) && window.lowest >= 0.0 && window.highest > window.lowest,
+          fmt::format("the rate window gamma~ = {:g} ... {:g} is empty or reversed", window.lowest,
+                      window.highest));
+  // The edges as written in a table (1e-05 against 1.0000000000e-05) are inside.
+  constexpr double kEdge = 1e-9;
+  const auto outside = [&](double gamma_tilde) {
+    return gamma_tilde > 0.0 && (gamma_tilde < window.lowest * (1.0 - kEdge) ||
+                                 gamma_tilde > window.highest * (1.0 + kEdge));
+  };
+  std::erase_if(table.points, [&](const StatePoint& p) { return outside(p.gamma_tilde); });
+  std::erase_if(runs, [&](const PackingRun& r) { return outside(r.gamma_tilde); });
+}
+
 }  // namespace softglass::bridge

@@ -19,8 +19,10 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -104,5 +106,19 @@ void merge_structure(FlowCurveTable& table, const CsvTable& csv);
 /// Reads and checks the per-packing companion (same rules, `seed [1]` instead
 /// of `packings [1]`, no standard errors needed).
 std::vector<PackingRun> read_packing_runs(const CsvTable& csv);
+
+/// The shear rates a fit sees: γ̃ in [lowest, highest]. A simulated flow curve
+/// is not exactly Herschel–Bulkley, so its exponent depends on the window; a
+/// measured curve covers its own (γ̇ η_s/E* over the instrument's rates), and
+/// the two compare only over the same one.
+struct RateWindow {
+  double lowest = 0.0;
+  double highest = std::numeric_limits<double>::infinity();
+  bool everything() const { return lowest <= 0.0 && std::isinf(highest); }
+};
+
+/// Drops the state points and runs outside `window`; the quasi-static rows
+/// (γ̃ = 0, not fitted) stay. InputError if the window is empty or reversed.
+void keep_rates(const RateWindow& window, FlowCurveTable& table, std::vector<PackingRun>& runs);
 
 }  // namespace softglass::bridge

@@ -139,6 +139,44 @@ TEST_F(BridgeCli, FitLeavesQuasiStaticRowsOutAndReportsTheirYieldStress) {
             data_without(testing::read_text(work() / "law_phi.csv"), "sigma_yield_quasi_static"));
 }
 
+// A fit over a window of rates is the fit of the table cut to that window,
+// to the last digit (the quasi-static rows stay); a reversed window is refused.
+TEST_F(BridgeCli, FitOverARateWindowIsTheFitOfTheTableCutToIt) {
+  const testing::SyntheticTruth truth;
+  testing::SyntheticSweep s =
+      testing::with_quasi_static(testing::make_synthetic_sweep(truth, 1), truth, 2);
+  testing::write_text(work() / "whole.csv", testing::table_csv(s));
+  testing::write_text(work() / "whole_runs.csv", testing::runs_csv(s));
+  const auto outside = [](double gamma_tilde) {
+    return gamma_tilde > 0.0 && (gamma_tilde < 0.999999e-8 || gamma_tilde > 1.000001e-5);
+  };
+  std::erase_if(s.table.points, [&](const StatePoint& p) { return outside(p.gamma_tilde); });
+  std::erase_if(s.runs, [&](const PackingRun& r) { return outside(r.gamma_tilde); });
+  ASSERT_EQ(s.table.points.size(), 5u * (7u + 1u)) << "1e-8 … 1e-5 is 7 rates, plus AQS";
+  testing::write_text(work() / "cut.csv", testing::table_csv(s));
+  testing::write_text(work() / "cut_runs.csv", testing::runs_csv(s));
+
+  const Outcome window = bridge(
+      "fit whole.csv --packings whole_runs.csv --bootstrap 100 --quiet --min-rate 1e-8 "
+      "--max-rate 1e-5 -o window.prm");
+  const Outcome cut = bridge("fit cut.csv --packings cut_runs.csv --bootstrap 100 --quiet -o cut.prm");
+  ASSERT_EQ(window.code, 0) << window.err;
+  ASSERT_EQ(cut.code, 0) << cut.err;
+  expect_contains(testing::read_text(work() / "window.prm"),
+                  {"rates:    only gamma~ = 1e-08 ... 1e-05 fitted", "35 state points"});
+  for (const char* suffix : {".prm", "_phi.csv", "_points.csv", "_constants.csv"}) {
+    EXPECT_EQ(data_without(testing::read_text(work() / (std::string("window") + suffix))),
+              data_without(testing::read_text(work() / (std::string("cut") + suffix))))
+        << suffix;
+  }
+
+  const Outcome reversed =
+      bridge("fit whole.csv --quiet --min-rate 1e-5 --max-rate 1e-8 -o reversed.prm");
+  EXPECT_EQ(reversed.code, 2);
+  expect_contains(reversed.err, {"rate window", "reversed"});
+  EXPECT_FALSE(fs::exists(work() / "reversed.prm"));
+}
+
 TEST_F(BridgeCli, FitRefusesABadTableWithExitCodeTwo) {
   std::string text = testing::read_text(work() / "sweep.csv");
   text.replace(text.find("1.2868314229e-03"), 16, "nan");
