@@ -13,9 +13,26 @@
 #                       fits and the collapse (plot_bridge.py; Figs. 2a, 4)
 #
 # Each file is written by the tool that owns it, so its header records the
-# command, software version and inputs. Afterwards: the numbers quoted in
-# docs/bridge.md, docs/macro.md and docs/validation.md, and
-# `bash bench/compare_measured.sh BUILD` for the comparison with measurements.
+# command, software version and inputs. Afterwards, by hand (nothing below is
+# redone here):
+#   - cases/slip_castoroil85.prm: its rows are those below the law's yield
+#     stress, `bridge slip-law cases/slip_phi080_085.csv --below-yield LAW
+#     --phi 0.85 --modulus E* ...` (the command is in its header and in
+#     docs/macro.md, "Wall slip: the castor-oil cell");
+#   - `bash bench/compare_measured.sh BUILD [OUT]` (the comparison with
+#     measurements) and `bash scripts/slip_comparison.sh BUILD
+#     cases/slip_phi080_085.csv OUT R ...` (the castor-oil cell with slip; it
+#     reads E* and eta_s from the castor-oil material's header), and the
+#     figures they draw that docs/img holds: compare_castoroil_couette.png,
+#     compare_dekker_phi074.png, compare_castoroil_couette_slip.png;
+#   - the numbers the docs quote from the law, the materials and those
+#     comparisons: docs/bridge.md, macro.md, validation.md, fidelity.md,
+#     oscillation.md (yield strains, k, the crossover estimate), physics.md
+#     (sigma_w/sigma_y of the wall tables), tutorial.md, sweeps.md (the sweep's
+#     cost);
+#   - if the law's G0 at phi 0.85 moves, the castor-oil E* moves and with it
+#     omega~ = 2.31e-7, at which the amplitude sweeps of docs/oscillation.md
+#     (and compare_castoroil_amplitude_sweep.png) were simulated.
 # Usage: scripts/regenerate_bundled.sh BUILD_DIR SWEEP_DIR
 set -euo pipefail
 build=${1:?usage: scripts/regenerate_bundled.sh BUILD_DIR SWEEP_DIR}

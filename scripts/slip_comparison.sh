@@ -23,7 +23,12 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 data="$root/../shared/data/rheometry/castoroil85_couette_flow_sweep.csv"
 [ -f "$data" ] || { echo "no castor-oil data at $data: nothing to compare" >&2; exit 0; }
 phi=${PHI:-0.85} preset=${PRESET:-fast} split=${SPLIT:-1}
-modulus=3857.26 viscosity=0.89e-3   # cases/material_castoroil85_predicted.prm
+# E* and eta_s of the bundled predicted material (its header records them), so
+# the slip law is made dimensional with the same E* the bulk law was.
+material="$root/cases/material_castoroil85_predicted.prm"
+read -r modulus viscosity < <(sed -n 's/^# phi = [^,]*, E\* = \([^ ]*\) Pa, eta_s = \([^ ]*\) Pa s.*/\1 \2/p' "$material") || true
+[ -n "${modulus:-}" ] && [ -n "${viscosity:-}" ] ||
+  { echo "slip_comparison: no 'E* = ... Pa, eta_s = ... Pa s' line in $material" >&2; exit 2; }
 rows_option=(--below-yield "$root/cases/bridge_law_paper_sweep.prm")
 [ "${ROWS:-below-yield}" = all ] && rows_option=()
 out=$(mkdir -p "$out" && cd "$out" && pwd)   # the scenes' includes are taken from there

@@ -20,7 +20,8 @@
 // quadratic in s = γ_c^½ with the positive root
 //     s = ½ [a + (a² + 4 x* γ_y)^½],   a = x* k ω̃^½.
 // On the project's own amplitude sweeps (N = 250, φ = 0.80 and 0.85, ω̃ =
-// 2.31e-7) this is within 7 % of the simulated crossover (−5 %, +7 %).
+// 2.31e-7), with k and γ_y of the bundled law, this is within 10 % of the
+// simulated crossover (−10 %, +2 %).
 #pragma once
 
 namespace softglass::bridge {

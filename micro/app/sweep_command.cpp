@@ -110,9 +110,8 @@ void check_cases_before_work(const Sweep& sweep) {
 // The wall time of the cases not yet done, from the plan's cost model (core
 // seconds per 5 strain, docs/sweeps.md) at the runs' shortest length, spread
 // over the workers: a lower estimate. The model is calibrated on the literal
-// model (within about a factor 2 there); the default model's friction against
-// the neighbours costs 1.5–3× more per case at γ̃ ≤ 3e-9, about the same from
-// 1e-7 up (its `paper` sweep, docs/bridge.md).
+// model (within about a factor 2 there); the default model's `paper` sweep
+// (docs/sweeps.md) took 1.3–2.3× the modelled time per case, on shared cores.
 double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
   const double strain =
       sweep.plan.run ? sweep.plan.run->min_strain : sweep.parameters.base.protocol.min_strain;
