@@ -69,7 +69,8 @@ MicroParameters parameters_of(const Sweep& sweep, const SweepCase& c) {
 }
 
 QuasiStaticSettings quasi_static_settings(const Sweep& sweep) {
-  return {.strain_step = sweep.plan.quasi_static_strain_step};
+  return {.strain_step = sweep.plan.quasi_static_strain_step,
+          .relative_force = sweep.plan.quasi_static_force_tolerance};
 }
 
 // The parameter text a case's run file stores: the quasi-static case's heads

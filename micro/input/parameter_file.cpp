@@ -418,6 +418,11 @@ void declare_sweep(ParameterHandler& prm, SweepEntries& s) {
         "Strain step of the quasi-static cases: > 0 and at most shear/sample interval. The "
         "default takes about 20 steps per elastic branch between plastic events (docs/sweeps.md).",
         Patterns::Double(0.0, kMaxAqsStrainStep));
+  entry(prm, "quasi-static force tolerance", s.spec.quasi_static_force_tolerance,
+        "Each quasi-static step is minimised until no particle's net force exceeds this times the "
+        "mean contact force: > 0 and at most 1e-3 (docs/sweeps.md measures what it costs and "
+        "changes).",
+        Patterns::Double(0.0, kMaxAqsForceTolerance));
   prm.leave_subsection();
 }
 

@@ -32,6 +32,8 @@ namespace softglass::micro {
 /// Δγ by default (docs/sweeps.md: why, and what it costs) and at most.
 inline constexpr double kDefaultAqsStrainStep = 2e-4;
 inline constexpr double kMaxAqsStrainStep = 0.01;
+/// The loosest minimiser tolerance (largest residual / mean contact force).
+inline constexpr double kMaxAqsForceTolerance = 1e-3;
 
 struct AqsSettings {
   double strain_step = kDefaultAqsStrainStep;  // Δγ

@@ -130,6 +130,11 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
   if (!(plan.quasi_static_strain_step > 0 && plan.quasi_static_strain_step <= kMaxAqsStrainStep))
     throw InputError(fmt::format("sweep: 'quasi-static strain step' = {}; allowed: (0, {}]",
                                  plan.quasi_static_strain_step, kMaxAqsStrainStep));
+  plan.quasi_static_force_tolerance = spec.quasi_static_force_tolerance;
+  if (!(plan.quasi_static_force_tolerance > 0 &&
+        plan.quasi_static_force_tolerance <= kMaxAqsForceTolerance))
+    throw InputError(fmt::format("sweep: 'quasi-static force tolerance' = {}; allowed: (0, {}]",
+                                 plan.quasi_static_force_tolerance, kMaxAqsForceTolerance));
 
   plan.directory = spec.directory;
   plan.table_csv = spec.directory / "flow_curve.csv";

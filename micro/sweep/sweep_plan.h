@@ -60,6 +60,7 @@ struct SweepSpec {
   std::size_t checkpoint_steps = 20000;  // accepted steps between checkpoints (0: none)
   bool quasi_static = true;              // a quasi-static case per (φ, seed)
   double quasi_static_strain_step = kDefaultAqsStrainStep;
+  double quasi_static_force_tolerance = AqsSettings{}.relative_force;  // residual / mean force
   std::string scheme = "auto";  // the runs' integrator: only the cost estimates use it
 };
 
@@ -85,6 +86,7 @@ struct SweepPlan {
   std::vector<unsigned> seeds;
   bool quasi_static;  // the cases include one quasi-static case per packing
   double quasi_static_strain_step;
+  double quasi_static_force_tolerance;
   std::vector<SweepPacking> packings;
   std::vector<SweepCase> cases;  // by φ, then γ̃ (quasi-static first), then seed
   std::filesystem::path directory, table_csv, packing_table_csv, table_h5;

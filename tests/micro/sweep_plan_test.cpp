@@ -84,6 +84,25 @@ TEST(SweepPlan, RefusesBadQuasiStaticStrainSteps) {
   }
 }
 
+TEST(SweepPlan, RefusesBadQuasiStaticForceTolerances) {
+  EXPECT_EQ(make_sweep_plan({.preset = "fast"}).quasi_static_force_tolerance,
+            AqsSettings{}.relative_force);
+  EXPECT_EQ(make_sweep_plan({.preset = "fast", .quasi_static_force_tolerance = 1e-6})
+                .quasi_static_force_tolerance,
+            1e-6);
+  for (double tolerance : {0.0, -1e-9, 2e-3, std::nan(""), HUGE_VAL}) {
+    SCOPED_TRACE(tolerance);
+    try {
+      make_sweep_plan({.preset = "fast", .quasi_static_force_tolerance = tolerance});
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("'quasi-static force tolerance'"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("allowed: (0, 0.001]"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(SweepPlan, CasesOfOnePhiAndSeedShareTheirPacking) {
   const SweepPlan plan = make_sweep_plan({.preset = "fast", .packings = 2});
   EXPECT_EQ(plan.packings.size(), plan.volume_fractions.size() * 2);
