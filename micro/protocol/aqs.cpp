@@ -27,7 +27,8 @@ void AqsSettings::validate() const {
   require(min_stationary_strain >= 20 * strain_step && min_stationary_strain <= strain,
           "AQS stationary window must span at least 20 steps and at most the run");
   require(relative_force > 0.0 && relative_force <= kMaxAqsForceTolerance,
-          fmt::format("AQS force tolerance = {} is outside (0, 1e-3]", relative_force));
+          fmt::format("AQS force tolerance = {} is outside (0, {}]", relative_force,
+                      kMaxAqsForceTolerance));
   require(max_iterations >= 1, "AQS needs at least one Newton iteration per step");
 }
 

@@ -126,15 +126,17 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
       throw InputError(fmt::format("sweep: gamma dot tilde {} outside [1e-14, 0.1]", rate));
   for (unsigned k = 0; k < packings; ++k) plan.seeds.push_back(spec.first_seed + k);
   plan.quasi_static = spec.quasi_static;
-  plan.quasi_static_strain_step = spec.quasi_static_strain_step;
-  if (!(plan.quasi_static_strain_step > 0 && plan.quasi_static_strain_step <= kMaxAqsStrainStep))
-    throw InputError(fmt::format("sweep: 'quasi-static strain step' = {}; allowed: (0, {}]",
-                                 plan.quasi_static_strain_step, kMaxAqsStrainStep));
-  plan.quasi_static_force_tolerance = spec.quasi_static_force_tolerance;
-  if (!(plan.quasi_static_force_tolerance > 0 &&
-        plan.quasi_static_force_tolerance <= kMaxAqsForceTolerance))
-    throw InputError(fmt::format("sweep: 'quasi-static force tolerance' = {}; allowed: (0, {}]",
-                                 plan.quasi_static_force_tolerance, kMaxAqsForceTolerance));
+  // The quasi-static settings, each in (0, largest] (NaN refused).
+  const auto quasi_static_setting = [](double value, const char* name, double largest) {
+    if (!(value > 0 && value <= largest))
+      throw InputError(
+          fmt::format("sweep: '{}' = {}; allowed: (0, {}]", name, value, largest));
+    return value;
+  };
+  plan.quasi_static_strain_step = quasi_static_setting(
+      spec.quasi_static_strain_step, "quasi-static strain step", kMaxAqsStrainStep);
+  plan.quasi_static_force_tolerance = quasi_static_setting(
+      spec.quasi_static_force_tolerance, "quasi-static force tolerance", kMaxAqsForceTolerance);
 
   plan.directory = spec.directory;
   plan.table_csv = spec.directory / "flow_curve.csv";

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "common/errors.h"
 #include "micro/sweep/sweep_plan.h"
@@ -70,18 +72,27 @@ TEST(SweepPlan, EveryPackingHasItsQuasiStaticCase) {
   for (const SweepCase& c : rates_only.cases) EXPECT_FALSE(c.quasi_static);
 }
 
-TEST(SweepPlan, RefusesBadQuasiStaticStrainSteps) {
-  for (double step : {0.0, -2e-4, 0.02, std::nan(""), HUGE_VAL}) {
-    SCOPED_TRACE(step);
+// Each bad value of a quasi-static setting is refused with its name and range.
+void expect_each_refused(const std::vector<double>& values, double SweepSpec::*setting,
+                         const std::string& name, const std::string& allowed) {
+  for (double value : values) {
+    SCOPED_TRACE(value);
+    SweepSpec spec{.preset = "fast"};
+    spec.*setting = value;
     try {
-      make_sweep_plan({.preset = "fast", .quasi_static_strain_step = step});
+      make_sweep_plan(spec);
       ADD_FAILURE() << "accepted";
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("'quasi-static strain step'"), std::string::npos)
-          << e.what();
-      EXPECT_NE(std::string(e.what()).find("allowed: (0, 0.01]"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("'" + name + "'"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("allowed: " + allowed), std::string::npos) << e.what();
     }
   }
+}
+
+TEST(SweepPlan, RefusesBadQuasiStaticStrainSteps) {
+  expect_each_refused({0.0, -2e-4, 0.02, std::nan(""), HUGE_VAL},
+                      &SweepSpec::quasi_static_strain_step, "quasi-static strain step",
+                      "(0, 0.01]");
 }
 
 TEST(SweepPlan, RefusesBadQuasiStaticForceTolerances) {
@@ -90,17 +101,9 @@ TEST(SweepPlan, RefusesBadQuasiStaticForceTolerances) {
   EXPECT_EQ(make_sweep_plan({.preset = "fast", .quasi_static_force_tolerance = 1e-6})
                 .quasi_static_force_tolerance,
             1e-6);
-  for (double tolerance : {0.0, -1e-9, 2e-3, std::nan(""), HUGE_VAL}) {
-    SCOPED_TRACE(tolerance);
-    try {
-      make_sweep_plan({.preset = "fast", .quasi_static_force_tolerance = tolerance});
-      ADD_FAILURE() << "accepted";
-    } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find("'quasi-static force tolerance'"), std::string::npos)
-          << e.what();
-      EXPECT_NE(std::string(e.what()).find("allowed: (0, 0.001]"), std::string::npos) << e.what();
-    }
-  }
+  expect_each_refused({0.0, -1e-9, 2e-3, std::nan(""), HUGE_VAL},
+                      &SweepSpec::quasi_static_force_tolerance, "quasi-static force tolerance",
+                      "(0, 0.001]");
 }
 
 TEST(SweepPlan, CasesOfOnePhiAndSeedShareTheirPacking) {
