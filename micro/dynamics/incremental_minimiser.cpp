@@ -98,6 +98,7 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
 
 void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const double> proximal,
                                     const FrozenDrag& drag, double h, double force_floor) {
+  ++counters_.assemblies;
   const std::size_t n = system.size();
   const ContactList& c = system.forces().contacts;
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
@@ -255,6 +256,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
   const double gnorm2 = dot(gradient_, gradient_);
   t = 1.0;
   for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
+    if (halvings > 0) ++counters_.backtracks;
     for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
     if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
       if (!rebuild_pays) continue;
@@ -282,6 +284,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
 void IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   int cg = newton_direction(proximal, eta);
   for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
+    ++counters_.damping_raises;
     damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
     invert_diagonal();
     cg += newton_direction(proximal, eta);

@@ -103,6 +103,7 @@ class BackwardEuler final : public Integrator {
       FrozenDrag& drag = drag_;
       drag.clear();
       if (model.drag.enabled || model.drag.stokes.has_pairs()) {
+        ++stats_.drag_freezes;
         const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
         freeze_drag(field.contacts, gamma_tilde, flow.drive().rate(flow.time() + h), model.drag,
                     friction_, drag);
@@ -129,15 +130,14 @@ class BackwardEuler final : public Integrator {
       settings.loosen = true;
       minimiser_.set_settings(settings);
       const IncrementalResult r = minimiser_.minimise(system, proximal_, drag, h, guess_);
-      stats_.newton_iterations = minimiser_.counters().iterations;
-      stats_.linear_iterations = minimiser_.counters().cg_iterations;
+      stats_.minimiser = minimiser_.counters();
       if (r.list_invalid) {
         // The step moves particles further than the list allows. If the error
         // of the partial solution already exceeds the tolerance, the step
         // spans a rearrangement and is shortened; else, if the list was made
         // for a small move, it is rebuilt with a wider margin.
         flow.restore(before_);
-        ++stats_.rejected;
+        record_rejected(Rejection::list);
         rejected = true;
         const double partial = step_error(h);
         if (partial <= spec_.tolerance && std::max(predicted, list_margin) < 0.5 * widest) {
@@ -150,8 +150,7 @@ class BackwardEuler final : public Integrator {
       }
       if (!r.converged) {
         flow.restore(before_);
-        ++stats_.rejected;
-        ++solver_failures_;
+        record_rejected(Rejection::solver);
         rejected = true;
         h *= 0.25;
         continue;
@@ -160,7 +159,7 @@ class BackwardEuler final : public Integrator {
       const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
       if (error > spec_.tolerance) {
         flow.restore(before_);
-        ++stats_.rejected;
+        record_rejected(Rejection::error);
         rejected = true;
         h *= std::max(0.2, factor);
         continue;
@@ -193,7 +192,6 @@ class BackwardEuler final : public Integrator {
   std::vector<double> proximal_, friction_;
   std::vector<Vec3> velocity_, guess_, shift_;
   double proposal_ = 1e300;
-  std::size_t solver_failures_ = 0;
   OverdampedShear::Snapshot before_;
 };
 
