@@ -2,7 +2,9 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace softglass::micro {
@@ -19,6 +21,16 @@ double max_norm(const std::vector<Vec3>& x) {
   double worst = 0.0;
   for (const Vec3& v : x) worst = std::max(worst, v.squaredNorm());
   return std::sqrt(worst);
+}
+
+// Whether every component of u is +0, bit for bit: then Φ at u is Φ at the
+// origin, evaluated from the very same input (−0 is not taken for +0: it can
+// turn the sign of a zero gradient component).
+bool is_origin(const std::vector<Vec3>& u) {
+  return std::all_of(u.begin(), u.end(), [](const Vec3& v) {
+    return std::bit_cast<std::uint64_t>(v.x()) == 0 && std::bit_cast<std::uint64_t>(v.y()) == 0 &&
+           std::bit_cast<std::uint64_t>(v.z()) == 0;
+  });
 }
 }  // namespace
 
@@ -310,7 +322,8 @@ IncrementalResult IncrementalMinimiser::minimise(
   relief_.assign(drag.size(), 0.5);
   damping_ = 0.0;
 
-  // Φ(0) for the energy change reported at the end.
+  // Φ(0) for the energy change reported at the end. A zero guess is that very
+  // point (AQS after a plastic event or a list rebuild): it is not evaluated twice.
   Value start{}, value{}, trial_value{};
   std::vector<Vec3> zero(n, Vec3::Zero());
   if (!evaluate_at(system, proximal, drag, h, zero, start, gradient_, w_)) {
@@ -318,7 +331,8 @@ IncrementalResult IncrementalMinimiser::minimise(
     return result;
   }
   const double phi_start = start.elastic + start.proximal + start.dissipation;
-  if (!evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
+  value = start;
+  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
     result.list_invalid = true;
     return result;
   }

@@ -127,8 +127,9 @@ TEST_F(Checkpoints, ImplicitStepCountersAddUpAndCarryOver) {
   ASSERT_GT(c.rejected_steps, 0u) << "the identities below need rejections";
   EXPECT_EQ(c.rejected_error + c.rejected_list + c.rejected_solver, c.rejected_steps);
   EXPECT_EQ(c.minimiser.solves, c.steps + c.rejected_steps);
-  // One frozen drag per step tried.
-  EXPECT_EQ(c.drag_freezes, c.minimiser.solves);
+  // One frozen drag per step at least; a retry mostly keeps its step's.
+  EXPECT_GE(c.drag_freezes, c.steps);
+  EXPECT_LT(c.drag_freezes, c.minimiser.solves);
   EXPECT_GE(c.minimiser.force_evaluations, c.minimiser.solves + c.minimiser.iterations);
   EXPECT_LE(c.minimiser.assemblies, c.minimiser.iterations);
   EXPECT_GT(c.minimiser.cg_iterations, c.minimiser.iterations);

@@ -223,6 +223,11 @@ TEST(IncrementalMinimiser, ConvergesWithMonotoneEnergy) {
   EXPECT_LT(r.energy_change, 0.0);
   for (std::size_t k = 1; k < energies.size(); ++k) EXPECT_LE(energies[k], energies[k - 1] + 1e-13);
   EXPECT_LT(force_residual(system.forces()), 1e-9);
+  // The guess is the origin, where Φ is evaluated on entry: not a second time.
+  // Then one evaluation per line-search trial.
+  const IncrementalCounters& c = minimiser.counters();
+  EXPECT_EQ(c.solves, 1u);
+  EXPECT_EQ(c.force_evaluations, 1 + c.iterations + c.backtracks);
 }
 
 }  // namespace

@@ -42,7 +42,10 @@
 // h · min(2, max(0.2, 0.9 √(tol/e))). A step whose nonlinear solve fails is
 // retried with h/4.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 #include "common/errors.h"
 
@@ -85,6 +88,7 @@ class BackwardEuler final : public Integrator {
     double list_margin = 0.0;
     bool rejected = false;
     const double widest = std::min(kWidestMargin, 0.3 * system.neighbours().skin());
+    std::optional<FrozenAt> frozen;  // what drag_ holds, once frozen in this call
 
     for (int attempt = 0;; ++attempt) {
       if (attempt > 200) throw NumericalError("implicit step: no acceptable step size");
@@ -96,18 +100,18 @@ class BackwardEuler final : public Integrator {
       const std::size_t n = system.size();
       const auto& p = system.particles();
 
-      // Frozen drag from the contacts at x_n (recomputed: a rebuild reorders).
+      // Frozen drag from the contacts at x_n. A retry after a rejection starts
+      // from the same x_n (restored), so the drag is kept unless the list was
+      // rebuilt (which reorders the particles) or the drive's rate at the step's
+      // end moved with h (oscillatory shear): see FrozenAt.
       const ShearModel& model = flow.model();
-      friction_.resize(n);
-      for (std::size_t a = 0; a < n; ++a) friction_[a] = model.friction(p.radius[a]);
-      FrozenDrag& drag = drag_;
-      drag.clear();
-      if (model.drag.enabled || model.drag.stokes.has_pairs()) {
-        ++stats_.drag_freezes;
-        const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
-        freeze_drag(field.contacts, gamma_tilde, flow.drive().rate(flow.time() + h), model.drag,
-                    friction_, drag);
+      const FrozenAt at{system.neighbours().builds(), system.box().image_offset(),
+                        flow.drive().rate(flow.time() + h)};
+      if (!frozen || !frozen->same(at)) {
+        freeze(system, model, gamma_tilde, at.rate);
+        frozen = at;
       }
+      const FrozenDrag& drag = drag_;
       proximal_.resize(n);
       velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
       guess_.resize(n);
@@ -178,6 +182,34 @@ class BackwardEuler final : public Integrator {
   }
 
  private:
+  // What the frozen drag depends on besides x_n: the list build (whose
+  // particle order friction_ and the contacts follow), the Lees–Edwards offset
+  // (the contacts across the gradient boundary; a restore sets the strain from
+  // a double, which could round it) and the rate. Compared bit for bit, so a
+  // kept drag is the one a recomputation would give, to the last bit.
+  struct FrozenAt {
+    std::size_t build;
+    double offset, rate;
+    bool same(const FrozenAt& o) const {
+      return build == o.build &&
+             std::bit_cast<std::uint64_t>(offset) == std::bit_cast<std::uint64_t>(o.offset) &&
+             std::bit_cast<std::uint64_t>(rate) == std::bit_cast<std::uint64_t>(o.rate);
+    }
+  };
+
+  // friction_ and drag_ from the contacts where the system is (x_n).
+  void freeze(ContactSystem& system, const ShearModel& model, double gamma_tilde, double rate) {
+    const auto& p = system.particles();
+    friction_.resize(system.size());
+    for (std::size_t a = 0; a < system.size(); ++a) friction_[a] = model.friction(p.radius[a]);
+    drag_.clear();
+    if (model.drag.enabled || model.drag.stokes.has_pairs()) {
+      ++stats_.drag_freezes;
+      const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
+      freeze_drag(field.contacts, gamma_tilde, rate, model.drag, friction_, drag_);
+    }
+  }
+
   // max_α ½|u_α − h v_n,α| for the solution (or partial solution) in guess_.
   double step_error(double h) const {
     double worst = 0.0;
