@@ -100,8 +100,8 @@ int main(int argc, char** argv) {
           sigma += o.shear, n1 += o.n1, n2 += o.n2, ++samples;
         }
         steps = r.steps;
-        newton = r.newton_iterations;
-        linear = r.cg_iterations;
+        newton = r.minimiser.iterations;
+        linear = r.minimiser.cg_iterations;
         done = strain;
       } else {
         ShearModel model;
@@ -131,8 +131,8 @@ int main(int argc, char** argv) {
         done = flow.strain() - origin;
         steps = integrator->stats().accepted;
         rejected = integrator->stats().rejected;
-        newton = integrator->stats().newton_iterations;
-        linear = integrator->stats().linear_iterations;
+        newton = integrator->stats().minimiser.iterations;
+        linear = integrator->stats().minimiser.cg_iterations;
       }
     } catch (const std::exception& e) {
       fmt::print("run {} {:.0e}:{} failed \"{}\"\n", scheme, value, third, e.what());

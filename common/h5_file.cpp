@@ -7,10 +7,13 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <fstream>
 #include <functional>
 #include <new>
 #include <numeric>
 #include <stdexcept>
+#include <string_view>
 #include <type_traits>
 
 #include "common/atomic_output.h"
@@ -568,6 +571,56 @@ H5File H5File::open_for_update(const std::filesystem::path& path) {
   return file;
 }
 
+namespace {
+
+// The little-endian unsigned integer of `width` bytes at `at`.
+std::uint64_t little_endian(const std::string& bytes, std::size_t at, int width) {
+  std::uint64_t value = 0;
+  for (int k = width - 1; k >= 0; --k)
+    value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
+  return value;
+}
+
+// HDF5 (1.10) reads a global heap collection, where the variable-length
+// strings live, object by object, each header giving the offset of the next;
+// a damaged size field can make an object of size 0, and the library then
+// loops forever (a damaged checkpoint in tests/fuzz did; docs/validation.md).
+// Such a file is refused before HDF5 reads it: every collection, found by its
+// signature, must be tiled by its objects, as HDF5 writes it. Layout (HDF5
+// file format specification, "Global Heap"): "GCOL", version 1, 3 reserved
+// bytes, the collection's size; then per object a 2-byte index, 2-byte
+// reference count, 4 reserved bytes, its size and its data padded to 8
+// bytes; index 0 is the free space, whose size includes its header. Only
+// files with 8-byte lengths (the library's default) are checked.
+void refuse_looping_global_heaps(const std::filesystem::path& path, const std::string& quoted) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(std::filesystem::file_size(path), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  // The superblock's size of lengths: byte 14 (versions 0, 1) or 10 (2, 3).
+  const std::string_view kFileSignature("\x89HDF\r\n\x1a\n", 8);
+  if (bytes.size() < 16 || bytes.compare(0, 8, kFileSignature) != 0) return;
+  if (bytes[bytes[8] < 2 ? 14 : 10] != 8) return;
+  constexpr std::size_t kHeader = 16, kMinimumSize = 4096;
+  const std::string_view kSignature("GCOL\x01\x00\x00\x00", 8);
+  for (std::size_t at = bytes.find(kSignature); at != std::string::npos;
+       at = bytes.find(kSignature, at + 1)) {
+    const std::uint64_t size = little_endian(bytes, at + 8, 8);
+    if (size < kMinimumSize || size > bytes.size() - at) continue;  // not a collection
+    const std::size_t end = at + size;
+    for (std::size_t object = at + kHeader; object + kHeader <= end;) {
+      const std::uint64_t length = little_endian(bytes, object + 8, 8);
+      const std::uint64_t step =
+          little_endian(bytes, object, 2) > 0 ? kHeader + (length + 7) / 8 * 8 : length;
+      if (step == 0 || step > end - object)
+        throw InputError(quoted + " is damaged: its global heap at byte " + std::to_string(at) +
+                         " does not hold together");
+      object += step;
+    }
+  }
+}
+
+}  // namespace
+
 H5File H5File::open_with(const std::filesystem::path& path, unsigned mode) {
   silence_hdf5_errors();
   const auto quoted = "'" + path.native() + "'";
@@ -580,6 +633,7 @@ H5File H5File::open_with(const std::filesystem::path& path, unsigned mode) {
       check<InputError>(H5Fis_hdf5(path.c_str()), "cannot read " + quoted) == 0) {
     throw InputError(quoted + " is not an HDF5 file");
   }
+  refuse_looping_global_heaps(path, quoted);
   // An update is read into memory and written back whole by close().
   const H5Id fapl = mode == H5F_ACC_RDWR ? in_memory_access() : H5Id();
   return H5File(own<InputError>(

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "common/atomic_output.h"
 #include "common/progress.h"
@@ -39,6 +41,21 @@ void print_packing(const RunRecord& r, const MicroParameters& prm) {
       r.modulus.affine_modulus, k.residual, k.converged ? "" : "  NOT CONVERGED");
 }
 
+// The implicit steps' work: the frozen drags, and the step solves per solve
+// (one per step tried). Empty when the run made none (`euler`).
+std::string implicit_cost(const ShearCounters& c) {
+  const IncrementalCounters& m = c.minimiser;
+  if (m.solves == 0) return "";
+  const double solves = double(m.solves);
+  return fmt::format(
+      "{} drag freezes; {} step solves, each {:.2f} Newton ({:.1f} CG each), {:.2f} force "
+      "evaluations, {:.2f} assemblies, {:.3f} damping raises, {:.3f} backtracks; ",
+      c.drag_freezes, m.solves, double(m.iterations) / solves,
+      double(m.cg_iterations) / double(std::max<std::size_t>(m.iterations, 1)),
+      double(m.force_evaluations) / solves, double(m.assemblies) / solves,
+      double(m.damping_raises) / solves, double(m.backtracks) / solves);
+}
+
 void print_shear(const ShearRecord& s, double particles) {
   const ShearResult& r = s.result;
   const ShearSummary& m = r.summary;
@@ -68,15 +85,17 @@ void print_shear(const ShearRecord& s, double particles) {
         m.layering, kLayeredThreshold);
   }
   // The implicit scheme solves for the velocities only where the stress is
-  // sampled (backward_euler.cpp): the solver counts are per such evaluation,
-  // the throughput per step tried.
+  // sampled (backward_euler.cpp): the velocity solver's counts are per such
+  // evaluation, the step solves' per step tried, the throughput per step tried.
   const double evaluations = double(std::max<std::size_t>(c.evaluations, 1));
   fmt::print(
-      "cost     {} steps ({} rejected), {} list builds; {} evaluations, each {:.2f} fixed-point "
-      "sweeps, {:.2f} Newton and {:.2f} CG iterations; {:.1f} s, {:.3g} particle-steps/s\n",
-      c.steps, c.rejected_steps, c.neighbour_builds, c.evaluations,
-      double(c.fixed_point_sweeps) / evaluations, double(c.newton_iterations) / evaluations,
-      double(c.cg_iterations) / evaluations, r.seconds,
+      "cost     {} steps ({} rejected: {} error, {} list, {} solver), {} list builds; {} "
+      "evaluations, each {:.2f} fixed-point sweeps, {:.2f} Newton and {:.2f} CG iterations; "
+      "{}{:.1f} s, {:.3g} particle-steps/s\n",
+      c.steps, c.rejected_steps, c.rejected_error, c.rejected_list, c.rejected_solver,
+      c.neighbour_builds, c.evaluations, double(c.fixed_point_sweeps) / evaluations,
+      double(c.newton_iterations) / evaluations, double(c.cg_iterations) / evaluations,
+      implicit_cost(c), r.seconds,
       particles * double(c.steps + c.rejected_steps) / std::max(r.seconds, 1e-9));
 }
 

@@ -2,7 +2,9 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace softglass::micro {
@@ -19,6 +21,16 @@ double max_norm(const std::vector<Vec3>& x) {
   double worst = 0.0;
   for (const Vec3& v : x) worst = std::max(worst, v.squaredNorm());
   return std::sqrt(worst);
+}
+
+// Whether every component of u is +0, bit for bit: then Φ at u is Φ at the
+// origin, evaluated from the very same input (−0 is not taken for +0: it can
+// turn the sign of a zero gradient component).
+bool is_origin(const std::vector<Vec3>& u) {
+  return std::all_of(u.begin(), u.end(), [](const Vec3& v) {
+    return std::bit_cast<std::uint64_t>(v.x()) == 0 && std::bit_cast<std::uint64_t>(v.y()) == 0 &&
+           std::bit_cast<std::uint64_t>(v.z()) == 0;
+  });
 }
 }  // namespace
 
@@ -98,6 +110,7 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
 
 void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const double> proximal,
                                     const FrozenDrag& drag, double h, double force_floor) {
+  ++counters_.assemblies;
   const std::size_t n = system.size();
   const ContactList& c = system.forces().contacts;
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
@@ -255,6 +268,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
   const double gnorm2 = dot(gradient_, gradient_);
   t = 1.0;
   for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
+    if (halvings > 0) ++counters_.backtracks;
     for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
     if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
       if (!rebuild_pays) continue;
@@ -282,6 +296,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
 void IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   int cg = newton_direction(proximal, eta);
   for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
+    ++counters_.damping_raises;
     damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
     invert_diagonal();
     cg += newton_direction(proximal, eta);
@@ -307,7 +322,8 @@ IncrementalResult IncrementalMinimiser::minimise(
   relief_.assign(drag.size(), 0.5);
   damping_ = 0.0;
 
-  // Φ(0) for the energy change reported at the end.
+  // Φ(0) for the energy change reported at the end. A zero guess is that very
+  // point (AQS after a plastic event or a list rebuild): it is not evaluated twice.
   Value start{}, value{}, trial_value{};
   std::vector<Vec3> zero(n, Vec3::Zero());
   if (!evaluate_at(system, proximal, drag, h, zero, start, gradient_, w_)) {
@@ -315,7 +331,8 @@ IncrementalResult IncrementalMinimiser::minimise(
     return result;
   }
   const double phi_start = start.elastic + start.proximal + start.dissipation;
-  if (!evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
+  value = start;
+  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
     result.list_invalid = true;
     return result;
   }

@@ -48,6 +48,7 @@
 #include <span>
 #include <vector>
 
+#include "micro/dynamics/incremental_counters.h"
 #include "micro/model/contact_system.h"
 #include "micro/model/ehd_drag.h"
 #include "micro/numerics/block_cg.h"
@@ -101,11 +102,6 @@ struct IncrementalResult {
   double residual = 0.0;          // max |∂Φ/∂u| at the end (units E* R²)
   double energy_change = 0.0;     // E(x⁰ + u) − E(x⁰)
   double max_displacement = 0.0;  // max |u_α|
-};
-
-/// Counters over the lifetime of a minimiser.
-struct IncrementalCounters {
-  std::size_t solves = 0, iterations = 0, cg_iterations = 0, force_evaluations = 0;
 };
 
 class IncrementalMinimiser {

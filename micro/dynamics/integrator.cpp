@@ -28,6 +28,21 @@ void Integrator::record_accepted(double dt) {
   ++stats_.accepted;
 }
 
+void Integrator::record_rejected(Rejection cause) {
+  ++stats_.rejected;
+  switch (cause) {
+    case Rejection::error:
+      ++stats_.rejected_error;
+      break;
+    case Rejection::list:
+      ++stats_.rejected_list;
+      break;
+    case Rejection::solver:
+      ++stats_.rejected_solver;
+      break;
+  }
+}
+
 void IntegratorSpec::validate() const {
   require(tolerance >= 0.0 && tolerance <= 0.1,
           fmt::format("integrator tolerance = {} is outside [0, 0.1] (units of R; 0: the "

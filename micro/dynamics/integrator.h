@@ -21,20 +21,32 @@
 #include <vector>
 
 #include "common/registry.h"
+#include "micro/dynamics/incremental_counters.h"
 #include "micro/model/overdamped_shear.h"
 
 namespace softglass::micro {
 
+/// Why a step was rejected (and retried).
+enum class Rejection {
+  error,   // the local error estimate exceeds the tolerance
+  list,    // the solve left the neighbour list's reach (implicit schemes)
+  solver,  // the nonlinear solve did not converge (implicit schemes)
+};
+
 struct IntegratorStats {
   std::size_t accepted = 0;
   std::size_t rejected = 0;
+  // `rejected` by cause (Rejection); they add up to it.
+  std::size_t rejected_error = 0, rejected_list = 0, rejected_solver = 0;
   double smallest_step = 0.0;
   double largest_step = 0.0;
   double last_step = 0.0;
-  // Implicit schemes: Newton and linear-solver (CG) iterations, accepted and
-  // rejected steps together.
-  std::size_t newton_iterations = 0;
-  std::size_t linear_iterations = 0;
+  // Implicit schemes: the frozen drags computed (one contact pass each; a
+  // retry keeps its step's; none without drag), and the work of the step
+  // solves, one per step tried, accepted and rejected together
+  // (incremental_counters.h).
+  std::size_t drag_freezes = 0;
+  IncrementalCounters minimiser;
 };
 
 class Integrator {
@@ -49,6 +61,7 @@ class Integrator {
 
  protected:
   void record_accepted(double dt);
+  void record_rejected(Rejection cause);
   IntegratorStats stats_;
 };
 

@@ -17,17 +17,39 @@ namespace {
 constexpr const char* kShearKind = "softglass shear checkpoint";
 constexpr const char* kQuasiStaticKind = "softglass quasi-static checkpoint";
 
-// The counters as one array, in this order.
+// The minimiser's counters, in declaration order, appended to `values`.
+void append_minimiser(const IncrementalCounters& m, std::vector<double>& values) {
+  values.insert(values.end(), {double(m.solves), double(m.iterations), double(m.cg_iterations),
+                               double(m.force_evaluations), double(m.assemblies),
+                               double(m.damping_raises), double(m.backtracks)});
+}
+constexpr std::size_t kMinimiserCounters = 7;
+constexpr const char* kMinimiserCounterNames =
+    "minimiser solves, Newton iterations, CG iterations, force evaluations, assemblies, damping "
+    "raises, backtracks";
+
+// The counters as one array, in this order. The rejections by cause, the drag
+// freezes and the minimiser's counters were appended later: an older
+// checkpoint holds only the first 9, and a run resumed from it counts those
+// from the resumption on.
+constexpr std::size_t kOlderShearCounters = 9;
+constexpr std::size_t kShearCounters = kOlderShearCounters + 4 + kMinimiserCounters;
 std::vector<double> counter_values(const ShearCounters& c) {
-  return {double(c.steps),
-          double(c.rejected_steps),
-          double(c.evaluations),
-          double(c.neighbour_builds),
-          double(c.fixed_point_sweeps),
-          double(c.newton_iterations),
-          double(c.cg_iterations),
-          c.smallest_step,
-          c.largest_step};
+  std::vector<double> values{double(c.steps),
+                             double(c.rejected_steps),
+                             double(c.evaluations),
+                             double(c.neighbour_builds),
+                             double(c.fixed_point_sweeps),
+                             double(c.newton_iterations),
+                             double(c.cg_iterations),
+                             c.smallest_step,
+                             c.largest_step,
+                             double(c.rejected_error),
+                             double(c.rejected_list),
+                             double(c.rejected_solver),
+                             double(c.drag_freezes)};
+  append_minimiser(c.minimiser, values);
+  return values;
 }
 
 // What every checkpoint holds: its kind, the configuration, the run's state
@@ -87,12 +109,21 @@ struct ReadParts {
   double finite_counter(std::size_t k) const {
     return finite(counters[k], where, fmt::format("value {} of dataset '/counters'", k));
   }
+  // The minimiser's counters from entry `first` on (append_minimiser), or
+  // none in a checkpoint from before they were stored.
+  IncrementalCounters minimiser_at(std::size_t first) const {
+    if (counters.size() < first + kMinimiserCounters) return {};
+    return {count_at(first),     count_at(first + 1), count_at(first + 2), count_at(first + 3),
+            count_at(first + 4), count_at(first + 5), count_at(first + 6)};
+  }
 };
 
 // The parts of a checkpoint of `kind` with state and counters of the given
-// lengths (the state's at least `state_size`, at most `longest_state`).
+// lengths (the state's at least `state_size`, at most `longest_state`; the
+// counters' `counters_size`, or `older_counters` in a checkpoint written
+// before the last counters were added).
 ReadParts read_parts(const H5Group& root, const std::string& where, const char* kind,
-                     std::size_t state_size, std::size_t counters_size,
+                     std::size_t state_size, std::size_t counters_size, std::size_t older_counters,
                      std::size_t longest_state = 0) {
   if (!root.has_attribute("kind") || root.attribute_string("kind") != kind) {
     const bool other =
@@ -109,7 +140,8 @@ ReadParts read_parts(const H5Group& root, const std::string& where, const char* 
               {},
               {}};
   const std::size_t longest = std::max(state_size, longest_state);
-  if (p.state.size() < state_size || p.state.size() > longest || p.counters.size() != counters_size)
+  if (p.state.size() < state_size || p.state.size() > longest ||
+      (p.counters.size() != counters_size && p.counters.size() != older_counters))
     throw InputError(fmt::format("'{}': state or counters of the wrong length", where));
   if (root.has_child("timeseries")) p.series = read_time_series(root.group("timeseries"), where);
   if (root.has_child("snapshots"))
@@ -129,7 +161,7 @@ void write_checkpoint(const std::filesystem::path& path, const ShearCheckpoint& 
                "start, next sample, next check, next snapshot, worst error, seconds, drive "
                "amplitude, time",
                counter_values(c.counters),
-               "ShearCounters in declaration order",
+               "ShearCounters in declaration order (the minimiser's in theirs)",
                c.series,
                c.snapshots},
               [&](H5Group& root) {
@@ -144,7 +176,7 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
   const H5Group root = file.root();
   // The drive's amplitude and the time were added after the first six
   // entries: a checkpoint of six is of steady shear.
-  ReadParts parts = read_parts(root, where, kShearKind, 6, 9, 8);
+  ReadParts parts = read_parts(root, where, kShearKind, 6, kShearCounters, kOlderShearCounters, 8);
   if (parts.state.size() == 7)
     throw InputError(fmt::format("'{}': 7 state entries; allowed: 6 or 8", where));
   ShearCheckpoint c;
@@ -178,24 +210,44 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
     c.amplitude = parts.finite_state(6);
     c.time = parts.finite_state(7);
   }
-  c.counters = {parts.count_at(0), parts.count_at(1),       parts.count_at(2),
-                parts.count_at(3), parts.count_at(4),       parts.count_at(5),
-                parts.count_at(6), parts.finite_counter(7), parts.finite_counter(8)};
+  const bool older = parts.counters.size() == kOlderShearCounters;
+  c.counters = {.steps = parts.count_at(0),
+                .rejected_steps = parts.count_at(1),
+                .evaluations = parts.count_at(2),
+                .neighbour_builds = parts.count_at(3),
+                .fixed_point_sweeps = parts.count_at(4),
+                .newton_iterations = parts.count_at(5),
+                .cg_iterations = parts.count_at(6),
+                .smallest_step = parts.finite_counter(7),
+                .largest_step = parts.finite_counter(8),
+                .rejected_error = older ? 0 : parts.count_at(9),
+                .rejected_list = older ? 0 : parts.count_at(10),
+                .rejected_solver = older ? 0 : parts.count_at(11),
+                .drag_freezes = older ? 0 : parts.count_at(12),
+                .minimiser = parts.minimiser_at(13)};
   c.series = std::move(parts.series);
   c.snapshots = std::move(parts.snapshots);
   return c;
 }
 
+// A quasi-static checkpoint's counters: 5, then (appended later) the minimiser's.
+constexpr std::size_t kOlderQuasiStaticCounters = 5;
+
 void write_checkpoint(const std::filesystem::path& path, const QuasiStaticCheckpoint& c) {
+  std::vector<double> counters{double(c.counters.steps), double(c.counters.newton_iterations),
+                               double(c.counters.cg_iterations), double(c.stress_drops),
+                               double(c.unconverged_steps)};
+  append_minimiser(c.counters.minimiser, counters);
+  const std::string names =
+      fmt::format("steps, Newton iterations, CG iterations, stress drops, unconverged steps, {}",
+                  kMinimiserCounterNames);
   write_parts(path, {kQuasiStaticKind,
                      c.particles,
                      c.box,
                      {c.start, c.next_check, c.worst, c.last_sigma, c.seconds},
                      "start, next check, worst error, last sigma, seconds",
-                     {double(c.counters.steps), double(c.counters.newton_iterations),
-                      double(c.counters.cg_iterations), double(c.stress_drops),
-                      double(c.unconverged_steps)},
-                     "steps, Newton iterations, CG iterations, stress drops, unconverged steps",
+                     counters,
+                     names.c_str(),
                      c.series,
                      c.snapshots});
 }
@@ -203,7 +255,9 @@ void write_checkpoint(const std::filesystem::path& path, const QuasiStaticCheckp
 QuasiStaticCheckpoint read_quasi_static_checkpoint(const std::filesystem::path& path) {
   const std::string where = path.string();
   const H5File file = H5File::open(path);
-  ReadParts parts = read_parts(file.root(), where, kQuasiStaticKind, 5, 5);
+  ReadParts parts =
+      read_parts(file.root(), where, kQuasiStaticKind, 5,
+                 kOlderQuasiStaticCounters + kMinimiserCounters, kOlderQuasiStaticCounters);
   QuasiStaticCheckpoint c;
   c.particles = std::move(parts.configuration.particles);  // label order: labels 0 ... N-1
   c.box = parts.configuration.box;
@@ -217,6 +271,7 @@ QuasiStaticCheckpoint read_quasi_static_checkpoint(const std::filesystem::path& 
   c.counters.cg_iterations = parts.count_at(2);
   c.stress_drops = parts.count_at(3);
   c.unconverged_steps = parts.count_at(4);
+  c.counters.minimiser = parts.minimiser_at(kOlderQuasiStaticCounters);
   c.series = std::move(parts.series);
   c.snapshots = std::move(parts.snapshots);
   return c;

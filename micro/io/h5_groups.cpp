@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <utility>
 
 #include "common/errors.h"
 
@@ -66,13 +67,27 @@ std::uint64_t configuration_fingerprint(const H5Group& configuration) {
 }
 
 void write_counters(H5Group& c, const ShearCounters& k) {
-  c.set_attribute("steps", static_cast<std::int64_t>(k.steps));
-  c.set_attribute("rejected_steps", static_cast<std::int64_t>(k.rejected_steps));
-  c.set_attribute("evaluations", static_cast<std::int64_t>(k.evaluations));
-  c.set_attribute("neighbour_builds", static_cast<std::int64_t>(k.neighbour_builds));
-  c.set_attribute("fixed_point_sweeps", static_cast<std::int64_t>(k.fixed_point_sweeps));
-  c.set_attribute("newton_iterations", static_cast<std::int64_t>(k.newton_iterations));
-  c.set_attribute("cg_iterations", static_cast<std::int64_t>(k.cg_iterations));
+  const IncrementalCounters& m = k.minimiser;
+  const std::pair<const char*, std::size_t> counts[] = {
+      {"steps", k.steps},
+      {"rejected_steps", k.rejected_steps},
+      {"evaluations", k.evaluations},
+      {"neighbour_builds", k.neighbour_builds},
+      {"fixed_point_sweeps", k.fixed_point_sweeps},
+      {"newton_iterations", k.newton_iterations},
+      {"cg_iterations", k.cg_iterations},
+      {"rejected_error", k.rejected_error},
+      {"rejected_list", k.rejected_list},
+      {"rejected_solver", k.rejected_solver},
+      {"drag_freezes", k.drag_freezes},
+      {"minimiser_solves", m.solves},
+      {"minimiser_newton_iterations", m.iterations},
+      {"minimiser_cg_iterations", m.cg_iterations},
+      {"minimiser_force_evaluations", m.force_evaluations},
+      {"minimiser_assemblies", m.assemblies},
+      {"minimiser_damping_raises", m.damping_raises},
+      {"minimiser_backtracks", m.backtracks}};
+  for (const auto& [name, value] : counts) c.set_attribute(name, static_cast<std::int64_t>(value));
   c.set_attribute("smallest_step", k.smallest_step);
   c.set_attribute("largest_step", k.largest_step);
 }

@@ -49,8 +49,9 @@ TimeSeries read_time_series(const H5Group& g, const std::string& where);
 
 void write_snapshots(H5Group&& g, const std::vector<Snapshot>& snapshots);
 
-/// A run's counters as attributes of `g` (steps, rejections, evaluations, list
-/// builds, solver iterations, smallest and largest step).
+/// A run's counters as attributes of `g` (steps, rejections and their causes,
+/// evaluations, list builds, solver iterations, smallest and largest step, the
+/// minimisations' work; docs/output.md).
 void write_counters(H5Group& g, const ShearCounters& counters);
 /// Snapshots of `particles` particles each.
 std::vector<Snapshot> read_snapshots(const H5Group& g, std::size_t particles,

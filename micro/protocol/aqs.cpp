@@ -88,7 +88,6 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings, const AqsO
       }
     }
     if (observer) observer(all_energies);
-    result.newton_iterations += iterations;
     elastic_before = iterations <= kElasticIterations;
     const ContactField& field = system.compute_forces({.energy = true, .virial = true});
     const Eigen::Matrix3d sigma = -field.virial / system.box().volume();
@@ -105,7 +104,7 @@ AqsResult run_aqs(ContactSystem& system, const AqsSettings& settings, const AqsO
     last_sigma = s;
     ++result.steps;
   }
-  result.cg_iterations = minimiser.counters().cg_iterations;
+  result.minimiser = minimiser.counters();
   result.summary = summarise(result.series, settings.min_stationary_strain);
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();

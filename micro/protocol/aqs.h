@@ -24,6 +24,7 @@
 #include <functional>
 #include <vector>
 
+#include "micro/dynamics/incremental_counters.h"
 #include "micro/model/contact_system.h"
 #include "micro/protocol/shear_run.h"
 
@@ -49,8 +50,9 @@ struct AqsResult {
   TimeSeries series;           // one sample per strain step (viscous = 0)
   ShearSummary summary;        // stationary means: summary["sigma"] is σ_y
   std::vector<double> energy;  // elastic energy after each step (units E* R³)
-  std::size_t steps = 0, newton_iterations = 0, cg_iterations = 0;
-  std::size_t stress_drops = 0;  // steps where σ fell (plastic events)
+  std::size_t steps = 0;
+  IncrementalCounters minimiser;  // the minimisations' work (incremental_counters.h)
+  std::size_t stress_drops = 0;   // steps where σ fell (plastic events)
   std::size_t unconverged_steps = 0;
   double seconds = 0.0;
 };

@@ -65,8 +65,9 @@ void append(const AqsResult& r, const Layout& l, double segment_start,
     state.last_sigma = sigma;
   }
   state.counters.steps += r.steps;
-  state.counters.newton_iterations += r.newton_iterations;
-  state.counters.cg_iterations += r.cg_iterations;
+  state.counters.newton_iterations += r.minimiser.iterations;
+  state.counters.cg_iterations += r.minimiser.cg_iterations;
+  state.counters.minimiser += r.minimiser;
   state.unconverged_steps += r.unconverged_steps;
 }
 

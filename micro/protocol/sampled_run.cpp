@@ -101,7 +101,7 @@ class SampledRunner {
 
   bool checkpoint_due() const {
     return checkpointing_.every_steps > 0 &&
-           integrator_->stats().accepted - accepted_before_ >= checkpointing_.every_steps;
+           integrator_->stats().accepted - stats_before_.accepted >= checkpointing_.every_steps;
   }
 
   void save_and_restart() {
@@ -176,16 +176,21 @@ class SampledRunner {
   void begin_segment() {
     builds_before_ = flow_.system().neighbours().builds();
     evaluations_before_ = flow_.evaluations();
-    accepted_before_ = integrator_->stats().accepted;
-    rejected_before_ = integrator_->stats().rejected;
+    stats_before_ = integrator_->stats();
     solver_ = {};
   }
 
   ShearCounters segment() const {
     const IntegratorStats& stats = integrator_->stats();
+    const IntegratorStats& before = stats_before_;
     ShearCounters c = solver_;
-    c.steps = stats.accepted - accepted_before_;
-    c.rejected_steps = stats.rejected - rejected_before_;
+    c.steps = stats.accepted - before.accepted;
+    c.rejected_steps = stats.rejected - before.rejected;
+    c.rejected_error = stats.rejected_error - before.rejected_error;
+    c.rejected_list = stats.rejected_list - before.rejected_list;
+    c.rejected_solver = stats.rejected_solver - before.rejected_solver;
+    c.drag_freezes = stats.drag_freezes - before.drag_freezes;
+    c.minimiser = stats.minimiser - before.minimiser;
     c.evaluations = flow_.evaluations() - evaluations_before_;
     c.neighbour_builds = flow_.system().neighbours().builds() - builds_before_;
     c.smallest_step = stats.smallest_step;
@@ -210,8 +215,8 @@ class SampledRunner {
   double seconds_before_ = 0.0;  // of the run before it was resumed
 
   ShearCounters finished_, solver_;
-  std::size_t builds_before_ = 0, evaluations_before_ = 0, accepted_before_ = 0,
-              rejected_before_ = 0;
+  std::size_t builds_before_ = 0, evaluations_before_ = 0;
+  IntegratorStats stats_before_;  // the integrator's at the segment's start
 };
 
 }  // namespace

@@ -169,6 +169,11 @@ ShearCounters& ShearCounters::operator+=(const ShearCounters& more) {
   fixed_point_sweeps += more.fixed_point_sweeps;
   newton_iterations += more.newton_iterations;
   cg_iterations += more.cg_iterations;
+  rejected_error += more.rejected_error;
+  rejected_list += more.rejected_list;
+  rejected_solver += more.rejected_solver;
+  drag_freezes += more.drag_freezes;
+  minimiser += more.minimiser;
   if (more.steps > 0) {
     smallest_step = first ? more.smallest_step : std::min(smallest_step, more.smallest_step);
     largest_step = std::max(largest_step, more.largest_step);

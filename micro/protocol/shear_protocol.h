@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "micro/analysis/steady_state.h"
+#include "micro/dynamics/incremental_counters.h"
 #include "micro/geometry/lees_edwards_box.h"
 
 namespace softglass::micro {
@@ -89,11 +90,20 @@ bool meets_stopping_rule(const ShearSummary& summary, const ShearProtocol& proto
 std::string converged_stop_reason(const ShearSummary& summary);
 std::string max_strain_stop_reason(const ShearSummary& summary, const ShearProtocol& protocol);
 
+/// What a run cost, in counts (docs/output.md, `/shear/counters`).
 struct ShearCounters {
   ShearCounters& operator+=(const ShearCounters& more);
   std::size_t steps = 0, rejected_steps = 0, evaluations = 0, neighbour_builds = 0;
+  // The velocity solves of the evaluations (AQS: the minimisations).
   std::size_t fixed_point_sweeps = 0, newton_iterations = 0, cg_iterations = 0;
   double smallest_step = 0.0, largest_step = 0.0;
+  // rejected_steps by cause (integrator.h, Rejection).
+  std::size_t rejected_error = 0, rejected_list = 0, rejected_solver = 0;
+  // The implicit steps' frozen drags (integrator.h), and the minimisations of
+  // the implicit steps or of AQS.
+  std::size_t drag_freezes = 0;
+  IncrementalCounters minimiser;
+  bool operator==(const ShearCounters&) const = default;
 };
 
 /// A configuration of the run, for structure analysis afterwards.

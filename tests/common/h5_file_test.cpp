@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -248,6 +250,25 @@ TEST_F(H5FileTest, OpeningANonHdf5FileNamesIt) {
   expect_error<InputError>([&] { H5File::open(dir_ / "notes.txt"); },
                            {"notes.txt", "not an HDF5 file"});
   expect_error<InputError>([&] { H5File::open(dir_); }, {dir_.string()});
+}
+
+// A global heap whose object sizes do not tile it (a free-space object of
+// size 0 here) makes HDF5 1.10 loop forever: it is refused on opening.
+TEST_F(H5FileTest, AGlobalHeapThatDoesNotHoldTogetherIsRefused) {
+  create_and_close(file(), [&](H5Group root) { root.set_attribute("kind", std::string("text")); });
+  std::string bytes;
+  {
+    std::ifstream in(file(), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t heap = bytes.find(std::string("GCOL\x01\x00\x00\x00", 8));
+  ASSERT_NE(heap, std::string::npos) << "the string lives in a global heap";
+  EXPECT_EQ(H5File::open(file()).root().attribute_string("kind"), "text");
+  // The first object (header at byte 16 of the collection): index 0, size 0.
+  std::fill_n(bytes.begin() + static_cast<std::ptrdiff_t>(heap + 16), 2, '\0');
+  std::fill_n(bytes.begin() + static_cast<std::ptrdiff_t>(heap + 24), 8, '\0');
+  std::ofstream(file(), std::ios::binary) << bytes;
+  expect_error<InputError>([&] { H5File::open(file()); }, {"run.h5", "global heap"});
 }
 
 TEST_F(H5FileTest, CreatingInAMissingDirectoryFails) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -42,15 +43,31 @@ class Checkpoints : public ::testing::Test {
   ShearResult shear(const std::function<void(const ShearCheckpoint&)>& save,
                     const ShearCheckpoint* resume_from = nullptr) {
     ShearModel model;
-    model.gamma_tilde = 1e-4;
+    model.gamma_tilde = gamma_tilde_;
     OverdampedShear flow(ContactSystem(packing_.particles, packing_.box, law_, spec_.skin), model);
-    const auto integrator = make_integrator({.name = "euler"});
-    ShearCheckpointing checkpointing{150, save, [] { return make_integrator({.name = "euler"}); },
+    const auto integrator = make_integrator(scheme_);
+    ShearCheckpointing checkpointing{150, save, [&] { return make_integrator(scheme_); },
                                      resume_from};
     return run_shear(flow, *integrator, protocol_, {}, checkpointing);
   }
 
+  // Runs with checkpoints, killed right after writing the second to `file`;
+  // returns what it wrote there.
+  ShearCheckpoint interrupted_at_second_checkpoint(const std::filesystem::path& file) {
+    ShearCheckpoint last;
+    int written = 0;
+    EXPECT_THROW(shear([&](const ShearCheckpoint& c) {
+                   write_checkpoint(file, c);
+                   last = c;
+                   if (++written == 2) throw Interrupted();
+                 }),
+                 Interrupted);
+    return last;
+  }
+
   std::shared_ptr<const ContactLaw> law_ = testing::named_law("seth2011");
+  IntegratorSpec scheme_{.name = "euler"};
+  double gamma_tilde_ = 1e-4;
   PackingSpec spec_;
   Packing packing_;
   ShearProtocol protocol_;
@@ -64,12 +81,7 @@ TEST_F(Checkpoints, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
 
   // The same run, killed right after writing its second checkpoint.
   const std::filesystem::path file = dir_.path() / "run.checkpoint.h5";
-  int written = 0;
-  EXPECT_THROW(shear([&](const ShearCheckpoint& c) {
-                 write_checkpoint(file, c);
-                 if (++written == 2) throw Interrupted();
-               }),
-               Interrupted);
+  interrupted_at_second_checkpoint(file);
   const ShearCheckpoint stored = read_checkpoint(file);
   ASSERT_GT(stored.series.size(), 0u);
   const ShearResult resumed = shear({}, &stored);
@@ -88,8 +100,71 @@ TEST_F(Checkpoints, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
     for (std::size_t i = 0; i < whole.snapshots[k].position.size(); ++i)
       ASSERT_EQ(whole.snapshots[k].position[i], resumed.snapshots[k].position[i]);
   EXPECT_EQ(whole.summary["sigma"].mean, resumed.summary["sigma"].mean);
-  EXPECT_EQ(whole.counters.steps, resumed.counters.steps) << "the counters carry over";
-  EXPECT_EQ(whole.counters.evaluations, resumed.counters.evaluations);
+  EXPECT_EQ(whole.counters, resumed.counters) << "the counters carry over";
+  // `euler` rejects a step for its error only.
+  EXPECT_EQ(whole.counters.rejected_error, whole.counters.rejected_steps);
+  EXPECT_EQ(whole.counters.minimiser, IncrementalCounters{});
+}
+
+// The implicit step's counters (integrator.h, incremental_counters.h) add up:
+// every step tried is one solve, and every rejected one has one cause. A
+// checkpoint stores them and reads them back exactly, a resumed run carries
+// them over, and a checkpoint written before they were stored (9 counters)
+// still resumes the same run, counting them from the resumption on.
+TEST_F(Checkpoints, ImplicitStepCountersAddUpAndCarryOver) {
+  scheme_ = {.name = "implicit", .tolerance = 1e-3};
+  gamma_tilde_ = 1e-6;
+  protocol_.min_strain = protocol_.max_strain = 1.0;
+  const ShearResult whole = shear({});
+  const ShearCounters& c = whole.counters;
+  std::printf(
+      "[ measured ] implicit, 1 strain: %zu steps, %zu rejected (%zu error, %zu list, %zu "
+      "solver), %zu drag freezes, %zu solves, %zu Newton, %zu CG, %zu evaluations, %zu damping "
+      "raises, %zu backtracks\n",
+      c.steps, c.rejected_steps, c.rejected_error, c.rejected_list, c.rejected_solver,
+      c.drag_freezes, c.minimiser.solves, c.minimiser.iterations, c.minimiser.cg_iterations,
+      c.minimiser.force_evaluations, c.minimiser.damping_raises, c.minimiser.backtracks);
+  ASSERT_GT(c.rejected_steps, 0u) << "the identities below need rejections";
+  EXPECT_EQ(c.rejected_error + c.rejected_list + c.rejected_solver, c.rejected_steps);
+  EXPECT_EQ(c.minimiser.solves, c.steps + c.rejected_steps);
+  // One frozen drag per step at least; a retry mostly keeps its step's.
+  EXPECT_GE(c.drag_freezes, c.steps);
+  EXPECT_LT(c.drag_freezes, c.minimiser.solves);
+  EXPECT_GE(c.minimiser.force_evaluations, c.minimiser.solves + c.minimiser.iterations);
+  EXPECT_LE(c.minimiser.assemblies, c.minimiser.iterations);
+  EXPECT_GT(c.minimiser.cg_iterations, c.minimiser.iterations);
+
+  const std::filesystem::path file = dir_.path() / "implicit.checkpoint.h5";
+  const ShearCheckpoint written = interrupted_at_second_checkpoint(file);
+  const ShearCheckpoint stored = read_checkpoint(file);
+  EXPECT_GT(stored.counters.minimiser.solves, 0u);
+  EXPECT_EQ(stored.counters, written.counters) << "written and read back exactly";
+  const ShearResult resumed = shear({}, &stored);
+  EXPECT_EQ(resumed.counters, whole.counters);
+
+  testing::keep_older_counters(file, 9);
+  const ShearCheckpoint older = read_checkpoint(file);
+  EXPECT_EQ(older.counters.steps, stored.counters.steps);
+  EXPECT_EQ(older.counters.rejected_steps, stored.counters.rejected_steps);
+  EXPECT_EQ(older.counters.rejected_error, 0u);
+  EXPECT_EQ(older.counters.minimiser, IncrementalCounters{});
+  const ShearResult from_older = shear({}, &older);
+  ASSERT_EQ(from_older.series.size(), whole.series.size());
+  for (std::size_t k = 0; k < whole.series.size(); ++k)
+    ASSERT_TRUE(same_bits(from_older.series.elastic[k], whole.series.elastic[k])) << k;
+  EXPECT_EQ(from_older.counters.steps, whole.counters.steps);
+  EXPECT_EQ(from_older.counters.rejected_steps, whole.counters.rejected_steps);
+  EXPECT_EQ(from_older.counters.minimiser.solves + stored.counters.minimiser.solves,
+            whole.counters.minimiser.solves);
+  EXPECT_EQ(from_older.counters.rejected_error + stored.counters.rejected_error,
+            whole.counters.rejected_error);
+}
+
+TEST_F(Checkpoints, RefusesCountersOfAnUnknownLength) {
+  const std::filesystem::path file = dir_.path() / "run.checkpoint.h5";
+  interrupted_at_second_checkpoint(file);
+  testing::keep_older_counters(file, 12);
+  EXPECT_THROW(read_checkpoint(file), InputError);
 }
 
 TEST_F(Checkpoints, RefusesAFileThatIsNotACheckpoint) {

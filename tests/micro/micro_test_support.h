@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/h5_file.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/contact/contact_law.h"
 #include "micro/dynamics/integrator.h"
@@ -60,6 +61,18 @@ inline ShortShear shear_briefly(const Packing& packing, std::shared_ptr<const Co
   // Braced initialisation runs left to right: the run first.
   return {run_shear(flow, *integrator, protocol), flow.system().wrapped_in_label_order(),
           flow.system().box()};
+}
+
+/// Makes the checkpoint file at `path` one of an older version, whose
+/// /counters array held only its first `kept` entries.
+inline void keep_older_counters(const std::filesystem::path& path, std::size_t kept) {
+  H5File file = H5File::open_for_update(path);
+  H5Group root = file.root();
+  std::vector<double> counters = root.read_array("counters").data;
+  counters.resize(kept);
+  root.remove_child("counters");
+  root.write("counters", counters);
+  file.close();
 }
 
 /// The contact law called `name` (no table file).

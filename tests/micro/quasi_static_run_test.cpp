@@ -63,6 +63,14 @@ TEST_F(QuasiStaticRun, SamplesItsStepsLikeAShearedRun) {
   EXPECT_EQ(r.run.snapshots.size(), 8u);
   EXPECT_EQ(r.run.counters.steps, 400u);
   EXPECT_GE(r.run.counters.newton_iterations, r.run.counters.steps);
+  // The minimisations' counters: at least one solve per step (more after a
+  // list rebuild), and the Newton and CG counts are theirs.
+  const IncrementalCounters& m = r.run.counters.minimiser;
+  EXPECT_GE(m.solves, r.run.counters.steps);
+  EXPECT_EQ(m.iterations, r.run.counters.newton_iterations);
+  EXPECT_EQ(m.cg_iterations, r.run.counters.cg_iterations);
+  EXPECT_GT(m.force_evaluations, m.iterations);
+  EXPECT_LE(m.assemblies, m.iterations);
   EXPECT_EQ(r.unconverged_steps, 0u);
   EXPECT_GT(r.stress_drops, 0u);
   EXPECT_FALSE(r.run.converged);
@@ -90,6 +98,7 @@ TEST_F(QuasiStaticRun, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
                Interrupted);
   const QuasiStaticCheckpoint stored = read_quasi_static_checkpoint(file);
   ASSERT_GT(stored.series.size(), 0u);
+  EXPECT_GT(stored.counters.minimiser.solves, 0u) << "the minimiser's counters are stored";
   EXPECT_THROW(read_checkpoint(file), InputError) << "not a sheared run's checkpoint";
   const QuasiStaticResult resumed = shear({.resume_from = &stored});
 
@@ -108,8 +117,20 @@ TEST_F(QuasiStaticRun, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
   EXPECT_EQ(whole.run.summary["sigma"].mean, resumed.run.summary["sigma"].mean);
   EXPECT_EQ(whole.run.counters.steps, resumed.run.counters.steps) << "the counters carry over";
   EXPECT_EQ(whole.run.counters.newton_iterations, resumed.run.counters.newton_iterations);
+  EXPECT_EQ(whole.run.counters.minimiser, resumed.run.counters.minimiser);
   EXPECT_EQ(whole.stress_drops, resumed.stress_drops);
   EXPECT_EQ(whole.final_particles.position, resumed.final_particles.position);
+
+  // A checkpoint from before the minimiser's counters were stored (5
+  // counters) resumes the same run; those counters start at the resumption.
+  testing::keep_older_counters(file, 5);
+  const QuasiStaticCheckpoint older = read_quasi_static_checkpoint(file);
+  EXPECT_EQ(older.counters.minimiser, IncrementalCounters{});
+  const QuasiStaticResult from_older = shear({.resume_from = &older});
+  EXPECT_EQ(from_older.run.summary["sigma"].mean, whole.run.summary["sigma"].mean);
+  EXPECT_EQ(from_older.run.counters.newton_iterations, whole.run.counters.newton_iterations);
+  EXPECT_EQ(from_older.run.counters.minimiser.solves + stored.counters.minimiser.solves,
+            whole.run.counters.minimiser.solves);
 }
 
 }  // namespace

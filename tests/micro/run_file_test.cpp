@@ -111,6 +111,60 @@ TEST(RunFile, PackingAndTimeSeriesRoundTripExactly) {
   EXPECT_EQ(root.group("timings").read_scalar("total"), 3.75);
 }
 
+// /shear/counters: every counter under its name (docs/output.md), each given
+// a different value here so that a swap of two would show.
+TEST(RunFile, CountersAreWrittenUnderTheirNames) {
+  RunRecord record = small_record();
+  ShearCounters& c = record.shear->result.counters;
+  c = {.steps = 101,
+       .rejected_steps = 12,
+       .evaluations = 103,
+       .neighbour_builds = 104,
+       .fixed_point_sweeps = 105,
+       .newton_iterations = 106,
+       .cg_iterations = 107,
+       .smallest_step = 1e-6,
+       .largest_step = 0.05,
+       .rejected_error = 7,
+       .rejected_list = 3,
+       .rejected_solver = 2,
+       .drag_freezes = 120,
+       .minimiser = {.solves = 113,
+                     .iterations = 114,
+                     .cg_iterations = 115,
+                     .force_evaluations = 116,
+                     .assemblies = 117,
+                     .damping_raises = 118,
+                     .backtracks = 119}};
+  testing::TemporaryDirectory dir;
+  const auto path = dir / "run.h5";
+  write_run_file(path, record);
+  const H5File file = H5File::open(path);
+  const H5Group g = file.root().group("shear").group("counters");
+  const std::pair<const char*, std::size_t> counts[] = {{"steps", 101},
+                                                        {"rejected_steps", 12},
+                                                        {"evaluations", 103},
+                                                        {"neighbour_builds", 104},
+                                                        {"fixed_point_sweeps", 105},
+                                                        {"newton_iterations", 106},
+                                                        {"cg_iterations", 107},
+                                                        {"rejected_error", 7},
+                                                        {"rejected_list", 3},
+                                                        {"rejected_solver", 2},
+                                                        {"drag_freezes", 120},
+                                                        {"minimiser_solves", 113},
+                                                        {"minimiser_newton_iterations", 114},
+                                                        {"minimiser_cg_iterations", 115},
+                                                        {"minimiser_force_evaluations", 116},
+                                                        {"minimiser_assemblies", 117},
+                                                        {"minimiser_damping_raises", 118},
+                                                        {"minimiser_backtracks", 119}};
+  for (const auto& [name, value] : counts)
+    EXPECT_EQ(g.attribute_int(name), static_cast<std::int64_t>(value)) << name;
+  EXPECT_EQ(g.attribute_double("smallest_step"), 1e-6);
+  EXPECT_EQ(g.attribute_double("largest_step"), 0.05);
+}
+
 TEST(RunFile, ReadingAMissingFileIsAnInputError) {
   testing::TemporaryDirectory dir;
   EXPECT_THROW(read_packing(dir / "absent.h5"), InputError);

@@ -45,7 +45,7 @@ class AdaptiveEuler final : public Integrator {
         return dt;
       }
       flow.restore(before_);
-      ++stats_.rejected;
+      record_rejected(Rejection::error);
       dt *= std::max(0.2, factor);
     }
   }

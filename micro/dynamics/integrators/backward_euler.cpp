@@ -42,7 +42,10 @@
 // h · min(2, max(0.2, 0.9 √(tol/e))). A step whose nonlinear solve fails is
 // retried with h/4.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 #include "common/errors.h"
 
@@ -85,6 +88,7 @@ class BackwardEuler final : public Integrator {
     double list_margin = 0.0;
     bool rejected = false;
     const double widest = std::min(kWidestMargin, 0.3 * system.neighbours().skin());
+    std::optional<FrozenAt> frozen;  // what drag_ holds, once frozen in this call
 
     for (int attempt = 0;; ++attempt) {
       if (attempt > 200) throw NumericalError("implicit step: no acceptable step size");
@@ -96,17 +100,18 @@ class BackwardEuler final : public Integrator {
       const std::size_t n = system.size();
       const auto& p = system.particles();
 
-      // Frozen drag from the contacts at x_n (recomputed: a rebuild reorders).
+      // Frozen drag from the contacts at x_n. A retry after a rejection starts
+      // from the same x_n (restored), so the drag is kept unless the list was
+      // rebuilt (which reorders the particles) or the drive's rate at the step's
+      // end moved with h (oscillatory shear): see FrozenAt.
       const ShearModel& model = flow.model();
-      friction_.resize(n);
-      for (std::size_t a = 0; a < n; ++a) friction_[a] = model.friction(p.radius[a]);
-      FrozenDrag& drag = drag_;
-      drag.clear();
-      if (model.drag.enabled || model.drag.stokes.has_pairs()) {
-        const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
-        freeze_drag(field.contacts, gamma_tilde, flow.drive().rate(flow.time() + h), model.drag,
-                    friction_, drag);
+      const FrozenAt at{system.neighbours().builds(), system.box().image_offset(),
+                        flow.drive().rate(flow.time() + h)};
+      if (!frozen || !frozen->same(at)) {
+        freeze(system, model, gamma_tilde, at.rate);
+        frozen = at;
       }
+      const FrozenDrag& drag = drag_;
       proximal_.resize(n);
       velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
       guess_.resize(n);
@@ -129,15 +134,14 @@ class BackwardEuler final : public Integrator {
       settings.loosen = true;
       minimiser_.set_settings(settings);
       const IncrementalResult r = minimiser_.minimise(system, proximal_, drag, h, guess_);
-      stats_.newton_iterations = minimiser_.counters().iterations;
-      stats_.linear_iterations = minimiser_.counters().cg_iterations;
+      stats_.minimiser = minimiser_.counters();
       if (r.list_invalid) {
         // The step moves particles further than the list allows. If the error
         // of the partial solution already exceeds the tolerance, the step
         // spans a rearrangement and is shortened; else, if the list was made
         // for a small move, it is rebuilt with a wider margin.
         flow.restore(before_);
-        ++stats_.rejected;
+        record_rejected(Rejection::list);
         rejected = true;
         const double partial = step_error(h);
         if (partial <= spec_.tolerance && std::max(predicted, list_margin) < 0.5 * widest) {
@@ -150,8 +154,7 @@ class BackwardEuler final : public Integrator {
       }
       if (!r.converged) {
         flow.restore(before_);
-        ++stats_.rejected;
-        ++solver_failures_;
+        record_rejected(Rejection::solver);
         rejected = true;
         h *= 0.25;
         continue;
@@ -160,7 +163,7 @@ class BackwardEuler final : public Integrator {
       const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
       if (error > spec_.tolerance) {
         flow.restore(before_);
-        ++stats_.rejected;
+        record_rejected(Rejection::error);
         rejected = true;
         h *= std::max(0.2, factor);
         continue;
@@ -179,6 +182,34 @@ class BackwardEuler final : public Integrator {
   }
 
  private:
+  // What the frozen drag depends on besides x_n: the list build (whose
+  // particle order friction_ and the contacts follow), the Lees–Edwards offset
+  // (the contacts across the gradient boundary; a restore sets the strain from
+  // a double, which could round it) and the rate. Compared bit for bit, so a
+  // kept drag is the one a recomputation would give, to the last bit.
+  struct FrozenAt {
+    std::size_t build;
+    double offset, rate;
+    bool same(const FrozenAt& o) const {
+      return build == o.build &&
+             std::bit_cast<std::uint64_t>(offset) == std::bit_cast<std::uint64_t>(o.offset) &&
+             std::bit_cast<std::uint64_t>(rate) == std::bit_cast<std::uint64_t>(o.rate);
+    }
+  };
+
+  // friction_ and drag_ from the contacts where the system is (x_n).
+  void freeze(ContactSystem& system, const ShearModel& model, double gamma_tilde, double rate) {
+    const auto& p = system.particles();
+    friction_.resize(system.size());
+    for (std::size_t a = 0; a < system.size(); ++a) friction_[a] = model.friction(p.radius[a]);
+    drag_.clear();
+    if (model.drag.enabled || model.drag.stokes.has_pairs()) {
+      ++stats_.drag_freezes;
+      const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
+      freeze_drag(field.contacts, gamma_tilde, rate, model.drag, friction_, drag_);
+    }
+  }
+
   // max_α ½|u_α − h v_n,α| for the solution (or partial solution) in guess_.
   double step_error(double h) const {
     double worst = 0.0;
@@ -193,7 +224,6 @@ class BackwardEuler final : public Integrator {
   std::vector<double> proximal_, friction_;
   std::vector<Vec3> velocity_, guess_, shift_;
   double proposal_ = 1e300;
-  std::size_t solver_failures_ = 0;
   OverdampedShear::Snapshot before_;
 };
 
