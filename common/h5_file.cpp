@@ -573,13 +573,33 @@ H5File H5File::open_for_update(const std::filesystem::path& path) {
 
 namespace {
 
-// The little-endian unsigned integer of `width` bytes at `at`.
-std::uint64_t little_endian(const std::string& bytes, std::size_t at, int width) {
+// The little-endian unsigned integer of `width` bytes at `at` of `bytes`.
+std::uint64_t little_endian(std::string_view bytes, std::size_t at, int width) {
   std::uint64_t value = 0;
   for (int k = width - 1; k >= 0; --k)
     value = (value << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
   return value;
 }
+
+// Reads pieces of a file by offset; a piece past the end comes back short.
+class ByteReader {
+ public:
+  explicit ByteReader(const std::filesystem::path& path)
+      : in_(path, std::ios::binary), size_(std::filesystem::file_size(path)) {}
+  std::uint64_t size() const { return size_; }
+  std::string read(std::uint64_t at, std::size_t count) {
+    std::string bytes(at < size_ ? std::min<std::uint64_t>(count, size_ - at) : 0, '\0');
+    in_.clear();
+    in_.seekg(static_cast<std::streamoff>(at));
+    in_.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(in_.gcount(), 0)));
+    return bytes;
+  }
+
+ private:
+  std::ifstream in_;
+  std::uint64_t size_;
+};
 
 // HDF5 (1.10) reads a global heap collection, where the variable-length
 // strings live, object by object, each header giving the offset of the next;
@@ -591,30 +611,41 @@ std::uint64_t little_endian(const std::string& bytes, std::size_t at, int width)
 // bytes, the collection's size; then per object a 2-byte index, 2-byte
 // reference count, 4 reserved bytes, its size and its data padded to 8
 // bytes; index 0 is the free space, whose size includes its header. Only
-// files with 8-byte lengths (the library's default) are checked.
+// files with 8-byte lengths (the library's default) are checked. The file is
+// streamed in chunks and each collection walked header by header, so a large
+// run file costs one sequential read and no more memory than a chunk.
 void refuse_looping_global_heaps(const std::filesystem::path& path, const std::string& quoted) {
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes(std::filesystem::file_size(path), '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  ByteReader file(path);
   // The superblock's size of lengths: byte 14 (versions 0, 1) or 10 (2, 3).
+  const std::string superblock = file.read(0, 16);
   const std::string_view kFileSignature("\x89HDF\r\n\x1a\n", 8);
-  if (bytes.size() < 16 || bytes.compare(0, 8, kFileSignature) != 0) return;
-  if (bytes[bytes[8] < 2 ? 14 : 10] != 8) return;
-  constexpr std::size_t kHeader = 16, kMinimumSize = 4096;
+  if (superblock.size() < 16 || superblock.compare(0, 8, kFileSignature) != 0) return;
+  if (superblock[superblock[8] < 2 ? 14 : 10] != 8) return;
+  constexpr std::uint64_t kHeader = 16, kMinimumSize = 4096, kChunk = std::uint64_t{1} << 20;
   const std::string_view kSignature("GCOL\x01\x00\x00\x00", 8);
-  for (std::size_t at = bytes.find(kSignature); at != std::string::npos;
-       at = bytes.find(kSignature, at + 1)) {
-    const std::uint64_t size = little_endian(bytes, at + 8, 8);
-    if (size < kMinimumSize || size > bytes.size() - at) continue;  // not a collection
-    const std::size_t end = at + size;
-    for (std::size_t object = at + kHeader; object + kHeader <= end;) {
-      const std::uint64_t length = little_endian(bytes, object + 8, 8);
+  const auto refuse_unless_tiled = [&](std::uint64_t at, std::uint64_t size) {
+    const std::uint64_t end = at + size;
+    for (std::uint64_t object = at + kHeader; object + kHeader <= end;) {
+      const std::string header = file.read(object, kHeader);
+      const std::uint64_t length = little_endian(header, 8, 8);
       const std::uint64_t step =
-          little_endian(bytes, object, 2) > 0 ? kHeader + (length + 7) / 8 * 8 : length;
+          little_endian(header, 0, 2) > 0 ? kHeader + (length + 7) / 8 * 8 : length;
       if (step == 0 || step > end - object)
         throw InputError(quoted + " is damaged: its global heap at byte " + std::to_string(at) +
                          " does not hold together");
       object += step;
+    }
+  };
+  // Chunks overlap by a collection header less one byte, so that no header is
+  // split between two of them and none is found twice.
+  for (std::uint64_t chunk = 0; chunk < file.size(); chunk += kChunk) {
+    const std::string bytes = file.read(chunk, kChunk + kHeader - 1);
+    for (std::size_t hit = bytes.find(kSignature);
+         hit != std::string::npos && hit + kHeader <= bytes.size() && hit < kChunk;
+         hit = bytes.find(kSignature, hit + 1)) {
+      const std::uint64_t at = chunk + hit, size = little_endian(bytes, hit + 8, 8);
+      if (size < kMinimumSize || size > file.size() - at) continue;  // not a collection
+      refuse_unless_tiled(at, size);
     }
   }
 }
