@@ -21,6 +21,7 @@
 
 #include "common/atomic_output.h"
 #include "common/errors.h"
+#include "common/h5_file.h"
 #include "common/progress.h"
 #include "common/version.h"
 #include "micro/app/run_steps.h"
@@ -74,15 +75,33 @@ QuasiStaticSettings quasi_static_settings(const Sweep& sweep) {
 }
 
 // The parameter text a case's run file stores: the quasi-static case's heads
-// it with what the file's entries do not say.
-std::string stored_parameters(const Sweep& sweep, const SweepCase& c, const std::string& text) {
+// it with what the file's entries do not say, its minimiser's tolerance
+// `relative_force` among them.
+std::string stored_parameters(const Sweep& sweep, const SweepCase& c, const std::string& text,
+                              double relative_force) {
   if (!c.quasi_static) return text;
-  const QuasiStaticSettings aqs = quasi_static_settings(sweep);
   return fmt::format(
       "# The quasi-static (AQS) case of a sweep: strain step {}, minimiser force tolerance {}; "
       "the stopping rule of subsection shear applies, its gamma dot tilde, the drag and the "
       "integrator do not.\n{}",
-      aqs.strain_step, aqs.relative_force, text);
+      sweep.plan.quasi_static_strain_step, relative_force, text);
+}
+
+// The force tolerance a finished run of case `c` must have been minimised to
+// for the sweep to keep it: the sweep's own, or, for a quasi-static run made
+// at a tighter one, that one — each of its steps then meets the sweep's
+// tolerance too (its stress differs by less than the looser tolerance allows),
+// so folders made before the default was loosened resume without recomputing.
+double kept_force_tolerance(const Sweep& sweep, const SweepCase& c) {
+  const double asked = sweep.plan.quasi_static_force_tolerance;
+  if (!c.quasi_static) return asked;
+  try {
+    const double made = H5File::open(c.file).root().group("shear").attribute_double(
+        "relative_force");
+    return made > 0.0 && made < asked ? made : asked;
+  } catch (const InputError&) {
+    return asked;  // no such record: require_same_computation says what is wrong
+  }
 }
 
 // Before any work: every packing's and case's parameters are built and
@@ -104,7 +123,8 @@ void check_cases_before_work(const Sweep& sweep) {
   for (const SweepCase& c : sweep.plan.cases) {
     const MicroParameters prm = checked_parameters_of(sweep, c);
     if (std::filesystem::exists(c.file))
-      require_same_computation(c.file, stored_parameters(sweep, c, prm.text));
+      require_same_computation(c.file,
+                               stored_parameters(sweep, c, prm.text, kept_force_tolerance(sweep, c)));
   }
 }
 
@@ -153,7 +173,8 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
   const auto follow = [&](double strain, double) {
     progress(std::min(1.0, strain / prm.protocol.max_strain));
   };
-  record.parameters = stored_parameters(sweep, c, record.parameters);
+  record.parameters =
+      stored_parameters(sweep, c, record.parameters, sweep.plan.quasi_static_force_tolerance);
   if (c.quasi_static) {
     shear_quasi_statically_and_analyse(record, prm, law, quasi_static_settings(sweep), follow,
                                        checkpoints);

@@ -33,15 +33,20 @@ namespace softglass::micro {
 /// Δγ by default (docs/sweeps.md: why, and what it costs) and at most.
 inline constexpr double kDefaultAqsStrainStep = 2e-4;
 inline constexpr double kMaxAqsStrainStep = 0.01;
-/// The loosest minimiser tolerance (largest residual / mean contact force).
+/// The minimiser's tolerance (largest residual / mean contact force) by
+/// default and at most. 1e-6 leaves the stress of a trajectory within 1.5e-6
+/// of the mean stress of a 1e-9 one until a plastic event falls into another
+/// minimum; over the paper sweep's ten quasi-static cases σ_y moves by
+/// −0.03 ± 0.72 %, at 1.6–1.8× fewer CG iterations (docs/sweeps.md).
+inline constexpr double kDefaultAqsForceTolerance = 1e-6;
 inline constexpr double kMaxAqsForceTolerance = 1e-3;
 
 struct AqsSettings {
-  double strain_step = kDefaultAqsStrainStep;  // Δγ
-  double strain = 2.0;                         // total strain sheared
-  double min_stationary_strain = 0.5;          // for the steady-state analysis
-  double relative_force = 1e-9;                // minimiser: max residual / mean contact force
-  int max_iterations = 2000;                   // Newton iterations per strain step
+  double strain_step = kDefaultAqsStrainStep;         // Δγ
+  double strain = 2.0;                                // total strain sheared
+  double min_stationary_strain = 0.5;                 // for the steady-state analysis
+  double relative_force = kDefaultAqsForceTolerance;  // max residual / mean contact force
+  int max_iterations = 2000;                          // Newton iterations per strain step
 
   void validate() const;
 };

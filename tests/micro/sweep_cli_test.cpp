@@ -177,6 +177,38 @@ TEST_F(MicroCli, SweepQuasiStaticCaseIsTheLowEndOfTheFlowCurve) {
   EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
 }
 
+// A finished quasi-static run minimised to a tighter force tolerance than the
+// sweep file now asks for meets the request and is kept; one made at a looser
+// tolerance is refused, naming the heading line that differs.
+TEST_F(MicroCli, SweepKeepsAQuasiStaticRunMadeAtATighterForceTolerance) {
+  const auto file_at = [&](const std::string& tolerance) {
+    return sweep_file("out",
+                      "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n"
+                      "  set packings = 1\n  set quasi-static = true\n"
+                      "  set quasi-static strain step = 1e-3\n"
+                      "  set quasi-static force tolerance = " +
+                          tolerance + "\n",
+                      0.5, 128);
+  };
+  parameters("tight.prm", file_at("1e-9"));
+  const Outcome made = micro("--threads 1 sweep tight.prm --case 0 --quiet");
+  ASSERT_EQ(made.code, 0) << made.err;
+  const fs::path record = work() / "out/runs/phi0.8000_aqs_seed1.h5";
+  const auto written = fs::last_write_time(record);
+
+  parameters("loose.prm", file_at("1e-6"));
+  const Outcome again = micro("--threads 1 sweep loose.prm --case 0 --quiet");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(fs::last_write_time(record), written) << "the tighter run is not recomputed";
+
+  parameters("tighter.prm", file_at("1e-10"));
+  const Outcome refused = micro("--threads 1 sweep tighter.prm --case 0 --quiet");
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("minimiser force tolerance 1e-09"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("minimiser force tolerance 1e-10"), std::string::npos) << refused.err;
+  EXPECT_EQ(fs::last_write_time(record), written);
+}
+
 // A preset fixes each run's length whatever the file's subsection shear says:
 // `paper` shears 5 strain and averages at least the last 3 (the paper's
 // protocol), and the case's record keeps the entries it ran with.
