@@ -667,9 +667,14 @@ H5File H5File::open_with(const std::filesystem::path& path, unsigned mode) {
   refuse_looping_global_heaps(path, quoted);
   // An update is read into memory and written back whole by close().
   const H5Id fapl = mode == H5F_ACC_RDWR ? in_memory_access() : H5Id();
-  return H5File(own<InputError>(
+  H5File file(own<InputError>(
       H5Fopen(path.c_str(), mode, mode == H5F_ACC_RDWR ? fapl.get() : H5P_DEFAULT),
       "cannot open HDF5 file " + quoted));
+  // A damaged root group is the file's fault, not the program's: said here,
+  // naming the file, before root() would fail anonymously.
+  own<InputError>(H5Gopen2(file.id_.get(), "/", H5P_DEFAULT),
+                  quoted + " is damaged: its root group cannot be opened");
+  return file;
 }
 
 H5Group H5File::root() const {

@@ -271,6 +271,35 @@ TEST_F(H5FileTest, AGlobalHeapThatDoesNotHoldTogetherIsRefused) {
   expect_error<InputError>([&] { H5File::open(file()); }, {"run.h5", "global heap"});
 }
 
+// A root group whose object header is damaged is the file's fault: refused
+// as bad input naming the file (it was a std::runtime_error from root(),
+// found by the run-file fuzz campaign at iteration 1177).
+TEST_F(H5FileTest, ADamagedRootGroupIsRefusedAsBadInput) {
+  create_and_close(file(), [&](H5Group root) { root.set_attribute("kind", std::string("text")); });
+  std::string bytes;
+  {
+    std::ifstream in(file(), std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // Superblock version 0 (HDF5 file format specification): the root group's
+  // symbol table entry at byte 56 holds its object header's address at +8.
+  // That header (version 1) has a 16-byte prefix, then messages, each headed
+  // by its type (2 bytes). The first is the symbol table message that makes
+  // it a group (type 0x11) or the continuation to the block holding it
+  // (0x10); made a null message (type 0), the root is no group any more.
+  ASSERT_EQ(bytes[8], 0) << "superblock version 0";
+  std::size_t header = 0;
+  for (int k = 7; k >= 0; --k) header = (header << 8) | static_cast<unsigned char>(bytes[64 + k]);
+  ASSERT_LT(header + 18, bytes.size());
+  ASSERT_EQ(bytes[header], 1) << "an object header of version 1";
+  const std::size_t message = header + 16;
+  ASSERT_TRUE(bytes[message] == 0x10 || bytes[message] == 0x11) << int(bytes[message]);
+  ASSERT_EQ(bytes[message + 1], 0);
+  bytes[message] = 0;
+  std::ofstream(file(), std::ios::binary) << bytes;
+  expect_error<InputError>([&] { H5File::open(file()).root(); }, {"run.h5"});
+}
+
 TEST_F(H5FileTest, CreatingInAMissingDirectoryFails) {
   expect_error<std::runtime_error>([&] { H5File::create(dir_ / "missing" / "run.h5"); },
                                    {"missing/run.h5"});
