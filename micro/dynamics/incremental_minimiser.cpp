@@ -25,35 +25,31 @@ double max_norm(const std::vector<Vec3>& x) {
   return std::sqrt(worst);
 }
 
+// The forcing term η_k of Newton iteration k > 0: CG stops at ‖r‖₂ ≤ η_k ‖g_k‖₂.
+// Eisenstat & Walker's choice 2 (SIAM J. Sci. Comput. 17 (1996) 16–32) with
+// γ = 0.9, α = 2, as Kelley uses it (Iterative Methods for Linear and Nonlinear
+// Equations, SIAM 1995, §6.3): η_k = γ (‖g_k‖₂/‖g_{k−1}‖₂)² asks each linear
+// solve to be as accurate as the last outer step has shown the Newton model to
+// be, quadratically so once it converges. (Their safeguard against a lucky drop
+// of ‖g‖, η_k ≥ γ η_{k−1}² while that is above 0.1, cannot act under the cap
+// kMaxForcing = 0.1.) Kelley's floor η_k ≥ ½ τ/‖g_k‖ stops the last solve short
+// of oversolving the exit test τ. That test is on the largest force, ‖g‖_∞ ≤ τ,
+// so the floor is taken in its norm: ½ τ/‖g_k‖_∞ asks for a residual of half the
+// tolerance measured in the current gradient's shape (with 1 instead of ½ more
+// steps ended just above τ and took one more Newton iteration: 4 % more of them
+// in AQS). The √(‖g_k‖/‖g_0‖) rule used before asked for up to 30 times the
+// accuracy the test needed in the last iteration, and converged only linearly,
+// by about a decade per iteration; measured in docs/integrators.md ("The
+// forcing term").
+double forcing_term(double gnorm, double last_gnorm, double largest_force, double tolerance) {
+  constexpr double gamma = 0.9;
+  const double ratio = gnorm / last_gnorm;
+  return std::min(kMaxForcing, std::max(gamma * ratio * ratio, 0.5 * tolerance / largest_force));
+}
+
 // Whether every component of u is +0, bit for bit: then Φ at u is Φ at the
 // origin, evaluated from the very same input (−0 is not taken for +0: it can
 // turn the sign of a zero gradient component).
-// The forcing term η_k of Newton iteration k > 0: CG stops at ‖r‖₂ ≤ η_k ‖g_k‖₂.
-// Eisenstat & Walker's choice 2 (SIAM J. Sci. Comput. 17 (1996) 16–32) with
-// γ = 0.9, α = 2, in the form of Kelley (Iterative Methods for Linear and
-// Nonlinear Equations, SIAM 1995, §6.3): η_k = γ (‖g_k‖₂/‖g_{k−1}‖₂)² asks each
-// linear solve to be as accurate as the last outer step has shown the Newton
-// model to be, quadratically so once it converges; their safeguard keeps η_k ≥
-// γ η_{k−1}² while that is above 0.1, lest one lucky drop of ‖g‖ make the next
-// solve needlessly exact. Kelley's floor η_k ≥ ½ τ/‖g_k‖ stops the last solve
-// short of oversolving the exit test τ. That test is on the largest force,
-// ‖g‖_∞ ≤ τ, so the floor is taken in its norm: ½ τ/‖g_k‖_∞ asks for a
-// residual of half the tolerance measured in the current gradient's shape
-// (c = 1 instead of ½ ended more steps just above τ and cost an extra Newton
-// iteration more often than it saved CG). The √(‖g_k‖/‖g_0‖) rule used before
-// asked for up to 30 times the accuracy the test needed in the last iteration,
-// and converged only linearly, by about a decade per iteration; measured in
-// docs/integrators.md ("Forcing term").
-double forcing_term(double gnorm, double last_gnorm, double last_eta, double largest_force,
-                    double tolerance) {
-  constexpr double gamma = 0.9;
-  const double ratio = gnorm / last_gnorm;
-  double eta = gamma * ratio * ratio;
-  if (const double safeguard = gamma * last_eta * last_eta; safeguard > 0.1)
-    eta = std::max(eta, safeguard);
-  return std::min(kMaxForcing, std::max(eta, 0.5 * tolerance / largest_force));
-}
-
 bool is_origin(const std::vector<Vec3>& u) {
   return std::all_of(u.begin(), u.end(), [](const Vec3& v) {
     return std::bit_cast<std::uint64_t>(v.x()) == 0 && std::bit_cast<std::uint64_t>(v.y()) == 0 &&
@@ -370,7 +366,7 @@ IncrementalResult IncrementalMinimiser::minimise(
     evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
   }
   if (energies) energies->assign(1, value.elastic + value.proximal + value.dissipation - phi_start);
-  double last_gnorm = 0.0, eta = kMaxForcing;  // ‖g‖₂ and η of the last iteration
+  double last_gnorm = 0.0;  // ‖g‖₂ at the last iteration
 
   for (int it = 0;; ++it) {
     const ContactField& field = system.forces();
@@ -394,7 +390,8 @@ IncrementalResult IncrementalMinimiser::minimise(
     // Inexact Newton direction (forcing term → 0 as the gradient falls).
     assemble(system, proximal, drag, h, tolerance);
     const double gnorm = std::sqrt(dot(gradient_, gradient_));
-    if (it > 0) eta = forcing_term(gnorm, last_gnorm, eta, result.residual, tolerance);
+    const double eta =
+        it == 0 ? kMaxForcing : forcing_term(gnorm, last_gnorm, result.residual, tolerance);
     last_gnorm = gnorm;
     // Levenberg–Marquardt damping μ: raised while CG meets negative curvature
     // (a plastic instability, or a contact's tangential softening), lowered
