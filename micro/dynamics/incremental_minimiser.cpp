@@ -35,12 +35,12 @@ double max_norm(const std::vector<Vec3>& x) {
 // kMaxForcing = 0.1.) Kelley's floor η_k ≥ ½ τ/‖g_k‖ stops the last solve short
 // of oversolving the exit test τ. That test is on the largest force, ‖g‖_∞ ≤ τ,
 // so the floor is taken in its norm: ½ τ/‖g_k‖_∞ asks for a residual of half the
-// tolerance measured in the current gradient's shape (with 1 instead of ½ more
-// steps ended just above τ and took one more Newton iteration: 4 % more of them
-// in AQS). The √(‖g_k‖/‖g_0‖) rule used before asked for up to 30 times the
-// accuracy the test needed in the last iteration, and converged only linearly,
-// by about a decade per iteration; measured in docs/integrators.md ("The
-// forcing term").
+// tolerance measured in the current gradient's shape. (With 1 instead of ½,
+// more steps ended just above τ and took one more Newton iteration: 4 % more
+// of them in AQS, with the old rule.) The √(‖g_k‖/‖g_0‖) rule used before
+// asked for up to 30 times the accuracy the test needed in the last iteration,
+// and converged only linearly, by about a decade per iteration; measured in
+// docs/integrators.md ("The forcing term").
 double forcing_term(double gnorm, double last_gnorm, double largest_force, double tolerance) {
   constexpr double gamma = 0.9;
   const double ratio = gnorm / last_gnorm;
