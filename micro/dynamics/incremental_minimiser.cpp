@@ -333,7 +333,8 @@ void IncrementalMinimiser::damped_newton_direction(std::span<const double> proxi
 
 IncrementalResult IncrementalMinimiser::minimise(
     ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag, double h,
-    std::vector<Vec3>& u, std::vector<double>* energies, int max_iterations) {
+    std::vector<Vec3>& u, std::vector<double>* energies, int max_iterations,
+    const Hopeless& hopeless) {
   if (max_iterations < 0) max_iterations = settings_.max_iterations;
   const std::size_t n = system.size();
   IncrementalResult result;
@@ -418,6 +419,10 @@ IncrementalResult IncrementalMinimiser::minimise(
     value = trial_value;
     if (energies)
       energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
+    if (hopeless && hopeless(u, t * max_norm(direction_))) {
+      result.abandoned = true;
+      break;
+    }
   }
   result.energy_change = value.elastic - start.elastic;
   result.max_displacement = max_norm(u);

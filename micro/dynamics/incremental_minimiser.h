@@ -45,6 +45,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -99,6 +100,9 @@ struct IncrementalResult {
   // used half of it: the system is back at the last accepted point x⁰ + u
   // (valid), and the caller rebuilds the list and goes on (or restarts).
   bool list_invalid = false;
+  // The caller's `hopeless` test stopped the solve after an iteration: the
+  // system is at the last accepted point x⁰ + u (valid), not converged.
+  bool abandoned = false;
   int iterations = 0;
   double residual = 0.0;          // max |∂Φ/∂u| at the end (units E* R²)
   double energy_change = 0.0;     // E(x⁰ + u) − E(x⁰)
@@ -117,10 +121,14 @@ class IncrementalMinimiser {
   /// step. On return the system is at x⁰ + u with its forces computed there
   /// (also when `list_invalid`). If `energies` is given, Φ after each iteration is
   /// appended (relative to Φ at the start). `max_iterations` ≥ 0 overrides the
-  /// settings' limit for this call.
+  /// settings' limit for this call. `hopeless(u, move)`, if given, is asked
+  /// after every accepted iteration with the iterate and the largest particle
+  /// move of that iteration; true stops the solve (`abandoned`).
+  using Hopeless = std::function<bool(const std::vector<Vec3>& u, double move)>;
   IncrementalResult minimise(ContactSystem& system, std::span<const double> proximal,
                              const FrozenDrag& drag, double h, std::vector<Vec3>& u,
-                             std::vector<double>* energies = nullptr, int max_iterations = -1);
+                             std::vector<double>* energies = nullptr, int max_iterations = -1,
+                             const Hopeless& hopeless = {});
 
   const IncrementalCounters& counters() const { return counters_; }
 
