@@ -32,12 +32,42 @@ bool is_origin(const std::vector<Vec3>& u) {
            std::bit_cast<std::uint64_t>(v.z()) == 0;
   });
 }
+
+// The frozen drag's block (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the
+// header), plus (b/h) I of the Stokes pair dashpots, for drag pair k with
+// sliding velocity w and relief θ. A free function called once, so that it is
+// inlined: returned from a call, the block went through the stack as scalars
+// and was reloaded as packets, stalling on the partial stores.
+Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Vec3& w, double relief,
+                           double h, double force_floor) {
+  const double a = drag.coefficient[k];
+  const double dashpot = drag.dashpot[k] / h;
+  Eigen::Matrix3d b;
+  if (a <= 0.0) {
+    b = dashpot * Eigen::Matrix3d::Identity();
+    return b;
+  }
+  const double speed = w.norm();
+  const double floor_speed = (force_floor / a) * (force_floor / a);
+  const FilmLaw law{a, drag.crossover[k]};
+  const double s = law.secant(std::max(speed, floor_speed)) / h;
+  // A film in its linear regime has the isotropic curvature s P: no relief.
+  const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w / speed) : Vec3::Zero();
+  const Vec3 relieved = relief * unit;
+  const Eigen::Matrix3d& projector = drag.projector[k];
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row)
+      b(row, col) =
+          (row == col ? dashpot : 0.0) + s * (projector(row, col) - relieved[row] * unit[col]);
+  return b;
+}
 }  // namespace
 
 void FrozenDrag::clear() {
   i.clear();
   j.clear();
   normal.clear();
+  projector.clear();
   coefficient.clear();
   crossover.clear();
   affine.clear();
@@ -54,6 +84,7 @@ void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const Eh
     out.i.push_back(c.i[k]);
     out.j.push_back(c.j[k]);
     out.normal.push_back(n);
+    out.projector.push_back(settings.film.projector(n));
     const double a = settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
                                                          c.force[k], c.deformation[k])
                                       : 0.0;
@@ -112,31 +143,41 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
                                     const FrozenDrag& drag, double h, double force_floor) {
   ++counters_.assemblies;
   const std::size_t n = system.size();
-  const ContactList& c = system.forces().contacts;
+  const ContactList& contacts = system.forces().contacts;
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   diagonal_.resize(n);
   for (std::size_t a = 0; a < n; ++a)
     diagonal_[a] = (proximal.empty() ? 0.0 : proximal[a]) * identity;
-  pair_i_.clear();
-  pair_j_.clear();
-  block_.clear();
-  // The blocks are written entry by entry, in the order of operations of the
-  // matrix expressions in the comments (so to the last bit): built as Eigen
-  // expressions, their 3×3 temporaries went through the stack in halves and
-  // whole packets, whose reloads stalled on the partial stores.
-  //
-  // Elastic contacts at the current point: K_c = k_n nnᵀ − (|f|/r)(I − nnᵀ); the
-  // preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
-  // Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
-  // p − q and |K_c| is p + q.
+  assemble_elastic(contacts);
+  add_drag(drag, h, force_floor);
+  // Block-Jacobi preconditioner; a particle without contacts or friction (a
+  // rattler in quasi-static shear) gets a tiny diagonal instead of none.
+  double scale = 0.0;
+  for (const auto& d : diagonal_) scale += d.trace();
+  diagonal_scale_ = scale / (3.0 * double(std::max<std::size_t>(n, 1)));
+  undamped_diagonal_ = diagonal_;
+  invert_diagonal();
+}
+
+// The blocks are written entry by entry, in the order of operations of the
+// matrix expressions in the comments (so to the last bit): built as Eigen
+// expressions, their 3×3 temporaries went through the stack in halves and
+// whole packets, whose reloads stalled on the partial stores.
+//
+// Elastic contacts at the current point: K_c = k_n nnᵀ − (|f|/r)(I − nnᵀ); the
+// preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
+// Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
+// p − q and |K_c| is p + q.
+void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
+  pair_i_.assign(c.i.begin(), c.i.end());
+  pair_j_.assign(c.j.begin(), c.j.end());
+  block_.resize(c.size());
   for (std::size_t k = 0; k < c.size(); ++k) {
     const double r = c.separation[k].norm();
     const Vec3 nk = c.separation[k] / r;
     const double stiffness = c.stiffness[k];
     const double tangential = c.force[k] / r;
-    pair_i_.push_back(c.i[k]);
-    pair_j_.push_back(c.j[k]);
-    Eigen::Matrix3d& block = block_.emplace_back();
+    Eigen::Matrix3d& block = block_[k];
     Eigen::Matrix3d& di = diagonal_[c.i[k]];
     Eigen::Matrix3d& dj = diagonal_[c.j[k]];
     for (int col = 0; col < 3; ++col)
@@ -149,36 +190,19 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
         dj(row, col) += p + q;
       }
   }
-  // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header), plus (b/h) I
-  // of the Stokes pair dashpots.
-  // Its pairs are mostly the elastic ones, listed in the same order (both come
-  // from the same neighbour list, particle by particle): a drag block is added
-  // to its pair's elastic block when there is one, halving the product's work.
-  // The search for it starts at the block after the last one matched, where
-  // the same order puts it, and falls back to the particle's first block.
+}
+
+// The drag's pairs are mostly the elastic ones, listed in the same order (both
+// come from the same neighbour list, particle by particle): a drag block is
+// added to its pair's elastic block when there is one, halving the product's
+// work. The search for it starts at the block after the last one matched,
+// where the same order puts it, and falls back to the particle's first block.
+void IncrementalMinimiser::add_drag(const FrozenDrag& drag, double h, double force_floor) {
   const std::size_t elastic_pairs = block_.size();
   std::size_t cursor = 0, next = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
-    const double a = drag.coefficient[k];
-    if (a <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-    Eigen::Matrix3d b;
-    const double dashpot = drag.dashpot[k] / h;
-    if (a > 0.0) {
-      const double speed = w_[k].norm();
-      const double floor_speed = (force_floor / a) * (force_floor / a);
-      const FilmLaw law{a, drag.crossover[k]};
-      const double s = law.secant(std::max(speed, floor_speed)) / h;
-      // A film in its linear regime has the isotropic curvature s P: no relief.
-      const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w_[k] / speed) : Vec3::Zero();
-      const Vec3 relieved = relief_[k] * unit;
-      const Eigen::Matrix3d projector = drag.film.projector(drag.normal[k]);
-      for (int col = 0; col < 3; ++col)
-        for (int row = 0; row < 3; ++row)
-          b(row, col) = (row == col ? dashpot : 0.0) +
-                        s * (projector(row, col) - relieved[row] * unit[col]);
-    } else {
-      b = dashpot * identity;
-    }
+    if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
+    const Eigen::Matrix3d b = drag_block(drag, k, w_[k], relief_[k], h, force_floor);
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
     const auto matches = [&](std::size_t m) {
@@ -200,13 +224,6 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
       block_.push_back(b);
     }
   }
-  // Block-Jacobi preconditioner; a particle without contacts or friction (a
-  // rattler in quasi-static shear) gets a tiny diagonal instead of none.
-  double scale = 0.0;
-  for (const auto& d : diagonal_) scale += d.trace();
-  diagonal_scale_ = scale / (3.0 * double(std::max<std::size_t>(n, 1)));
-  undamped_diagonal_ = diagonal_;
-  invert_diagonal();
 }
 
 void IncrementalMinimiser::invert_diagonal() {
@@ -216,16 +233,26 @@ void IncrementalMinimiser::invert_diagonal() {
     diagonal_[a] = (undamped_diagonal_[a] + (damping_ + floor) * identity).inverse();
 }
 
+// The loops run on raw pointers held in locals: Eigen stores its packets
+// through may-alias types, so with the vectors' members the compiler reloaded
+// every data pointer and the block count after each store to `out`.
 void IncrementalMinimiser::hessian_times(std::span<const double> proximal,
                                          const std::vector<Vec3>& in,
                                          std::vector<Vec3>& out) const {
   const std::size_t n = in.size();
+  const Vec3* x = in.data();
+  Vec3* y = out.data();
+  const double damping = damping_;
   for (std::size_t a = 0; a < n; ++a)
-    out[a] = ((proximal.empty() ? 0.0 : proximal[a]) + damping_) * in[a];
-  for (std::size_t k = 0; k < block_.size(); ++k) {
-    const Vec3 y = block_[k] * (in[pair_i_[k]] - in[pair_j_[k]]);
-    out[pair_i_[k]] += y;
-    out[pair_j_[k]] -= y;
+    y[a] = ((proximal.empty() ? 0.0 : proximal[a]) + damping) * x[a];
+  const Eigen::Matrix3d* block = block_.data();
+  const std::uint32_t* pair_i = pair_i_.data();
+  const std::uint32_t* pair_j = pair_j_.data();
+  const std::size_t pairs = block_.size();
+  for (std::size_t k = 0; k < pairs; ++k) {
+    const Vec3 f = block[k] * (x[pair_i[k]] - x[pair_j[k]]);
+    y[pair_i[k]] += f;
+    y[pair_j[k]] -= f;
   }
 }
 
@@ -244,8 +271,9 @@ int IncrementalMinimiser::newton_direction(std::span<const double> proximal, dou
       [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {
         hessian_times(proximal, in, out);
       },
-      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, translation_stiffness,
-      eta, limit, true, direction_, cg_);
+      // The inverted diagonal by a pointer copied in (see block_cg.h, two_level_precondition).
+      [inverse = diagonal_.data()](std::size_t a, const Vec3& v) -> Vec3 { return inverse[a] * v; },
+      translation_stiffness, eta, limit, true, direction_, cg_);
   negative_curvature_ = outcome.negative_curvature;
   return outcome.iterations;
 }
@@ -325,8 +353,8 @@ IncrementalResult IncrementalMinimiser::minimise(
   // Φ(0) for the energy change reported at the end. A zero guess is that very
   // point (AQS after a plastic event or a list rebuild): it is not evaluated twice.
   Value start{}, value{}, trial_value{};
-  std::vector<Vec3> zero(n, Vec3::Zero());
-  if (!evaluate_at(system, proximal, drag, h, zero, start, gradient_, w_)) {
+  origin_.assign(n, Vec3::Zero());
+  if (!evaluate_at(system, proximal, drag, h, origin_, start, gradient_, w_)) {
     result.list_invalid = true;
     return result;
   }

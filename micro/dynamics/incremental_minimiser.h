@@ -82,6 +82,9 @@ struct FrozenDrag {
   std::vector<Vec3> affine;         // w⁰_c = P_c (c d_y e_x), or 0
   std::vector<double> dashpot;      // b_c of the Stokes pair dashpots (stokes_friction.h), or 0
   std::vector<double> shift;        // c d_y: the pair's affine relative velocity is c d_y e_x
+  // P_c as a matrix, for the Hessian model: built once per step, not once per
+  // Newton iteration.
+  std::vector<Eigen::Matrix3d> projector;
   void clear();
   std::size_t size() const { return i.size(); }
 };
@@ -136,6 +139,8 @@ class IncrementalMinimiser {
   /// The Hessian model's pair blocks and the inverted diagonal blocks.
   void assemble(const ContactSystem& system, std::span<const double> proximal,
                 const FrozenDrag& drag, double h, double force_floor);
+  void assemble_elastic(const ContactList& contacts);
+  void add_drag(const FrozenDrag& drag, double h, double force_floor);
   void hessian_times(std::span<const double> proximal, const std::vector<Vec3>& in,
                      std::vector<Vec3>& out) const;
   /// Leaves the direction in direction_; returns the CG iterations.
@@ -152,6 +157,7 @@ class IncrementalMinimiser {
   std::vector<Vec3> base_;
   ContactSystem::Tracking base_tracking_;
   double base_strain_ = 0.0;
+  std::vector<Vec3> origin_;  // u = 0, kept to spare an allocation per solve
   std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_, w_, w_trial_;
   std::vector<double> relief_;  // θ_c
   std::vector<std::uint32_t> pair_i_, pair_j_;
