@@ -34,12 +34,13 @@ bool is_origin(const std::vector<Vec3>& u) {
 }
 
 // The frozen drag's block (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the
-// header), plus (b/h) I of the Stokes pair dashpots, for drag pair k with
-// sliding velocity w and relief θ. A free function called once, so that it is
-// inlined: returned from a call, the block went through the stack as scalars
-// and was reloaded as packets, stalling on the partial stores.
-Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Vec3& w, double relief,
-                           double h, double force_floor) {
+// header), plus (b/h) I of the Stokes pair dashpots, for drag pair k at the
+// point `sliding` was evaluated at, with relief θ. A free function called
+// once, so that it is inlined: returned from a call, the block went through
+// the stack as scalars and was reloaded as packets, stalling on the partial
+// stores.
+Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Sliding& sliding,
+                           double relief, double h, double force_floor) {
   const double a = drag.coefficient[k];
   const double dashpot = drag.dashpot[k] / h;
   Eigen::Matrix3d b;
@@ -47,10 +48,12 @@ Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Vec3& w,
     b = dashpot * Eigen::Matrix3d::Identity();
     return b;
   }
-  const double speed = w.norm();
+  const Vec3& w = sliding.w[k];
+  const double speed = sliding.speed[k];
   const double floor_speed = (force_floor / a) * (force_floor / a);
   const FilmLaw law{a, drag.crossover[k]};
-  const double s = law.secant(std::max(speed, floor_speed)) / h;
+  // The secant at max(|w|, floor): the one evaluate_at computed, unless floored.
+  const double s = (speed < floor_speed ? law.secant(floor_speed) : sliding.secant[k]) / h;
   // A film in its linear regime has the isotropic curvature s P: no relief.
   const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w / speed) : Vec3::Zero();
   const Vec3 relieved = relief * unit;
@@ -100,7 +103,7 @@ void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const Eh
 bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const double> proximal,
                                        const FrozenDrag& drag, double h, const std::vector<Vec3>& u,
                                        Value& value, std::vector<Vec3>& gradient,
-                                       std::vector<Vec3>& w) {
+                                       Sliding& sliding) {
   system.restore_positions(base_, base_strain_);
   system.restore_tracking(base_tracking_);
   system.move(1.0, u);
@@ -120,14 +123,20 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
       value.proximal += 0.5 * proximal[a] * u[a].squaredNorm();
     }
   }
+  std::vector<Vec3>& w = sliding.w;
   w.resize(drag.size());
+  sliding.speed.resize(drag.size());
+  sliding.secant.resize(drag.size());
   for (std::size_t k = 0; k < drag.size(); ++k) {
     const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
     w[k] = drag.film.project(drag.normal[k], du) + drag.affine[k];
     const double speed = w[k].norm();
     const FilmLaw law{drag.coefficient[k], drag.crossover[k]};
     value.dissipation += h * law.potential(speed);
-    Vec3 f = w[k] * law.secant(speed);                // a |w|^{1/2} ŵ on the EHD branch (film.h)
+    const double secant = law.secant(speed);
+    sliding.speed[k] = speed;
+    sliding.secant[k] = secant;
+    Vec3 f = w[k] * secant;                           // a |w|^{1/2} ŵ on the EHD branch (film.h)
     if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + c d_y e_x
       const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());
       value.dissipation += h * 0.5 * b * q0.squaredNorm();
@@ -202,7 +211,7 @@ void IncrementalMinimiser::add_drag(const FrozenDrag& drag, double h, double for
   std::size_t cursor = 0, next = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
     if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-    const Eigen::Matrix3d b = drag_block(drag, k, w_[k], relief_[k], h, force_floor);
+    const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
     const auto matches = [&](std::size_t m) {
@@ -298,9 +307,10 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
   for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
     if (halvings > 0) ++counters_.backtracks;
     for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
-    if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
+    if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_,
+                     sliding_trial_)) {
       if (!rebuild_pays) continue;
-      evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);  // back to u
+      evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);  // back to u
       return LineSearch::list_invalid;
     }
     const double change = (trial_value.elastic - value.elastic) +
@@ -314,7 +324,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
         (std::abs(change) <= rounding && dot(gradient_trial_, gradient_trial_) < gnorm2))
       return LineSearch::accepted;
   }
-  evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);  // leave the system at u
+  evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);  // leave the system at u
   return LineSearch::failed;
 }
 
@@ -354,20 +364,20 @@ IncrementalResult IncrementalMinimiser::minimise(
   // point (AQS after a plastic event or a list rebuild): it is not evaluated twice.
   Value start{}, value{}, trial_value{};
   origin_.assign(n, Vec3::Zero());
-  if (!evaluate_at(system, proximal, drag, h, origin_, start, gradient_, w_)) {
+  if (!evaluate_at(system, proximal, drag, h, origin_, start, gradient_, sliding_)) {
     result.list_invalid = true;
     return result;
   }
   const double phi_start = start.elastic + start.proximal + start.dissipation;
   value = start;
-  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
+  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_)) {
     result.list_invalid = true;
     return result;
   }
   // A guess worse than no move at all is dropped.
   if (value.elastic + value.proximal + value.dissipation > phi_start) {
     std::fill(u.begin(), u.end(), Vec3::Zero());
-    evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
+    evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);
   }
   if (energies) energies->assign(1, value.elastic + value.proximal + value.dissipation - phi_start);
   double first_gradient = 1.0;
@@ -411,12 +421,12 @@ IncrementalResult IncrementalMinimiser::minimise(
     if (searched == LineSearch::failed) break;
     // Majoriser for contacts whose |w| shrinks fast (see the header).
     for (std::size_t k = 0; k < drag.size(); ++k) {
-      relief_[k] = w_trial_[k].norm() >= 0.9 * w_[k].norm() ? 0.5 : 0.0;
+      relief_[k] = sliding_trial_.speed[k] >= 0.9 * sliding_.speed[k] ? 0.5 : 0.0;
     }
     if (t == 1.0) damping_ = damping_ < 1e-8 * diagonal_scale_ ? 0.0 : 0.1 * damping_;
     u.swap(trial_);
     gradient_.swap(gradient_trial_);
-    w_.swap(w_trial_);
+    std::swap(sliding_, sliding_trial_);
     value = trial_value;
     if (energies)
       energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);

@@ -89,6 +89,14 @@ struct FrozenDrag {
   std::size_t size() const { return i.size(); }
 };
 
+/// The frozen drag's films at a point u: their sliding velocities w_c, speeds
+/// |w_c| and secants (FilmLaw::secant at |w_c|), computed with Φ's gradient and
+/// read again by the Hessian model and the relief test.
+struct Sliding {
+  std::vector<Vec3> w;
+  std::vector<double> speed, secant;
+};
+
 /// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} (film.h), w⁰_c at shear rate c (`rate`, 1 in
 /// steady shear) and the Stokes pair dashpots b_c (from the particles' Stokes
 /// frictions ζ) of every contact of `contacts`.
@@ -135,7 +143,7 @@ class IncrementalMinimiser {
   /// Moves the system to x⁰ + u and evaluates forces, Φ's parts and ∇Φ.
   bool evaluate_at(ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag,
                    double h, const std::vector<Vec3>& u, Value& value, std::vector<Vec3>& gradient,
-                   std::vector<Vec3>& w);
+                   Sliding& sliding);
   /// The Hessian model's pair blocks and the inverted diagonal blocks.
   void assemble(const ContactSystem& system, std::span<const double> proximal,
                 const FrozenDrag& drag, double h, double force_floor);
@@ -158,7 +166,8 @@ class IncrementalMinimiser {
   ContactSystem::Tracking base_tracking_;
   double base_strain_ = 0.0;
   std::vector<Vec3> origin_;  // u = 0, kept to spare an allocation per solve
-  std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_, w_, w_trial_;
+  std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_;
+  Sliding sliding_, sliding_trial_;
   std::vector<double> relief_;  // θ_c
   std::vector<std::uint32_t> pair_i_, pair_j_;
   std::vector<Eigen::Matrix3d> block_, diagonal_, undamped_diagonal_;
