@@ -46,6 +46,7 @@ int prepare_kernel(const ForceKernelInput& in, ContactField& out) {
   for (auto& k : scratch.stiffness) k.assign(n, 0.0);
   scratch.contacts.resize(threads);
   for (auto& c : scratch.contacts) c.clear();
+  scratch.touching.resize(threads);
   return threads;
 }
 
@@ -75,19 +76,24 @@ void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& 
   out.virial << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
 
   out.contacts.clear();
-  if (in.request.contacts) {
-    const auto cat = [](auto& to, const auto& from) {
-      to.insert(to.end(), from.begin(), from.end());
-    };
-    for (const ContactList& part : out.scratch.contacts) {
-      cat(out.contacts.i, part.i);
-      cat(out.contacts.j, part.j);
-      cat(out.contacts.separation, part.separation);
-      cat(out.contacts.deformation, part.deformation);
-      cat(out.contacts.contact_radius, part.contact_radius);
-      cat(out.contacts.force, part.force);
-      cat(out.contacts.stiffness, part.stiffness);
-    }
+  if (!in.request.contacts) return;
+  // One thread: its list is the whole list, handed over (the old one goes back
+  // to the workspace, to be cleared and refilled with its capacity kept).
+  if (out.scratch.contacts.size() == 1) {
+    std::swap(out.contacts, out.scratch.contacts[0]);
+    return;
+  }
+  const auto cat = [](auto& to, const auto& from) {
+    to.insert(to.end(), from.begin(), from.end());
+  };
+  for (const ContactList& part : out.scratch.contacts) {
+    cat(out.contacts.i, part.i);
+    cat(out.contacts.j, part.j);
+    cat(out.contacts.separation, part.separation);
+    cat(out.contacts.deformation, part.deformation);
+    cat(out.contacts.contact_radius, part.contact_radius);
+    cat(out.contacts.force, part.force);
+    cat(out.contacts.stiffness, part.stiffness);
   }
 }
 

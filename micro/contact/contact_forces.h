@@ -63,13 +63,22 @@ struct ContactField {
 
   std::size_t memory_bytes() const;
 
+  /// One particle's list pairs that touch, compacted by the kernel before the
+  /// contact loop: position in the particle's list, separation d and |d|².
+  struct Touching {
+    std::vector<std::uint32_t> position;
+    std::vector<Vec3> separation;
+    std::vector<double> distance2;
+  };
   /// Workspace of the kernel (contact_kernel.h), kept to avoid reallocation:
   /// the force and stiffness accumulators of threads 1, 2, … (thread 0 writes
-  /// into `force` and `stiffness_sum` directly) and every thread's contacts.
+  /// into `force` and `stiffness_sum` directly), every thread's contacts and
+  /// touching pairs.
   struct Scratch {
     std::vector<std::vector<Vec3>> forces;
     std::vector<std::vector<double>> stiffness;
     std::vector<ContactList> contacts;
+    std::vector<Touching> touching;
   } scratch;
 };
 

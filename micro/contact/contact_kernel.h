@@ -55,9 +55,10 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
 
     // Contacts of particle i, compacted without a branch on the overlap test
     // (whose outcome is unpredictable: a quarter of the list pairs do not touch).
-    std::vector<std::uint32_t> cp;  // position in i's list
-    std::vector<Vec3> cd;
-    std::vector<double> cr2;
+    ContactField::Touching& touching = out.scratch.touching[t];
+    std::vector<std::uint32_t>& cp = touching.position;
+    std::vector<Vec3>& cd = touching.separation;
+    std::vector<double>& cr2 = touching.distance2;
 
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {

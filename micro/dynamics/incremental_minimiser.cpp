@@ -56,12 +56,45 @@ bool is_origin(const std::vector<Vec3>& u) {
            std::bit_cast<std::uint64_t>(v.z()) == 0;
   });
 }
+
+// The frozen drag's block (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the
+// header), plus (b/h) I of the Stokes pair dashpots, for drag pair k at the
+// point `sliding` was evaluated at, with relief θ. A free function called
+// once, so that it is inlined: returned from a call, the block went through
+// the stack as scalars and was reloaded as packets, stalling on the partial
+// stores.
+Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Sliding& sliding,
+                           double relief, double h, double force_floor) {
+  const double a = drag.coefficient[k];
+  const double dashpot = drag.dashpot[k] / h;
+  Eigen::Matrix3d b;
+  if (a <= 0.0) {
+    b = dashpot * Eigen::Matrix3d::Identity();
+    return b;
+  }
+  const Vec3& w = sliding.w[k];
+  const double speed = sliding.speed[k];
+  const double floor_speed = (force_floor / a) * (force_floor / a);
+  const FilmLaw law{a, drag.crossover[k]};
+  // The secant at max(|w|, floor): the one evaluate_at computed, unless floored.
+  const double s = (speed < floor_speed ? law.secant(floor_speed) : sliding.secant[k]) / h;
+  // A film in its linear regime has the isotropic curvature s P: no relief.
+  const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w / speed) : Vec3::Zero();
+  const Vec3 relieved = relief * unit;
+  const Eigen::Matrix3d& projector = drag.projector[k];
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row)
+      b(row, col) =
+          (row == col ? dashpot : 0.0) + s * (projector(row, col) - relieved[row] * unit[col]);
+  return b;
+}
 }  // namespace
 
 void FrozenDrag::clear() {
   i.clear();
   j.clear();
   normal.clear();
+  projector.clear();
   coefficient.clear();
   crossover.clear();
   affine.clear();
@@ -78,6 +111,7 @@ void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const Eh
     out.i.push_back(c.i[k]);
     out.j.push_back(c.j[k]);
     out.normal.push_back(n);
+    out.projector.push_back(settings.film.projector(n));
     const double a = settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
                                                          c.force[k], c.deformation[k])
                                       : 0.0;
@@ -93,7 +127,7 @@ void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const Eh
 bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const double> proximal,
                                        const FrozenDrag& drag, double h, const std::vector<Vec3>& u,
                                        Value& value, std::vector<Vec3>& gradient,
-                                       std::vector<Vec3>& w) {
+                                       Sliding& sliding) {
   system.restore_positions(base_, base_strain_);
   system.restore_tracking(base_tracking_);
   system.move(1.0, u);
@@ -113,14 +147,20 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
       value.proximal += 0.5 * proximal[a] * u[a].squaredNorm();
     }
   }
+  std::vector<Vec3>& w = sliding.w;
   w.resize(drag.size());
+  sliding.speed.resize(drag.size());
+  sliding.secant.resize(drag.size());
   for (std::size_t k = 0; k < drag.size(); ++k) {
     const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
     w[k] = drag.film.project(drag.normal[k], du) + drag.affine[k];
     const double speed = w[k].norm();
     const FilmLaw law{drag.coefficient[k], drag.crossover[k]};
     value.dissipation += h * law.potential(speed);
-    Vec3 f = w[k] * law.secant(speed);                // a |w|^{1/2} ŵ on the EHD branch (film.h)
+    const double secant = law.secant(speed);
+    sliding.speed[k] = speed;
+    sliding.secant[k] = secant;
+    Vec3 f = w[k] * secant;                           // a |w|^{1/2} ŵ on the EHD branch (film.h)
     if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + c d_y e_x
       const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());
       value.dissipation += h * 0.5 * b * q0.squaredNorm();
@@ -136,31 +176,41 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
                                     const FrozenDrag& drag, double h, double force_floor) {
   ++counters_.assemblies;
   const std::size_t n = system.size();
-  const ContactList& c = system.forces().contacts;
+  const ContactList& contacts = system.forces().contacts;
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   diagonal_.resize(n);
   for (std::size_t a = 0; a < n; ++a)
     diagonal_[a] = (proximal.empty() ? 0.0 : proximal[a]) * identity;
-  pair_i_.clear();
-  pair_j_.clear();
-  block_.clear();
-  // The blocks are written entry by entry, in the order of operations of the
-  // matrix expressions in the comments (so to the last bit): built as Eigen
-  // expressions, their 3×3 temporaries went through the stack in halves and
-  // whole packets, whose reloads stalled on the partial stores.
-  //
-  // Elastic contacts at the current point: K_c = k_n nnᵀ − (|f|/r)(I − nnᵀ); the
-  // preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
-  // Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
-  // p − q and |K_c| is p + q.
+  assemble_elastic(contacts);
+  add_drag(drag, h, force_floor);
+  // Block-Jacobi preconditioner; a particle without contacts or friction (a
+  // rattler in quasi-static shear) gets a tiny diagonal instead of none.
+  double scale = 0.0;
+  for (const auto& d : diagonal_) scale += d.trace();
+  diagonal_scale_ = scale / (3.0 * double(std::max<std::size_t>(n, 1)));
+  undamped_diagonal_ = diagonal_;
+  invert_diagonal();
+}
+
+// The blocks are written entry by entry, in the order of operations of the
+// matrix expressions in the comments (so to the last bit): built as Eigen
+// expressions, their 3×3 temporaries went through the stack in halves and
+// whole packets, whose reloads stalled on the partial stores.
+//
+// Elastic contacts at the current point: K_c = k_n nnᵀ − (|f|/r)(I − nnᵀ); the
+// preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
+// Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
+// p − q and |K_c| is p + q.
+void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
+  pair_i_.assign(c.i.begin(), c.i.end());
+  pair_j_.assign(c.j.begin(), c.j.end());
+  block_.resize(c.size());
   for (std::size_t k = 0; k < c.size(); ++k) {
     const double r = c.separation[k].norm();
     const Vec3 nk = c.separation[k] / r;
     const double stiffness = c.stiffness[k];
     const double tangential = c.force[k] / r;
-    pair_i_.push_back(c.i[k]);
-    pair_j_.push_back(c.j[k]);
-    Eigen::Matrix3d& block = block_.emplace_back();
+    Eigen::Matrix3d& block = block_[k];
     Eigen::Matrix3d& di = diagonal_[c.i[k]];
     Eigen::Matrix3d& dj = diagonal_[c.j[k]];
     for (int col = 0; col < 3; ++col)
@@ -173,36 +223,19 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
         dj(row, col) += p + q;
       }
   }
-  // Frozen drag: (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the header), plus (b/h) I
-  // of the Stokes pair dashpots.
-  // Its pairs are mostly the elastic ones, listed in the same order (both come
-  // from the same neighbour list, particle by particle): a drag block is added
-  // to its pair's elastic block when there is one, halving the product's work.
-  // The search for it starts at the block after the last one matched, where
-  // the same order puts it, and falls back to the particle's first block.
+}
+
+// The drag's pairs are mostly the elastic ones, listed in the same order (both
+// come from the same neighbour list, particle by particle): a drag block is
+// added to its pair's elastic block when there is one, halving the product's
+// work. The search for it starts at the block after the last one matched,
+// where the same order puts it, and falls back to the particle's first block.
+void IncrementalMinimiser::add_drag(const FrozenDrag& drag, double h, double force_floor) {
   const std::size_t elastic_pairs = block_.size();
   std::size_t cursor = 0, next = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
-    const double a = drag.coefficient[k];
-    if (a <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-    Eigen::Matrix3d b;
-    const double dashpot = drag.dashpot[k] / h;
-    if (a > 0.0) {
-      const double speed = w_[k].norm();
-      const double floor_speed = (force_floor / a) * (force_floor / a);
-      const FilmLaw law{a, drag.crossover[k]};
-      const double s = law.secant(std::max(speed, floor_speed)) / h;
-      // A film in its linear regime has the isotropic curvature s P: no relief.
-      const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w_[k] / speed) : Vec3::Zero();
-      const Vec3 relieved = relief_[k] * unit;
-      const Eigen::Matrix3d projector = drag.film.projector(drag.normal[k]);
-      for (int col = 0; col < 3; ++col)
-        for (int row = 0; row < 3; ++row)
-          b(row, col) = (row == col ? dashpot : 0.0) +
-                        s * (projector(row, col) - relieved[row] * unit[col]);
-    } else {
-      b = dashpot * identity;
-    }
+    if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
+    const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
     const auto matches = [&](std::size_t m) {
@@ -224,13 +257,6 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
       block_.push_back(b);
     }
   }
-  // Block-Jacobi preconditioner; a particle without contacts or friction (a
-  // rattler in quasi-static shear) gets a tiny diagonal instead of none.
-  double scale = 0.0;
-  for (const auto& d : diagonal_) scale += d.trace();
-  diagonal_scale_ = scale / (3.0 * double(std::max<std::size_t>(n, 1)));
-  undamped_diagonal_ = diagonal_;
-  invert_diagonal();
 }
 
 void IncrementalMinimiser::invert_diagonal() {
@@ -240,16 +266,26 @@ void IncrementalMinimiser::invert_diagonal() {
     diagonal_[a] = (undamped_diagonal_[a] + (damping_ + floor) * identity).inverse();
 }
 
+// The loops run on raw pointers held in locals: Eigen stores its packets
+// through may-alias types, so with the vectors' members the compiler reloaded
+// every data pointer and the block count after each store to `out`.
 void IncrementalMinimiser::hessian_times(std::span<const double> proximal,
                                          const std::vector<Vec3>& in,
                                          std::vector<Vec3>& out) const {
   const std::size_t n = in.size();
+  const Vec3* x = in.data();
+  Vec3* y = out.data();
+  const double damping = damping_;
   for (std::size_t a = 0; a < n; ++a)
-    out[a] = ((proximal.empty() ? 0.0 : proximal[a]) + damping_) * in[a];
-  for (std::size_t k = 0; k < block_.size(); ++k) {
-    const Vec3 y = block_[k] * (in[pair_i_[k]] - in[pair_j_[k]]);
-    out[pair_i_[k]] += y;
-    out[pair_j_[k]] -= y;
+    y[a] = ((proximal.empty() ? 0.0 : proximal[a]) + damping) * x[a];
+  const Eigen::Matrix3d* block = block_.data();
+  const std::uint32_t* pair_i = pair_i_.data();
+  const std::uint32_t* pair_j = pair_j_.data();
+  const std::size_t pairs = block_.size();
+  for (std::size_t k = 0; k < pairs; ++k) {
+    const Vec3 f = block[k] * (x[pair_i[k]] - x[pair_j[k]]);
+    y[pair_i[k]] += f;
+    y[pair_j[k]] -= f;
   }
 }
 
@@ -268,8 +304,9 @@ int IncrementalMinimiser::newton_direction(std::span<const double> proximal, dou
       [&](const std::vector<Vec3>& in, std::vector<Vec3>& out) {
         hessian_times(proximal, in, out);
       },
-      [&](std::size_t a, const Vec3& v) -> Vec3 { return diagonal_[a] * v; }, translation_stiffness,
-      eta, limit, true, direction_, cg_);
+      // The inverted diagonal by a pointer copied in (see block_cg.h, two_level_precondition).
+      [inverse = diagonal_.data()](std::size_t a, const Vec3& v) -> Vec3 { return inverse[a] * v; },
+      translation_stiffness, eta, limit, true, direction_, cg_);
   negative_curvature_ = outcome.negative_curvature;
   return outcome.iterations;
 }
@@ -294,9 +331,10 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
   for (int halvings = 0; halvings < kMaxHalvings; ++halvings, t *= 0.5) {
     if (halvings > 0) ++counters_.backtracks;
     for (std::size_t a = 0; a < n; ++a) trial_[a] = u[a] + t * direction_[a];
-    if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_, w_trial_)) {
+    if (!evaluate_at(system, proximal, drag, h, trial_, trial_value, gradient_trial_,
+                     sliding_trial_)) {
       if (!rebuild_pays) continue;
-      evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);  // back to u
+      evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);  // back to u
       return LineSearch::list_invalid;
     }
     const double change = (trial_value.elastic - value.elastic) +
@@ -310,7 +348,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
         (std::abs(change) <= rounding && dot(gradient_trial_, gradient_trial_) < gnorm2))
       return LineSearch::accepted;
   }
-  evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);  // leave the system at u
+  evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);  // leave the system at u
   return LineSearch::failed;
 }
 
@@ -350,21 +388,21 @@ IncrementalResult IncrementalMinimiser::minimise(
   // Φ(0) for the energy change reported at the end. A zero guess is that very
   // point (AQS after a plastic event or a list rebuild): it is not evaluated twice.
   Value start{}, value{}, trial_value{};
-  std::vector<Vec3> zero(n, Vec3::Zero());
-  if (!evaluate_at(system, proximal, drag, h, zero, start, gradient_, w_)) {
+  origin_.assign(n, Vec3::Zero());
+  if (!evaluate_at(system, proximal, drag, h, origin_, start, gradient_, sliding_)) {
     result.list_invalid = true;
     return result;
   }
   const double phi_start = start.elastic + start.proximal + start.dissipation;
   value = start;
-  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, w_)) {
+  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_)) {
     result.list_invalid = true;
     return result;
   }
   // A guess worse than no move at all is dropped.
   if (value.elastic + value.proximal + value.dissipation > phi_start) {
     std::fill(u.begin(), u.end(), Vec3::Zero());
-    evaluate_at(system, proximal, drag, h, u, value, gradient_, w_);
+    evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);
   }
   if (energies) energies->assign(1, value.elastic + value.proximal + value.dissipation - phi_start);
   double last_gnorm = 0.0;  // ‖g‖₂ at the last iteration
@@ -410,12 +448,12 @@ IncrementalResult IncrementalMinimiser::minimise(
     if (searched == LineSearch::failed) break;
     // Majoriser for contacts whose |w| shrinks fast (see the header).
     for (std::size_t k = 0; k < drag.size(); ++k) {
-      relief_[k] = w_trial_[k].norm() >= 0.9 * w_[k].norm() ? 0.5 : 0.0;
+      relief_[k] = sliding_trial_.speed[k] >= 0.9 * sliding_.speed[k] ? 0.5 : 0.0;
     }
     if (t == 1.0) damping_ = damping_ < 1e-8 * diagonal_scale_ ? 0.0 : 0.1 * damping_;
     u.swap(trial_);
     gradient_.swap(gradient_trial_);
-    w_.swap(w_trial_);
+    std::swap(sliding_, sliding_trial_);
     value = trial_value;
     if (energies)
       energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);

@@ -84,8 +84,19 @@ struct FrozenDrag {
   std::vector<Vec3> affine;         // w⁰_c = P_c (c d_y e_x), or 0
   std::vector<double> dashpot;      // b_c of the Stokes pair dashpots (stokes_friction.h), or 0
   std::vector<double> shift;        // c d_y: the pair's affine relative velocity is c d_y e_x
+  // P_c as a matrix, for the Hessian model: built once per step, not once per
+  // Newton iteration.
+  std::vector<Eigen::Matrix3d> projector;
   void clear();
   std::size_t size() const { return i.size(); }
+};
+
+/// The frozen drag's films at a point u: their sliding velocities w_c, speeds
+/// |w_c| and secants (FilmLaw::secant at |w_c|), computed with Φ's gradient and
+/// read again by the Hessian model and the relief test.
+struct Sliding {
+  std::vector<Vec3> w;
+  std::vector<double> speed, secant;
 };
 
 /// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} (film.h), w⁰_c at shear rate c (`rate`, 1 in
@@ -141,10 +152,12 @@ class IncrementalMinimiser {
   /// Moves the system to x⁰ + u and evaluates forces, Φ's parts and ∇Φ.
   bool evaluate_at(ContactSystem& system, std::span<const double> proximal, const FrozenDrag& drag,
                    double h, const std::vector<Vec3>& u, Value& value, std::vector<Vec3>& gradient,
-                   std::vector<Vec3>& w);
+                   Sliding& sliding);
   /// The Hessian model's pair blocks and the inverted diagonal blocks.
   void assemble(const ContactSystem& system, std::span<const double> proximal,
                 const FrozenDrag& drag, double h, double force_floor);
+  void assemble_elastic(const ContactList& contacts);
+  void add_drag(const FrozenDrag& drag, double h, double force_floor);
   void hessian_times(std::span<const double> proximal, const std::vector<Vec3>& in,
                      std::vector<Vec3>& out) const;
   /// Leaves the direction in direction_; returns the CG iterations.
@@ -161,7 +174,9 @@ class IncrementalMinimiser {
   std::vector<Vec3> base_;
   ContactSystem::Tracking base_tracking_;
   double base_strain_ = 0.0;
-  std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_, w_, w_trial_;
+  std::vector<Vec3> origin_;  // u = 0, kept to spare an allocation per solve
+  std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_;
+  Sliding sliding_, sliding_trial_;
   std::vector<double> relief_;  // θ_c
   std::vector<std::uint32_t> pair_i_, pair_j_;
   std::vector<Eigen::Matrix3d> block_, diagonal_, undamped_diagonal_;

@@ -52,18 +52,36 @@ struct CgOutcome {
 
 /// z = D⁻¹ r (`precondition(a, v)` per particle) plus, when
 /// `translation_stiffness` c > 0, the coarse correction (Σ_α r_α)/c on every
-/// particle.
+/// particle; returns r·z. The dot product is summed in the pass that finishes
+/// z, particle by particle as `dot` would: one pass over the vectors fewer, the
+/// same sum to the last bit.
+///
+/// The loops here and in solve_newton_system run on raw pointers held in
+/// locals: Eigen stores its packets through may-alias types, so with the
+/// vectors themselves the compiler reloaded their data pointers after every
+/// store.
 template <class Precondition>
-void two_level_precondition(Precondition& precondition, double translation_stiffness,
-                            const std::vector<Vec3>& r, std::vector<Vec3>& z) {
+double two_level_precondition(Precondition& precondition, double translation_stiffness,
+                              const std::vector<Vec3>& residual,
+                              std::vector<Vec3>& preconditioned) {
+  const std::size_t n = residual.size();
+  const Vec3* r = residual.data();
+  Vec3* z = preconditioned.data();
   Vec3 total = Vec3::Zero();
-  for (std::size_t a = 0; a < r.size(); ++a) {
+  double rz = 0.0;
+  const bool coarse_correction = translation_stiffness > 0.0;
+  for (std::size_t a = 0; a < n; ++a) {
     z[a] = precondition(a, r[a]);
     total += r[a];
+    if (!coarse_correction) rz += r[a].dot(z[a]);
   }
-  if (translation_stiffness <= 0.0) return;
+  if (!coarse_correction) return rz;
   const Vec3 coarse = total / translation_stiffness;
-  for (Vec3& za : z) za += coarse;
+  for (std::size_t a = 0; a < n; ++a) {
+    z[a] += coarse;
+    rz += r[a].dot(z[a]);
+  }
+  return rz;
 }
 
 /// x ← the CG approximation of −H⁻¹ g. `hessian_times(in, out)` sets out = H in;
@@ -83,10 +101,9 @@ CgOutcome solve_newton_system(const std::vector<Vec3>& gradient, HessianTimes&& 
     x[a].setZero();
     w.r[a] = -gradient[a];
   }
-  two_level_precondition(precondition, translation_stiffness, w.r, w.z);
+  double rz = two_level_precondition(precondition, translation_stiffness, w.r, w.z);
   w.p = w.z;
   const double target2 = eta * eta * dot(gradient, gradient);
-  double rz = dot(w.r, w.z);
   CgOutcome outcome;
   while (outcome.iterations < limit) {
     hessian_times(w.p, w.hp);
@@ -96,18 +113,26 @@ CgOutcome solve_newton_system(const std::vector<Vec3>& gradient, HessianTimes&& 
       outcome.negative_curvature = true;
       break;
     }
+    // The update and ‖r‖² in one pass (the sum in `dot`'s order).
     const double alpha = rz / curvature;
+    double rr = 0.0;
+    Vec3* xa = x.data();
+    Vec3* r = w.r.data();
+    const Vec3* p = w.p.data();
+    const Vec3* hp = w.hp.data();
     for (std::size_t a = 0; a < n; ++a) {
-      x[a] += alpha * w.p[a];
-      w.r[a] -= alpha * w.hp[a];
+      xa[a] += alpha * p[a];
+      r[a] -= alpha * hp[a];
+      rr += r[a].dot(r[a]);
     }
     ++outcome.iterations;
-    if (dot(w.r, w.r) <= target2) break;
-    two_level_precondition(precondition, translation_stiffness, w.r, w.z);
-    const double rz_next = dot(w.r, w.z);
+    if (rr <= target2) break;
+    const double rz_next = two_level_precondition(precondition, translation_stiffness, w.r, w.z);
     const double beta = rz_next / rz;
     rz = rz_next;
-    for (std::size_t a = 0; a < n; ++a) w.p[a] = w.z[a] + beta * w.p[a];
+    Vec3* direction = w.p.data();
+    const Vec3* z = w.z.data();
+    for (std::size_t a = 0; a < n; ++a) direction[a] = z[a] + beta * direction[a];
   }
   return outcome;
 }
