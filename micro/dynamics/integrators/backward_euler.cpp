@@ -79,8 +79,9 @@ class BackwardEuler final : public Integrator {
     // wall films' drag (contact/wall_contacts.h) and the solvent's mean flow
     // (model/solvent_flow.h).
     if (flow.system().walls().present() || !flow.solvent_flow().affine())
-      throw InputError("integrator 'implicit' does not carry the wall films: with walls use "
-                       "scheme = euler");
+      throw InputError(
+          "integrator 'implicit' does not carry the wall films: with walls use "
+          "scheme = euler");
     if (!flow.evaluated()) flow.evaluate();
     double h = std::min({proposal_, spec_.max_step, max_step});
     ContactSystem& system = flow.system();
@@ -134,26 +135,19 @@ class BackwardEuler final : public Integrator {
       settings.loosen = true;
       minimiser_.set_settings(settings);
       // An attempt that will be rejected is stopped early: once an iterate's
-      // error exceeds 1.5 tolerances by more than its last move, the
-      // converged step would fail the test below too (the rest of the solve
-      // moves a particle by less than the last iteration did — Newton
-      // converges superlinearly — which changes the error by half of that). A fifth of the attempts are rejected, most at
-      // the start of a plastic event, and each solved to the end cost as
-      // much as an accepted one. The acceptance test itself is unchanged.
+      // error exceeds the tolerance by more than its last move, the converged
+      // step would fail the test below too (the rest of the solve moves a
+      // particle by less than the last iteration did — Newton converges
+      // superlinearly — which changes the error by half of that). A fifth of
+      // the attempts are rejected, most at the start of a plastic event, and
+      // each solved to the end cost as much as an accepted one. The stopped
+      // attempt meets the same error test below, from its partial error.
       const auto hopeless = [&](const std::vector<Vec3>&, double move) {
         return step_error(h) - move > spec_.tolerance;
       };
       const IncrementalResult r =
           minimiser_.minimise(system, proximal_, drag, h, guess_, nullptr, -1, hopeless);
       stats_.minimiser = minimiser_.counters();
-      if (r.abandoned) {
-        const double partial = step_error(h);
-        flow.restore(before_);
-        record_rejected(Rejection::error);
-        rejected = true;
-        h *= std::max(0.2, 0.9 * std::sqrt(spec_.tolerance / partial));
-        continue;
-      }
       if (r.list_invalid) {
         // The step moves particles further than the list allows. If the error
         // of the partial solution already exceeds the tolerance, the step
@@ -166,12 +160,11 @@ class BackwardEuler final : public Integrator {
         if (partial <= spec_.tolerance && std::max(predicted, list_margin) < 0.5 * widest) {
           list_margin = widest;
         } else {
-          h *= partial > spec_.tolerance ? std::max(0.2, 0.9 * std::sqrt(spec_.tolerance / partial))
-                                         : 0.25;
+          h *= partial > spec_.tolerance ? std::max(0.2, size_factor(partial)) : 0.25;
         }
         continue;
       }
-      if (!r.converged) {
+      if (!r.converged && !r.abandoned) {
         flow.restore(before_);
         record_rejected(Rejection::solver);
         rejected = true;
@@ -179,7 +172,7 @@ class BackwardEuler final : public Integrator {
         continue;
       }
       const double error = step_error(h);
-      const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
+      const double factor = size_factor(error);
       if (error > spec_.tolerance) {
         flow.restore(before_);
         record_rejected(Rejection::error);
@@ -227,6 +220,11 @@ class BackwardEuler final : public Integrator {
       const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
       freeze_drag(field.contacts, gamma_tilde, rate, model.drag, friction_, drag_);
     }
+  }
+
+  // The plain controller's factor 0.9 √(tol/e) for an error e ∝ h² (2 for e = 0).
+  double size_factor(double error) const {
+    return error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
   }
 
   // max_α ½|u_α − h v_n,α| for the solution (or partial solution) in guess_.
