@@ -19,6 +19,14 @@ void ContactList::clear() {
   stiffness.clear();
 }
 
+void ContactField::Touching::reserve(std::size_t pairs) {
+  if (pair.size() >= pairs) return;
+  pair.resize(pairs);
+  for (std::vector<double>* a : {&dx, &dy, &dz, &distance2, &deformation, &magnitude, &scale,
+                                 &normal_stiffness, &norm, &energy})
+    a->resize(pairs);
+}
+
 std::size_t ContactField::memory_bytes() const {
   std::size_t bytes = force.capacity() * sizeof(Vec3) + stiffness_sum.capacity() * sizeof(double);
   for (const auto& f : scratch.forces) bytes += f.capacity() * sizeof(Vec3);

@@ -63,12 +63,18 @@ struct ContactField {
 
   std::size_t memory_bytes() const;
 
-  /// One particle's list pairs that touch, compacted by the kernel before the
-  /// contact loop: position in the particle's list, separation d and |d|².
+  /// The touching pairs of a block of particles, compacted by the kernel
+  /// (contact_kernel.h) into one array per quantity, so that the contact law
+  /// runs over all of them in a single loop the compiler vectorises: the pair's
+  /// place in the block's rows of the list, the separation d and |d|², and what
+  /// the law makes of them. `end[b]` is one past the last pair of the block's
+  /// b-th particle.
   struct Touching {
-    std::vector<std::uint32_t> position;
-    std::vector<Vec3> separation;
-    std::vector<double> distance2;
+    std::vector<std::uint32_t> pair, end;
+    std::vector<double> dx, dy, dz, distance2;
+    std::vector<double> deformation, magnitude, scale, normal_stiffness, norm, energy;
+    /// Room for at least `pairs` pairs (contents kept).
+    void reserve(std::size_t pairs);
   };
   /// Workspace of the kernel (contact_kernel.h), kept to avoid reallocation:
   /// the force and stiffness accumulators of threads 1, 2, … (thread 0 writes

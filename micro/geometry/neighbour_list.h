@@ -77,6 +77,14 @@ class NeighbourList {
   std::span<const PairConstants> pair_constants(std::size_t i) const {
     return {constants_.data() + start_[i], start_[i + 1] - start_[i]};
   }
+  /// The rows of particles first … last − 1, stored one after the other, and
+  /// their pairs' constants.
+  std::span<const std::uint32_t> neighbours(std::size_t first, std::size_t last) const {
+    return {neighbours_.data() + start_[first], start_[last] - start_[first]};
+  }
+  std::span<const PairConstants> pair_constants(std::size_t first, std::size_t last) const {
+    return {constants_.data() + start_[first], start_[last] - start_[first]};
+  }
 
   /// Image shift s by image code: (n_x L + n_y δ, n_y L, n_z L) with
   /// n_x ∈ {−2 … 2}, n_y, n_z ∈ {−1, 0, 1} and δ the continued offset.

@@ -28,7 +28,7 @@ void ContactSystem::move(double dt, std::span<const Vec3> v) {
   Vec3* x = particles_.position.data();
   Vec3* tracked = nonaffine_.data();
   double max2 = max_nonaffine_ * max_nonaffine_;
-#pragma omp parallel for schedule(static) reduction(max : max2) if (n >= 4096)
+#pragma omp parallel for simd schedule(static) reduction(max : max2) if (n >= 4096)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 step = dt * v[i];
     x[i] += step;
