@@ -8,7 +8,8 @@
 #
 # Usage: bench/run_side_by_side.sh CANDIDATE_BUILD BASE_BUILD [output dir]
 #   env: MODEL (softglass), GAMMA (1e-9), N (1000), PHI (0.80), SEED (1),
-#        STRAIN (0.2), REPS (3)
+#        STRAIN (0.2), REPS (3), CANDIDATE_SCHEME and BASE_SCHEME (the
+#        integrator's `scheme`, auto: two schemes of one build side by side)
 # Example (docs/integrators.md, "The assembly written entry by entry"):
 #   bash bench/run_side_by_side.sh build /tmp/base/build
 set -euo pipefail
@@ -18,6 +19,7 @@ base=${2:?usage: bench/run_side_by_side.sh CANDIDATE_BUILD BASE_BUILD [output di
 out=${3:-out/run_side_by_side}
 model=${MODEL:-softglass} gamma=${GAMMA:-1e-9} n=${N:-1000} phi=${PHI:-0.80}
 seed=${SEED:-1} strain=${STRAIN:-0.2} reps=${REPS:-3}
+candidate_scheme=${CANDIDATE_SCHEME:-auto} base_scheme=${BASE_SCHEME:-auto}
 for b in "$candidate" "$base"; do
   [ -x "$b/micro/micro" ] || { echo "run_side_by_side: no micro in $b/micro" >&2; exit 2; }
 done
@@ -37,16 +39,17 @@ printf '%s\nsubsection output\n  set file = pack.h5\n  set overwrite = true\nend
 OMP_NUM_THREADS=1 "$base/micro/micro" --threads 1 pack pack.prm > pack.log 2>&1 ||
   { tail -n 3 pack.log >&2; exit 1; }
 
-run_file() {  # $1: output file
+run_file() {  # $1: output file, $2: scheme
   printf '%s\nsubsection packing\n  set input file = pack.h5\nend\n' "$common"
+  printf 'subsection integrator\n  set scheme = %s\nend\n' "$2"
   printf 'subsection shear\n  set gamma dot tilde = %s\n  set min strain = %s\n' "$gamma" "$strain"
   printf '  set max strain = %s\n  set min stationary strain = %s\n' "$strain" "$strain"
   printf '  set snapshot interval = 0\nend\n'
   printf 'subsection output\n  set file = %s\n  set overwrite = true\nend\n' "$1"
 }
 
-timed_run() {  # $1: label, $2: build; prints the wall time in seconds
-  run_file "$1.h5" > "$1.prm"
+timed_run() {  # $1: label, $2: build, $3: scheme; prints the wall time in seconds
+  run_file "$1.h5" "$3" > "$1.prm"
   local start end
   start=$(date +%s.%N)
   OMP_NUM_THREADS=1 "$2/micro/micro" --threads 1 run "$1.prm" > "$1.log" 2>&1 ||
@@ -58,8 +61,8 @@ timed_run() {  # $1: label, $2: build; prints the wall time in seconds
 echo "# micro run side by side: $model, N = $n, phi = $phi, seed $seed, gamma~ = $gamma, $strain strain, $reps repetitions"
 ratios=()
 for r in $(seq 1 "$reps"); do
-  t_candidate=$(timed_run candidate "$candidate")
-  t_base=$(timed_run base "$base")
+  t_candidate=$(timed_run candidate "$candidate" "$candidate_scheme")
+  t_base=$(timed_run base "$base" "$base_scheme")
   ratio=$(printf '%.3f' "$(echo "scale=6; $t_candidate / $t_base" | bc)")
   ratios+=("$ratio")
   printf 'rep %d  candidate %.1f s  base %.1f s  ratio %s\n' "$r" "$t_candidate" "$t_base" "$ratio"

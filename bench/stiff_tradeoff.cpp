@@ -3,7 +3,7 @@
 // One packing, then each requested run from it: a scheme and tolerance
 // (`--run euler:1e-4`, `--run implicit:1e-3`, …), optionally a third number —
 // the fraction of the stability limit for `euler` (`euler:1e-5:0.4`), the
-// largest step in strain for `implicit` (`implicit:1e-3:5e-4`) — or
+// largest step in strain for `implicit` and `bdf2` (`implicit:1e-3:5e-4`) — or
 // quasi-static shear (`--run aqs:2e-4`, the number being the strain step),
 // over the same strain window [0, --strain]. Each prints one line
 //   run <scheme> <tol> gamma <γ̃> sigma <σ> N1 <N1> N2 <N2> seconds <s>
@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
                  "strain of quasi-static shear (AQS, step 1e-3) applied to the packing first");
   app.add_option("--time-limit", time_limit, "seconds per run before it is cut short");
   app.add_option("--run", runs,
-                 "scheme:tolerance[:stability fraction (euler) | max step (implicit)] or "
+                 "scheme:tolerance[:stability fraction (euler) | max step (implicit, bdf2)] or "
                  "aqs:strain_step")
       ->required();
   CLI11_PARSE(app, argc, argv);
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
     }
     const std::string scheme = parts[0];
     const double value = parts.size() > 1 ? std::stod(parts[1]) : 0.0;
-    const bool implicit = scheme == "implicit";
+    const bool implicit = scheme != "euler";  // implicit, bdf2: the third number is the max step
     const double third = parts.size() > 2 ? std::stod(parts[2])
                                           : (implicit ? IntegratorSpec{}.max_step
                                                       : IntegratorSpec{}.stability_fraction);

@@ -63,15 +63,20 @@ double min_radius(const std::vector<double>& radius) {
 // for at most (and at most 0.3 skin, leaving room for the strain).
 constexpr double kWidestMargin = 0.2;
 
+// Largest step ratio h_{n+1}/h_n at which a step is taken with BDF2; a larger
+// one (after a step cut short to land on a sample) is taken with backward Euler.
+// Variable-step BDF2 is zero-stable for ratios below 1 + √2.
+constexpr double kMaxBdf2Ratio = 2.0;
+
 class BackwardEuler final : public Integrator {
  public:
-  explicit BackwardEuler(const IntegratorSpec& spec) : spec_(spec) {
+  BackwardEuler(const IntegratorSpec& spec, int order) : spec_(spec), order_(order) {
     IncrementalSettings s;
     s.relative_force = spec.solver_tolerance;
     minimiser_.set_settings(s);
   }
 
-  std::string name() const override { return "implicit"; }
+  std::string name() const override { return order_ == 2 ? "bdf2" : "implicit"; }
 
   double step(OverdampedShear& flow, double max_step) override {
     // The frozen drag of a step holds pair films only, and the reservoir
@@ -113,16 +118,32 @@ class BackwardEuler final : public Integrator {
         frozen = at;
       }
       const FrozenDrag& drag = drag_;
+      const Formula f = formula(h);
+      const double hs = f.beta * h;  // the solve's step: u = βh v_{n+1}
       proximal_.resize(n);
       velocity_.assign(p.velocity.begin(), p.velocity.end());  // v_n
-      guess_.resize(n);
+      predicted_.resize(n);
       shift_.resize(n);
       const double strain_step = flow.strain_increment(h);
       for (std::size_t a = 0; a < n; ++a) {
-        proximal_[a] = model.drag.stokes.reservoir(friction_[a]) / h;
-        guess_[a] = h * velocity_[a];
-        shift_[a] = Vec3(0.5 * strain_step * velocity_[a].y(), 0.0, 0.0);
+        proximal_[a] = model.drag.stokes.reservoir(friction_[a]) / hs;
+        // Predictor of the step's non-affine move d_{n+1}: h v_n, plus
+        // ½h² (v_n − v_{n−1})/h_{n−1} for BDF2; the solve's unknown is
+        // u = d_{n+1} − c d_n.
+        // x⁰ = x_n sheared, plus (as a velocity over h) the advection term and
+        // BDF2's c d_n.
+        Vec3 move = h * velocity_[a];
+        Vec3 shift(0.5 * strain_step * velocity_[a].y(), 0.0, 0.0);
+        if (f.order == 2) {
+          const std::uint32_t label = p.label[a];
+          move += (0.5 * h * h / last_h_) * (velocity_[a] - last_velocity_[label]);
+          move -= f.c * last_move_[label];
+          shift += (f.c / h) * last_move_[label];
+        }
+        predicted_[a] = move;
+        shift_[a] = shift;
       }
+      guess_.assign(predicted_.begin(), predicted_.end());
       // x⁰: affine shear by Δγ plus the second-order advection term.
       flow.advance_affinely(h);
       system.move(h, shift_);
@@ -131,7 +152,7 @@ class BackwardEuler final : public Integrator {
       IncrementalSettings settings = minimiser_.settings();
       settings.absolute_force = 0.01 * spec_.tolerance *
                                 model.drag.stokes.reservoir(model.friction(min_radius(p.radius))) /
-                                h;
+                                hs;
       settings.loosen = true;
       minimiser_.set_settings(settings);
       // An attempt that will be rejected is stopped early: once an iterate's
@@ -143,10 +164,10 @@ class BackwardEuler final : public Integrator {
       // each solved to the end cost as much as an accepted one. The stopped
       // attempt meets the same error test below, from its partial error.
       const auto hopeless = [&](const std::vector<Vec3>&, double move) {
-        return step_error(h) - move > spec_.tolerance;
+        return step_error(f) - move > spec_.tolerance;
       };
       const IncrementalResult r =
-          minimiser_.minimise(system, proximal_, drag, h, guess_, nullptr, -1, hopeless);
+          minimiser_.minimise(system, proximal_, drag, hs, guess_, nullptr, -1, hopeless);
       stats_.minimiser = minimiser_.counters();
       if (r.list_invalid) {
         // The step moves particles further than the list allows. If the error
@@ -156,11 +177,11 @@ class BackwardEuler final : public Integrator {
         flow.restore(before_);
         record_rejected(Rejection::list);
         rejected = true;
-        const double partial = step_error(h);
+        const double partial = step_error(f);
         if (partial <= spec_.tolerance && std::max(predicted, list_margin) < 0.5 * widest) {
           list_margin = widest;
         } else {
-          h *= partial > spec_.tolerance ? std::max(0.2, size_factor(partial)) : 0.25;
+          h *= partial > spec_.tolerance ? std::max(0.2, size_factor(partial, f)) : 0.25;
         }
         continue;
       }
@@ -171,8 +192,8 @@ class BackwardEuler final : public Integrator {
         h *= 0.25;
         continue;
       }
-      const double error = step_error(h);
-      const double factor = size_factor(error);
+      const double error = step_error(f);
+      const double factor = size_factor(error, f);
       if (error > spec_.tolerance) {
         flow.restore(before_);
         record_rejected(Rejection::error);
@@ -180,9 +201,11 @@ class BackwardEuler final : public Integrator {
         h *= std::max(0.2, factor);
         continue;
       }
-      // Accepted: the step's velocity u/h stands for the flow's at x_{n+1}
-      // (solved there only where the stress is sampled; see the header).
-      for (std::size_t a = 0; a < n; ++a) velocity_[a] = guess_[a] / h;
+      // Accepted: the step's velocity u/(βh) stands for the flow's at x_{n+1}
+      // (solved there only where the stress is sampled; see the header). BDF2
+      // keeps d_{n+1} and v_n by label (a list rebuild reorders particles).
+      if (order_ == 2) remember(p.label, f, h);
+      for (std::size_t a = 0; a < n; ++a) velocity_[a] = guess_[a] / hs;
       flow.accept_step_velocities(velocity_);
       record_accepted(h);
       // No growth right after a rejection (Hairer & Wanner, Solving ODEs II,
@@ -222,30 +245,74 @@ class BackwardEuler final : public Integrator {
     }
   }
 
-  // The plain controller's factor 0.9 √(tol/e) for an error e ∝ h² (2 for e = 0).
-  double size_factor(double error) const {
-    return error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
+  // The step's formula, d_{n+1} = c d_n + βh v_{n+1}: backward Euler (c = 0,
+  // β = 1), or variable-step BDF2 with ω = h/h_{n−1},
+  //     c = ω²/(1 + 2ω),  β = (1 + ω)/(1 + 2ω),
+  // whose local error is −(1 + ω)²/(6ω(1 + 2ω)) h³ x⁽³⁾. `error_constant`
+  // turns the distance between the solution and the predictor into that
+  // error: ½ for backward Euler (predictor h v_n); for BDF2 the predictor
+  // h v_n + ½h²(v_n − v_{n−1})/h_{n−1} is off by (2ω + 3)/(12ω) h³ x⁽³⁾, so
+  // the error is 2(1 + ω)²/(6ω² + 12ω + 5) of the distance (8/23 at ω = 1).
+  struct Formula {
+    int order = 1;
+    double c = 0.0, beta = 1.0, error_constant = 0.5;
+  };
+  Formula formula(double h) const {
+    if (order_ == 1 || last_h_ <= 0.0 || h > kMaxBdf2Ratio * last_h_) return {};
+    const double w = h / last_h_;
+    return {2, w * w / (1.0 + 2.0 * w), (1.0 + w) / (1.0 + 2.0 * w),
+            2.0 * (1.0 + w) * (1.0 + w) / (6.0 * w * w + 12.0 * w + 5.0)};
   }
 
-  // max_α ½|u_α − h v_n,α| for the solution (or partial solution) in guess_.
-  double step_error(double h) const {
+  // The controller's factor 0.9 (tol/e)^{1/(p+1)} for a scheme of order p
+  // (2 for e = 0).
+  double size_factor(double error, const Formula& f) const {
+    if (error <= 0.0) return 2.0;
+    const double ratio = spec_.tolerance / error;
+    return 0.9 * (f.order == 2 ? std::cbrt(ratio) : std::sqrt(ratio));
+  }
+
+  // The error constant × max_α |u_α − predicted_α| for the solution (or
+  // partial solution) in guess_.
+  double step_error(const Formula& f) const {
     double worst = 0.0;
     for (std::size_t a = 0; a < guess_.size(); ++a)
-      worst = std::max(worst, (guess_[a] - h * velocity_[a]).squaredNorm());
-    return 0.5 * std::sqrt(worst);
+      worst = std::max(worst, (guess_[a] - predicted_[a]).squaredNorm());
+    return f.error_constant * std::sqrt(worst);
+  }
+
+  // After an accepted step: d_{n+1} = c d_n + u and v_n, by label, and h.
+  void remember(const std::vector<std::uint32_t>& labels, const Formula& f, double h) {
+    const std::size_t n = labels.size();
+    last_move_.resize(n);
+    last_velocity_.resize(n);
+    for (std::size_t a = 0; a < n; ++a) {
+      const std::uint32_t label = labels[a];
+      const Vec3 before = f.order == 2 ? Vec3(f.c * last_move_[label]) : Vec3::Zero();
+      last_move_[label] = before + guess_[a];
+      last_velocity_[label] = velocity_[a];
+    }
+    last_h_ = h;
   }
 
   IntegratorSpec spec_;
+  int order_;  // 1: backward Euler; 2: BDF2 where the step ratio allows
   IncrementalMinimiser minimiser_;
   FrozenDrag drag_;
   std::vector<double> proximal_, friction_;
-  std::vector<Vec3> velocity_, guess_, shift_;
+  std::vector<Vec3> velocity_, guess_, predicted_, shift_;
+  // BDF2's history, by particle label: d_n and v_{n−1}; h_{n−1} (0: none).
+  std::vector<Vec3> last_move_, last_velocity_;
+  double last_h_ = 0.0;
   double proposal_ = 1e300;
   OverdampedShear::Snapshot before_;
 };
 
 std::unique_ptr<Integrator> make(const IntegratorSpec& spec) {
-  return std::make_unique<BackwardEuler>(spec);
+  return std::make_unique<BackwardEuler>(spec, 1);
+}
+std::unique_ptr<Integrator> make_bdf2(const IntegratorSpec& spec) {
+  return std::make_unique<BackwardEuler>(spec, 2);
 }
 }  // namespace
 
@@ -256,6 +323,17 @@ IntegratorEntry implicit_integrator() {
           "backward Euler as a minimising movement, Newton-CG, error control (for low gamma~)",
           {},
           make,
+          {.default_tolerance = 1e-3,
+           .seconds_at_reference = 4.5,
+           .rate_exponent = -0.55,
+           .minimises = true}};
+}
+
+IntegratorEntry bdf2_integrator() {
+  return {"bdf2",
+          "variable-step BDF2 as a minimising movement, Newton-CG, error control (for low gamma~)",
+          {},
+          make_bdf2,
           {.default_tolerance = 1e-3,
            .seconds_at_reference = 4.5,
            .rate_exponent = -0.55,

@@ -6,4 +6,5 @@
 
 #define SOFTGLASS_INTEGRATORS(INTEGRATOR) \
   INTEGRATOR(euler)                       \
-  INTEGRATOR(implicit)
+  INTEGRATOR(implicit)                    \
+  INTEGRATOR(bdf2)
