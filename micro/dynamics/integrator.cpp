@@ -70,7 +70,7 @@ IntegratorSpec with_default_tolerance(IntegratorSpec spec) {
 
 IntegratorSpec IntegratorSpec::resolved_for(double gamma_tilde) const {
   IntegratorSpec spec = *this;
-  if (spec.name == "auto") spec.name = gamma_tilde >= kAutoImplicitBelow ? "euler" : "implicit";
+  if (spec.name == "auto") spec.name = gamma_tilde >= kAutoImplicitBelow ? "euler" : "bdf2";
   return with_default_tolerance(spec);
 }
 

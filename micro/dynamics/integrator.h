@@ -4,10 +4,11 @@
 // returning its registry entry (IntegratorEntry <name>_integrator()) — plus one
 // line in integrators/registered_integrators.h.
 //
-// Schemes (in integrators/): `euler` (explicit, adaptive_euler.cpp) and
-// `implicit` (backward Euler as a minimising movement, backward_euler.cpp, for the stiff low-γ̃
-// regime); docs/integrators.md compares them. The default, `auto`, picks one
-// by the shear rate. The quasi-static limit
+// Schemes (in integrators/): `euler` (explicit, adaptive_euler.cpp), and for
+// the stiff low-γ̃ regime `implicit` (backward Euler as a minimising movement)
+// and `bdf2` (its second-order sibling), both in backward_euler.cpp;
+// docs/integrators.md compares them. The default, `auto`, picks one by the
+// shear rate. The quasi-static limit
 // γ̃ → 0 is not an integrator but a protocol of its own (aqs.h).
 //
 // An integrator advances an OverdampedShear by one accepted step at a time and
@@ -72,13 +73,13 @@ struct IntegratorSpec {
   double tolerance = 0.0;           // local position error per step, units of R; 0: the scheme's
   double stability_fraction = 0.8;  // fraction of the explicit stability limit 2/λ
   double max_step = 0.05;           // time: strain in steady shear (shear_drive.h)
-  // `implicit` only: the nonlinear solve of a step is converged when the largest
+  // `implicit`, `bdf2`: the nonlinear solve of a step is converged when the largest
   // residual force is below this × the mean contact force.
   double solver_tolerance = 1e-7;
 
   void validate() const;
   /// The concrete scheme and tolerance for a run at `gamma_tilde`. `auto` is
-  /// `euler` at γ̃ ≥ kAutoImplicitBelow and `implicit` below; a tolerance of 0
+  /// `euler` at γ̃ ≥ kAutoImplicitBelow and `bdf2` below; a tolerance of 0
   /// becomes the scheme's default (IntegratorTraits). Why this split:
   /// docs/integrators.md measures both schemes' error and cost by rate; below
   /// the split `euler` is out of reach (its step ∝ γ̃).

@@ -221,13 +221,13 @@ void declare_integrator(ParameterHandler& prm, Entries& e) {
   prm.enter_subsection("integrator");
   entry(prm, "scheme", p.integrator.name,
         documented_choice(fmt::format("Time integrator (docs/integrators.md): auto: euler at "
-                                      "gamma~ >= {:g}, implicit below;",
+                                      "gamma~ >= {:g}, bdf2 below;",
                                       kAutoImplicitBelow),
                           integrators()),
         Patterns::Selection("auto|" + integrators().selection()));
   entry(prm, "tolerance", p.integrator.tolerance,
         "Local position error allowed per step, in units of R; 0: the scheme's default "
-        "(euler 1e-4, implicit 1e-3).",
+        "(euler 1e-4, implicit 1e-3, bdf2 3e-3).",
         Patterns::Double(0.0, 0.1));
   entry(prm, "stability fraction", p.integrator.stability_fraction,
         "Fraction of the explicit stability limit 2/lambda used at most.",

@@ -72,7 +72,7 @@ TEST(StiffIntegrators, RegisteredByName) {
 }
 
 // `auto` (the default) is the explicit scheme where it is accurate and cheap
-// and the implicit one below kAutoImplicitBelow; it must be resolved before an
+// and BDF2 below kAutoImplicitBelow; it must be resolved before an
 // integrator is made, and a zero tolerance becomes the chosen scheme's default.
 TEST(StiffIntegrators, AutoPicksTheSchemeByRate) {
   const IntegratorSpec spec;
@@ -82,9 +82,9 @@ TEST(StiffIntegrators, AutoPicksTheSchemeByRate) {
   EXPECT_EQ(fast.name, "euler");
   EXPECT_EQ(fast.tolerance, default_tolerance("euler"));
   const IntegratorSpec slow = spec.resolved_for(0.5 * kAutoImplicitBelow);
-  EXPECT_EQ(slow.name, "implicit");
-  EXPECT_EQ(slow.tolerance, default_tolerance("implicit"));
-  EXPECT_EQ(make_integrator(slow)->name(), "implicit");
+  EXPECT_EQ(slow.name, "bdf2");
+  EXPECT_EQ(slow.tolerance, default_tolerance("bdf2"));
+  EXPECT_EQ(make_integrator(slow)->name(), "bdf2");
   // A given tolerance is kept, and a named scheme is never replaced.
   IntegratorSpec given{.name = "euler", .tolerance = 3e-5};
   EXPECT_EQ(given.resolved_for(1e-9).name, "euler");
