@@ -134,11 +134,10 @@ class BackwardEuler final : public Integrator {
       const double strain_step = flow.strain_increment(h);
       for (std::size_t a = 0; a < n; ++a) {
         proximal_[a] = model.drag.stokes.reservoir(friction_[a]) / hs;
-        // Predictor of the step's non-affine move d_{n+1}: h v_n, plus
-        // ½h² (v_n − v_{n−1})/h_{n−1} for BDF2; the solve's unknown is
-        // u = d_{n+1} − c d_n.
-        // x⁰ = x_n sheared, plus (as a velocity over h) the advection term and
-        // BDF2's c d_n.
+        // The step's non-affine move is d_{n+1} = c d_n + u. The unknown u
+        // starts from the predictor h v_n (+ ½h²(v_n − v_{n−1})/h_{n−1} for
+        // BDF2) less c d_n; the base point x⁰ is x_n sheared plus, as a
+        // velocity over h, the advection term and c d_n.
         Vec3 move = h * velocity_[a];
         Vec3 shift(0.5 * strain_step * velocity_[a].y(), 0.0, 0.0);
         if (f.order == 2) {
@@ -151,7 +150,7 @@ class BackwardEuler final : public Integrator {
         shift_[a] = shift;
       }
       guess_.assign(predicted_.begin(), predicted_.end());
-      // x⁰: affine shear by Δγ plus the second-order advection term.
+      // x⁰: affine shear by Δγ plus shift_ (above).
       flow.advance_affinely(h);
       system.move(h, shift_);
       // The solve's residual g moves a particle by at most g h/ζ (the proximal
