@@ -55,9 +55,10 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
   const auto shifts = in.neighbours.image_shifts(in.box);
   std::vector<KernelTotals> totals(threads);
 
-#pragma omp parallel num_threads(threads)
-  {
-    const int t = omp_get_thread_num();
+  // One thread (the usual case below 2048 particles) runs the body directly:
+  // entering a parallel region, its loop schedule and barrier cost libgomp
+  // calls per force evaluation even for a team of one.
+  const auto body = [&](const int t, const bool team) {
     Vec3* force = t == 0 ? out.force.data() : out.scratch.forces[t - 1].data();
     double* stiffness = t == 0 ? out.stiffness_sum.data() : out.scratch.stiffness[t - 1].data();
     ContactList& contacts = out.scratch.contacts[t];
@@ -67,8 +68,11 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
     double vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0, magnitude = 0, energy = 0;
     std::size_t count = 0;
 
-#pragma omp for schedule(static)
-    for (std::size_t block = 0; block < blocks; ++block) {
+    // The blocks split as `omp for schedule(static)` splits them.
+    const std::size_t share = blocks / threads, extra = blocks % threads;
+    const std::size_t first_block = t * share + std::min<std::size_t>(t, extra);
+    const std::size_t last_block = first_block + share + (std::size_t(t) < extra ? 1 : 0);
+    for (std::size_t block = first_block; block < last_block; ++block) {
       const std::size_t first = block * kKernelBlock, last = std::min(n, first + kKernelBlock);
       const auto rows = in.neighbours.neighbours(first, last);
       const auto constants = in.neighbours.pair_constants(first, last);
@@ -95,7 +99,8 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
         const std::uint32_t row_end = q + in.neighbours.neighbours(i).size();
         for (; q < row_end; ++q) {
           const std::uint32_t entry = rows[q];
-          const Vec3 d = xi - in.x[NeighbourList::index(entry)] - shifts[NeighbourList::image(entry)];
+          const Vec3 d =
+              xi - in.x[NeighbourList::index(entry)] - shifts[NeighbourList::image(entry)];
           const double distance2 = d.squaredNorm();
           const double sum = constants[q].contact_distance;
           pair[m] = q, dx[m] = d.x(), dy[m] = d.y(), dz[m] = d.z(), r2[m] = distance2;
@@ -164,11 +169,18 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
     sums.contacts = count;
     totals[t] = sums;
 
+    if (!team) return;
 #pragma omp barrier
     // Threads 1, 2, … add into thread 0's arrays, each over its own range, in a
     // fixed order.
     const std::size_t chunk = (n + threads - 1) / threads;
     reduce_accumulators(out, std::min(n, t * chunk), std::min(n, (t + 1) * chunk));
+  };
+  if (threads == 1) {
+    body(0, false);
+  } else {
+#pragma omp parallel num_threads(threads)
+    body(omp_get_thread_num(), true);
   }
   finish_kernel(in, totals, out);
 }

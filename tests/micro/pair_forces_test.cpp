@@ -3,6 +3,8 @@
 // ContactList carries the force of the contact law at its own geometry.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <cfloat>
 
 #include "micro/contact/contact_law.h"
@@ -90,6 +92,39 @@ TEST_P(PairForces, ThirdLawPerPairThroughTheContactList) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Strains, PairForces, ::testing::Values(0.0, 0.37));
+
+// From 2048 particles the kernel splits its blocks over the threads, which add
+// the shares of the particles outside their own range into private arrays,
+// reduced afterwards; with one thread it runs without a parallel region. Both
+// paths give the same forces, contact list and totals up to the order of the
+// sums: per particle a few ulp of its Σ|f| (as above), the totals a few ulp of
+// Σ|f_c| r (virial) or Σ E_c.
+TEST(PairForcesThreads, TwoThreadsGiveTheOneThreadFieldUpToTheOrderOfSums) {
+  const auto c = random_configuration(3000, 0.6, 7);
+  const ForceRequest request{.energy = true, .contacts = true, .virial = true};
+  const auto field_with = [&](int threads) {
+    omp_set_num_threads(threads);
+    ContactSystem system(Particles(c.position, c.radius), LeesEdwardsBox(c.side),
+                         testing::named_law("seth2011"), 0.3);
+    ContactField field = system.compute_forces(request);
+    omp_set_num_threads(1);
+    return field;
+  };
+  const ContactField one = field_with(1), two = field_with(2);
+  ASSERT_GT(one.contact_count, 3000u);
+  EXPECT_EQ(one.contact_count, two.contact_count);
+  EXPECT_EQ(one.contacts.size(), two.contacts.size());
+  std::vector<double> scale(one.force.size(), 0.0);
+  for (std::size_t k = 0; k < one.contacts.size(); ++k) {
+    scale[one.contacts.i[k]] += one.contacts.force[k];
+    scale[one.contacts.j[k]] += one.contacts.force[k];
+  }
+  for (std::size_t a = 0; a < one.force.size(); ++a)
+    EXPECT_LE((one.force[a] - two.force[a]).norm(), 1e-13 * scale[a] + 1e-300) << "particle " << a;
+  EXPECT_NEAR(one.energy, two.energy, 1e-12 * one.energy);
+  EXPECT_NEAR(one.force_magnitude_sum, two.force_magnitude_sum, 1e-12 * one.force_magnitude_sum);
+  EXPECT_LE((one.virial - two.virial).norm(), 1e-12 * one.virial.norm());
+}
 
 }  // namespace
 }  // namespace softglass::micro
