@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "micro/contact/contact_forces.h"
+#include "micro/numerics/thread_range.h"
 
 namespace softglass::micro {
 
@@ -68,10 +69,7 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
     double vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0, magnitude = 0, energy = 0;
     std::size_t count = 0;
 
-    // The blocks split as `omp for schedule(static)` splits them.
-    const std::size_t share = blocks / threads, extra = blocks % threads;
-    const std::size_t first_block = t * share + std::min<std::size_t>(t, extra);
-    const std::size_t last_block = first_block + share + (std::size_t(t) < extra ? 1 : 0);
+    const auto [first_block, last_block] = thread_range(blocks, threads, t);
     for (std::size_t block = first_block; block < last_block; ++block) {
       const std::size_t first = block * kKernelBlock, last = std::min(n, first + kKernelBlock);
       const auto rows = in.neighbours.neighbours(first, last);
@@ -173,8 +171,8 @@ void contact_kernel(const Law& law, const ForceKernelInput& in, ContactField& ou
 #pragma omp barrier
     // Threads 1, 2, … add into thread 0's arrays, each over its own range, in a
     // fixed order.
-    const std::size_t chunk = (n + threads - 1) / threads;
-    reduce_accumulators(out, std::min(n, t * chunk), std::min(n, (t + 1) * chunk));
+    const auto [begin, end] = thread_range(n, threads, t);
+    reduce_accumulators(out, begin, end);
   };
   if (threads == 1) {
     body(0, false);

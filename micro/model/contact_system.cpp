@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "common/errors.h"
+#include "micro/numerics/thread_range.h"
 
 namespace softglass::micro {
 
@@ -46,17 +47,16 @@ void ContactSystem::move(double dt, std::span<const Vec3> v) {
   Vec3* x = particles_.position.data();
   Vec3* tracked = nonaffine_.data();
   double max2 = max_nonaffine_ * max_nonaffine_;
-  // Below 4096 particles one thread moves them all without entering a parallel
-  // region: even one whose `if` turns it off is a libgomp call per step.
-  if (n < 4096) {
+  // One thread moves them all without entering a parallel region: even one
+  // whose `if` turns it off is a libgomp call per step.
+  const int threads = n >= 4096 ? omp_get_max_threads() : 1;
+  if (threads == 1) {
     max2 = std::max(max2, move_range(dt, v.data(), x, tracked, 0, n));
   } else {
-#pragma omp parallel reduction(max : max2)
+#pragma omp parallel num_threads(threads) reduction(max : max2)
     {
-      const std::size_t threads = omp_get_num_threads(), t = omp_get_thread_num();
-      const std::size_t chunk = (n + threads - 1) / threads;
-      max2 = std::max(max2, move_range(dt, v.data(), x, tracked, std::min(n, t * chunk),
-                                       std::min(n, (t + 1) * chunk)));
+      const auto [first, last] = thread_range(n, threads, omp_get_thread_num());
+      max2 = std::max(max2, move_range(dt, v.data(), x, tracked, first, last));
     }
   }
   max_nonaffine_ = std::sqrt(max2);

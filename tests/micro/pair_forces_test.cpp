@@ -102,12 +102,13 @@ INSTANTIATE_TEST_SUITE_P(Strains, PairForces, ::testing::Values(0.0, 0.37));
 TEST(PairForcesThreads, TwoThreadsGiveTheOneThreadFieldUpToTheOrderOfSums) {
   const auto c = random_configuration(3000, 0.6, 7);
   const ForceRequest request{.energy = true, .contacts = true, .virial = true};
+  const int threads_before = omp_get_max_threads();
   const auto field_with = [&](int threads) {
     omp_set_num_threads(threads);
     ContactSystem system(Particles(c.position, c.radius), LeesEdwardsBox(c.side),
                          testing::named_law("seth2011"), 0.3);
     ContactField field = system.compute_forces(request);
-    omp_set_num_threads(1);
+    omp_set_num_threads(threads_before);
     return field;
   };
   const ContactField one = field_with(1), two = field_with(2);
