@@ -107,7 +107,7 @@ void slip_command(const CommandOptions& options) {
     require(s.name == "euler", fmt::format("walls: integrator/scheme = {} does not carry the wall "
                                            "films; use euler (or auto)",
                                            s.name));
-    return s.resolved_for(spec.apparent_rates.front());
+    return s.resolved_for(spec.apparent_rates.front(), prm.base.shear_model.drag.stokes.reference);
   }();
   const std::filesystem::path runs = spec.directory / "runs";
   const std::string identity = run_identity(prm);
@@ -160,7 +160,7 @@ void slip_command(const CommandOptions& options) {
       OverdampedShear flow(std::move(system), model);
       if (spec.solvent == SolventReference::local_mean)
         flow.set_solvent_flow(SolventFlow::local_mean(walls.walls.lower, walls.walls.upper));
-      const auto integrator = make_integrator(scheme.resolved_for(rate));
+      const auto integrator = make_integrator(scheme.resolved_for(rate, model.drag.stokes.reference));
       const WallRunResult run = run_wall_shear(flow, *integrator, spec.run);
       const WallRunSummary summary = summarise_wall_run(run);
       write_run(h5, run, summary, walls.walls, identity);

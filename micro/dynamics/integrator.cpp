@@ -68,9 +68,11 @@ IntegratorSpec with_default_tolerance(IntegratorSpec spec) {
 }
 }  // namespace
 
-IntegratorSpec IntegratorSpec::resolved_for(double gamma_tilde) const {
+IntegratorSpec IntegratorSpec::resolved_for(double gamma_tilde, StokesReference stokes) const {
   IntegratorSpec spec = *this;
-  if (spec.name == "auto") spec.name = gamma_tilde >= kAutoImplicitBelow ? "euler" : "bdf2";
+  if (spec.name == "auto")
+    spec.name =
+        gamma_tilde >= kAutoImplicitBelow && stokes == StokesReference::affine ? "euler" : "bdf2";
   return with_default_tolerance(spec);
 }
 

@@ -221,7 +221,8 @@ void declare_integrator(ParameterHandler& prm, Entries& e) {
   prm.enter_subsection("integrator");
   entry(prm, "scheme", p.integrator.name,
         documented_choice(fmt::format("Time integrator (docs/integrators.md): auto: euler at "
-                                      "gamma~ >= {:g}, bdf2 below;",
+                                      "gamma~ >= {:g} with drag/stokes reference = affine, "
+                                      "bdf2 below and with neighbours;",
                                       kAutoImplicitBelow),
                           integrators()),
         Patterns::Selection("auto|" + integrators().selection()));
@@ -577,6 +578,7 @@ SweepParameters read_sweep_file(const std::filesystem::path& file) {
   sweep.spec.particles = s.particles;
   sweep.spec.checkpoint_steps = s.checkpoint_steps;
   sweep.spec.scheme = sweep.base.integrator.name;
+  sweep.spec.stokes = sweep.base.shear_model.drag.stokes.reference;
   require(!s.directory.empty(), "sweep: output directory is empty");
   sweep.spec.directory = s.directory;
   // A sample averages whole strain steps (protocol/quasi_static_run.h).
@@ -610,6 +612,7 @@ OscillationParameters read_oscillation_file(const std::filesystem::path& file) {
   spec.protocol.min_periodic_cycles = static_cast<unsigned>(o.min_periodic_cycles);
   spec.checkpoint_steps = o.checkpoint_steps;
   spec.scheme = osc.base.integrator.name;
+  spec.stokes = osc.base.shear_model.drag.stokes.reference;
   require(!o.directory.empty(), "oscillation: output directory is empty");
   spec.directory = o.directory;
   // The protocol's own checks (multiple of 4, cycles), at the first case's

@@ -20,8 +20,9 @@ constexpr const char* kContext = "oscillation";
 // sample, measured at N = 250 and γ0 = 1e-3). Below γ0 ≈ 0.03 a case is
 // periodic after min_cycles; past yielding its cycles scatter and it runs
 // towards max_cycles. Measured (docs/oscillation.md): within a factor 2.
-double case_cost(std::size_t particles, const OscillationProtocol& p, const std::string& scheme) {
-  const double per_strain = 2.0 * rate_cost(particles, p.peak_gamma_tilde(), scheme) / 5.0;
+double case_cost(std::size_t particles, const OscillationProtocol& p, const std::string& scheme,
+                 StokesReference stokes) {
+  const double per_strain = 2.0 * rate_cost(particles, p.peak_gamma_tilde(), scheme, stokes) / 5.0;
   const double per_cycle = std::max(4.0 * p.amplitude * per_strain,
                                     p.samples_per_cycle * 5e-5 * static_cast<double>(particles));
   const double yielded = std::min(1.0, p.amplitude / 0.3);
@@ -73,7 +74,7 @@ OscillationPlan make_oscillation_plan(const OscillationSpec& spec) {
                               spec.directory / "runs" /
                                   fmt::format("phi{:.4f}_w{:.3e}_g{:.3e}_seed{}.h5",
                                               packing.volume_fraction, omega, gamma0, packing.seed),
-                              case_cost(plan.particles, protocol, spec.scheme), protocol});
+                              case_cost(plan.particles, protocol, spec.scheme, spec.stokes), protocol});
       }
     }
   }

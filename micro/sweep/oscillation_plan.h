@@ -24,7 +24,10 @@ struct OscillationSpec {
   OscillationProtocol protocol;  // amplitude and frequency: per case
   std::filesystem::path directory = "oscillation";
   std::size_t checkpoint_steps = 20000;
-  std::string scheme = "auto";  // the runs' integrator: only the cost estimates use it
+  // The runs' integrator and what their Stokes friction acts against (which
+  // `auto` resolves by): only the cost estimates use them.
+  std::string scheme = "auto";
+  StokesReference stokes = StokesReference::affine;
 };
 
 struct OscillationCase {

@@ -33,12 +33,14 @@ double minimiser_scale(std::size_t particles) {
   return std::pow(static_cast<double>(particles) / 1000.0, 1.35);
 }
 
-double rate_cost(std::size_t particles, double rate, const std::string& scheme) {
-  const IntegratorSpec resolved = IntegratorSpec{.name = scheme}.resolved_for(rate);
+double rate_cost(std::size_t particles, double rate, const std::string& scheme,
+                 StokesReference stokes) {
+  const IntegratorSpec resolved = IntegratorSpec{.name = scheme}.resolved_for(rate, stokes);
   const IntegratorTraits& t = integrators().at(resolved.name).traits;
   const double size =
       t.minimises ? minimiser_scale(particles) : static_cast<double>(particles) / 1000.0;
-  return t.seconds_at_reference * size * std::pow(rate / 1e-5, t.rate_exponent);
+  return size * std::max(t.floor_seconds,
+                         t.seconds_at_reference * std::pow(rate / 1e-5, t.rate_exponent));
 }
 
 void require_sorted_unique(std::vector<double>& values, const char* entry, const char* context) {
@@ -155,7 +157,7 @@ SweepPlan make_sweep_plan(const SweepSpec& spec) {
                             spec.directory / "runs" /
                                 fmt::format("phi{:.4f}_gt{:.3e}_seed{}.h5", packing.volume_fraction,
                                             rate, packing.seed),
-                            rate_cost(plan.particles, rate, spec.scheme)});
+                            rate_cost(plan.particles, rate, spec.scheme, spec.stokes)});
     }
     if (plan.quasi_static) {
       plan.cases.push_back(

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "micro/model/stokes_friction.h"
 #include "micro/protocol/aqs.h"
 
 namespace softglass::micro {
@@ -61,7 +62,10 @@ struct SweepSpec {
   bool quasi_static = true;              // a quasi-static case per (φ, seed)
   double quasi_static_strain_step = kDefaultAqsStrainStep;
   double quasi_static_force_tolerance = AqsSettings{}.relative_force;  // residual / mean force
-  std::string scheme = "auto";  // the runs' integrator: only the cost estimates use it
+  // The runs' integrator and what their Stokes friction acts against (which
+  // `auto` resolves by): only the cost estimates use them.
+  std::string scheme = "auto";
+  StokesReference stokes = StokesReference::affine;
 };
 
 struct SweepPacking {
@@ -100,8 +104,10 @@ struct SweepPlan {
 // for an implicit run) is not.
 /// The size factor of the minimisers, (N/1000)^1.35.
 double minimiser_scale(std::size_t particles);
-/// A case of N particles sheared at γ̃ `rate` by `scheme` (`auto` resolved here).
-double rate_cost(std::size_t particles, double rate, const std::string& scheme);
+/// A case of N particles sheared at γ̃ `rate` by `scheme` (`auto` resolved
+/// here, by `stokes`).
+double rate_cost(std::size_t particles, double rate, const std::string& scheme,
+                 StokesReference stokes);
 
 /// Sorts `values` and throws InputError "<context>: '<entry>' lists x twice"
 /// for two values equal to 1e-9.

@@ -90,7 +90,7 @@ TEST_P(LatticeOscillation, ReproducesTheAffineStressSampleBySample) {
   LeesEdwardsBox box(cells * a);
   OverdampedShear flow(ContactSystem(lattice, box, testing::named_law("hertz"), 0.6), model,
                        ShearDrive::oscillatory(gamma0));
-  const IntegratorSpec scheme = oscillation_integrator({}, protocol);
+  const IntegratorSpec scheme = oscillation_integrator({}, protocol, model.drag.stokes.reference);
   const auto integrator = make_integrator(scheme);
   const OscillationResult r = run_oscillation(flow, *integrator, protocol);
 
@@ -144,7 +144,7 @@ OscillationResult oscillate_packing(const Packing& packing, double skin, bool eh
   OverdampedShear flow(
       ContactSystem(packing.particles, packing.box, testing::named_law("seth2011"), skin), model,
       ShearDrive::oscillatory(amplitude));
-  const auto integrator = make_integrator(oscillation_integrator({}, protocol));
+  const auto integrator = make_integrator(oscillation_integrator({}, protocol, model.drag.stokes.reference));
   OscillationResult r = run_oscillation(flow, *integrator, protocol);
   EXPECT_TRUE(r.converged) << r.stop_reason;
   return r;
@@ -213,7 +213,7 @@ TEST(OscillationCheckpoints, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
     model.gamma_tilde = protocol.peak_gamma_tilde();
     OverdampedShear flow(ContactSystem(packing.particles, packing.box, law, spec.skin), model,
                          ShearDrive::oscillatory(protocol.amplitude));
-    const IntegratorSpec scheme = oscillation_integrator({}, protocol);
+    const IntegratorSpec scheme = oscillation_integrator({}, protocol, model.drag.stokes.reference);
     const auto integrator = make_integrator(scheme);
     ShearCheckpointing checkpointing{200, save, [&] { return make_integrator(scheme); }, resume};
     return run_oscillation(flow, *integrator, protocol, {}, checkpointing);

@@ -71,24 +71,30 @@ TEST(StiffIntegrators, RegisteredByName) {
   EXPECT_THROW(bad.validate(), InputError);
 }
 
-// `auto` (the default) is the explicit scheme where it is accurate and cheap
-// and BDF2 below kAutoImplicitBelow; it must be resolved before an
-// integrator is made, and a zero tolerance becomes the chosen scheme's default.
-TEST(StiffIntegrators, AutoPicksTheSchemeByRate) {
+// `auto` (the default) is the explicit scheme where it is accurate and cheap —
+// at γ̃ ≥ kAutoImplicitBelow with the Stokes friction against the affine flow —
+// and BDF2 elsewhere; it must be resolved before an integrator is made, and a
+// zero tolerance becomes the chosen scheme's default.
+TEST(StiffIntegrators, AutoPicksTheSchemeByRateAndStokesReference) {
   const IntegratorSpec spec;
   EXPECT_EQ(spec.name, "auto");
   EXPECT_THROW(make_integrator(spec), InputError);
-  const IntegratorSpec fast = spec.resolved_for(kAutoImplicitBelow);
+  const IntegratorSpec fast = spec.resolved_for(kAutoImplicitBelow, StokesReference::affine);
   EXPECT_EQ(fast.name, "euler");
   EXPECT_EQ(fast.tolerance, default_tolerance("euler"));
-  const IntegratorSpec slow = spec.resolved_for(0.5 * kAutoImplicitBelow);
+  const IntegratorSpec slow = spec.resolved_for(0.5 * kAutoImplicitBelow, StokesReference::affine);
   EXPECT_EQ(slow.name, "bdf2");
   EXPECT_EQ(slow.tolerance, default_tolerance("bdf2"));
   EXPECT_EQ(make_integrator(slow)->name(), "bdf2");
+  // Pair dashpots: every explicit step would solve a coupled velocity system.
+  for (const double rate : {1e-9, kAutoImplicitBelow, 1e-2})
+    EXPECT_EQ(spec.resolved_for(rate, StokesReference::neighbours).name, "bdf2") << rate;
   // A given tolerance is kept, and a named scheme is never replaced.
   IntegratorSpec given{.name = "euler", .tolerance = 3e-5};
-  EXPECT_EQ(given.resolved_for(1e-9).name, "euler");
-  EXPECT_EQ(given.resolved_for(1e-9).tolerance, 3e-5);
+  for (const auto stokes : {StokesReference::affine, StokesReference::neighbours}) {
+    EXPECT_EQ(given.resolved_for(1e-9, stokes).name, "euler");
+    EXPECT_EQ(given.resolved_for(1e-9, stokes).tolerance, 3e-5);
+  }
 }
 
 // Where the explicit scheme is cheap (γ̃ = 1e-4) both integrate the same

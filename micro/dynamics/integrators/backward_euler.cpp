@@ -335,10 +335,13 @@ IntegratorEntry implicit_integrator() {
            .minimises = true}};
 }
 
-// The default below γ̃ = 1e-5 (`auto`). Tolerance 3e-3: as accurate as
-// `implicit` at 1e-3 (docs/integrators.md, "BDF2"). Cost: 3.1 s × (γ̃/1e-5)^-0.52
-// per 5 strain at N = 1000, fitted to seven cases of the `paper` sweep at
-// φ = 0.80 from 1e-9 to 1e-6 (two at a time on two cores).
+// The default below γ̃ = 1e-5, and at every rate with the Stokes friction
+// between neighbours (`auto`). Tolerance 3e-3: as accurate as `implicit` at
+// 1e-3 (docs/integrators.md, "BDF2"). Cost: 3.1 s × (γ̃/1e-5)^-0.52 per 5
+// strain at N = 1000, fitted to seven cases of the `paper` sweep at φ = 0.80
+// from 1e-9 to 1e-6 (two at a time on two cores), and at least 3 s: at 1e-4,
+// 1e-3 and 1e-2 a case took 3.2–3.5 s (softglass preset, φ = 0.80 and 0.90),
+// about a step per stress sample, each with its velocity solve.
 IntegratorEntry bdf2_integrator() {
   return {"bdf2",
           "variable-step BDF2 as a minimising movement, Newton-CG, error control (for low gamma~)",
@@ -347,6 +350,7 @@ IntegratorEntry bdf2_integrator() {
           {.default_tolerance = 3e-3,
            .seconds_at_reference = 3.1,
            .rate_exponent = -0.52,
+           .floor_seconds = 3.0,
            .minimises = true}};
 }
 
