@@ -397,24 +397,34 @@ IncrementalResult IncrementalMinimiser::minimise(
   relief_.assign(drag.size(), 0.5);
   damping_ = 0.0;
 
-  // Φ(0) for the energy change reported at the end. A zero guess is that very
-  // point (AQS after a plastic event or a list rebuild): it is not evaluated twice.
-  Value start{}, value{}, trial_value{};
-  origin_.assign(n, Vec3::Zero());
-  if (!evaluate_at(system, proximal, drag, h, origin_, start, gradient_, sliding_)) {
-    result.list_invalid = true;
-    return result;
+  // Φ(0), to compare the guess with and for `energies`. A zero guess is that
+  // very point (AQS after a plastic event or a list rebuild): it is not
+  // evaluated twice.
+  Value value{}, trial_value{};
+  const bool at_origin = is_origin(u);
+  double phi_start = 0.0;
+  if (at_origin || settings_.compare_guess || energies) {
+    origin_.assign(n, Vec3::Zero());
+    if (!evaluate_at(system, proximal, drag, h, origin_, value, gradient_, sliding_)) {
+      result.list_invalid = true;
+      return result;
+    }
+    phi_start = value.elastic + value.proximal + value.dissipation;
   }
-  const double phi_start = start.elastic + start.proximal + start.dissipation;
-  value = start;
-  if (!is_origin(u) && !evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_)) {
-    result.list_invalid = true;
-    return result;
-  }
-  // A guess worse than no move at all is dropped.
-  if (value.elastic + value.proximal + value.dissipation > phi_start) {
-    std::fill(u.begin(), u.end(), Vec3::Zero());
-    evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);
+  if (!at_origin) {
+    Value guess{};
+    if (!evaluate_at(system, proximal, drag, h, u, guess, gradient_, sliding_)) {
+      result.list_invalid = true;
+      return result;
+    }
+    // A guess worse than no move at all is dropped.
+    if (settings_.compare_guess &&
+        guess.elastic + guess.proximal + guess.dissipation > phi_start) {
+      std::fill(u.begin(), u.end(), Vec3::Zero());
+      evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);
+    } else {
+      value = guess;
+    }
   }
   if (energies) energies->assign(1, value.elastic + value.proximal + value.dissipation - phi_start);
   double last_gnorm = 0.0;  // ‖g‖₂ at the last iteration
@@ -453,8 +463,6 @@ IncrementalResult IncrementalMinimiser::minimise(
     const LineSearch searched = line_search(system, proximal, drag, h, u, value, trial_value, t);
     if (searched == LineSearch::list_invalid) {
       result.list_invalid = true;
-      result.energy_change = value.elastic - start.elastic;
-      result.max_displacement = max_norm(u);
       return result;
     }
     if (searched == LineSearch::failed) break;
@@ -474,8 +482,6 @@ IncrementalResult IncrementalMinimiser::minimise(
       break;
     }
   }
-  result.energy_change = value.elastic - start.elastic;
-  result.max_displacement = max_norm(u);
   return result;
 }
 

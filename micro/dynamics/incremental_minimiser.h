@@ -72,6 +72,10 @@ struct IncrementalSettings {
   double absolute_force = 0.0;
   bool loosen = false;
   int max_iterations = 60;
+  /// Evaluate Φ at u = 0 too, and start from there if the guess is worse.
+  /// The implicit steps turn it off: their guess is the step's predictor, and
+  /// the extra force evaluation was 6.5 % of a run at γ̃ = 1e-9 (N = 1000).
+  bool compare_guess = true;
 };
 
 /// The frozen drag of one step (from the contacts at the step's start).
@@ -115,9 +119,7 @@ struct IncrementalResult {
   // system is at the last accepted point x⁰ + u (valid), not converged.
   bool abandoned = false;
   int iterations = 0;
-  double residual = 0.0;          // max |∂Φ/∂u| at the end (units E* R²)
-  double energy_change = 0.0;     // E(x⁰ + u) − E(x⁰)
-  double max_displacement = 0.0;  // max |u_α|
+  double residual = 0.0;  // max |∂Φ/∂u| at the end (units E* R²)
 };
 
 class IncrementalMinimiser {
@@ -131,7 +133,7 @@ class IncrementalMinimiser {
   /// particle (empty: none), `drag` the frozen drag (may be empty) and `h` the
   /// step. On return the system is at x⁰ + u with its forces computed there
   /// (also when `list_invalid`). If `energies` is given, Φ after each iteration is
-  /// appended (relative to Φ at the start). `max_iterations` ≥ 0 overrides the
+  /// appended (relative to Φ at u = 0, then evaluated whatever compare_guess says). `max_iterations` ≥ 0 overrides the
   /// settings' limit for this call. `hopeless(u, move)`, if given, is asked
   /// after every accepted iteration with the iterate and the largest particle
   /// move of that iteration; true stops the solve (`abandoned`).

@@ -42,12 +42,11 @@
 // run, and nothing else needs it between the stress samples, where it still
 // runs (OverdampedShear::accept_step_velocities). The step is
 // accepted when max_α e_α ≤ tolerance (units of R); the next step is
-// h · min(2, max(0.2, 0.9 √(tol/e))). A step whose nonlinear solve fails is
-// retried with h/4. BDF2 (Formula below) starts from the second-order
-// predictor h v_n + ½h²(v_n − v_{n−1})/h_{n−1}, turns its distance to the
-// solution into the local error by Milne's device, and grows the step by
-// 0.9 (tol/e)^{1/3}; its first step, and a step more than twice the last, is
-// a backward-Euler one.
+// h · min(1.5, max(0.2, 0.9 √(tol/e))) (size_factor says why). A step whose
+// nonlinear solve fails is retried with h/4. BDF2 (Formula below) starts from
+// the second-order predictor h v_n + ½h²(v_n − v_{n−1})/h_{n−1}, and turns
+// its distance to the solution into the local error by Milne's device; its
+// first step, and a step more than twice the last, is a backward-Euler one.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -75,11 +74,18 @@ constexpr double kWidestMargin = 0.2;
 // Variable-step BDF2 is zero-stable for ratios below 1 + √2.
 constexpr double kMaxBdf2Ratio = 2.0;
 
+// Largest growth of the step after an accepted one. With 2, 28 % of the steps
+// that grew were rejected next (N = 1000, φ = 0.80, γ̃ = 1e-9, 5 strain, mean
+// growth 1.56): the error rises faster than the controller's model as an
+// event starts.
+constexpr double kMaxGrowth = 1.5;
+
 class BackwardEuler final : public Integrator {
  public:
   BackwardEuler(const IntegratorSpec& spec, int order) : spec_(spec), order_(order) {
     IncrementalSettings s;
     s.relative_force = spec.solver_tolerance;
+    s.compare_guess = false;  // the guess is the predictor
     minimiser_.set_settings(s);
   }
 
@@ -187,7 +193,7 @@ class BackwardEuler final : public Integrator {
         if (partial <= spec_.tolerance && std::max(predicted, list_margin) < 0.5 * widest) {
           list_margin = widest;
         } else {
-          h *= partial > spec_.tolerance ? std::max(0.2, size_factor(partial, f)) : 0.25;
+          h *= partial > spec_.tolerance ? std::max(0.2, size_factor(partial)) : 0.25;
         }
         continue;
       }
@@ -199,7 +205,7 @@ class BackwardEuler final : public Integrator {
         continue;
       }
       const double error = step_error(f);
-      const double factor = size_factor(error, f);
+      const double factor = size_factor(error);
       if (error > spec_.tolerance) {
         flow.restore(before_);
         record_rejected(Rejection::error);
@@ -216,7 +222,7 @@ class BackwardEuler final : public Integrator {
       record_accepted(h);
       // No growth right after a rejection (Hairer & Wanner, Solving ODEs II,
       // IV.8): the rejected size was too large a moment ago.
-      const double growth = rejected ? 1.0 : 2.0;
+      const double growth = rejected ? 1.0 : kMaxGrowth;
       if (h < max_step || factor < 1.0) proposal_ = h * std::clamp(factor, 0.2, growth);
       return h;
     }
@@ -270,12 +276,18 @@ class BackwardEuler final : public Integrator {
             2.0 * (1.0 + w) * (1.0 + w) / (6.0 * w * w + 12.0 * w + 5.0)};
   }
 
-  // The controller's factor 0.9 (tol/e)^{1/(p+1)} for a scheme of order p
-  // (2 for e = 0).
-  double size_factor(double error, const Formula& f) const {
+  // The controller's factor 0.9 (tol/e)^{1/2} (2 for e = 0), for either
+  // order. An error ∝ h^{p+1} would call for the exponent 1/3 with BDF2, but
+  // from a rejected attempt to its retry (the same x_n, a smaller h) the error
+  // fell like h^2.0 on average, not h^3 (27 000 retries; N = 1000, φ = 0.80,
+  // γ̃ = 1e-9): the forces are not smooth on the step's scale (a film's drag
+  // ∝ |w|^{1/2} as its sliding velocity passes through zero, contacts opening
+  // and closing), so the local error behaves as a first-order one. With 1/3
+  // a retry was cut too little and rejected again. Exponent 1/2 and the growth
+  // cap kMaxGrowth: 7 % fewer Newton iterations in that run.
+  double size_factor(double error) const {
     if (error <= 0.0) return 2.0;
-    const double ratio = spec_.tolerance / error;
-    return 0.9 * (f.order == 2 ? std::cbrt(ratio) : std::sqrt(ratio));
+    return 0.9 * std::sqrt(spec_.tolerance / error);
   }
 
   // The error constant × max_α |u_α − predicted_α| for the solution (or
