@@ -137,7 +137,8 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   ContactSystem system(record.packing_particles, record.packing_box, law, prm.packing.skin);
   OverdampedShear flow(std::move(system), prm.shear_model);
   // `auto` becomes a concrete scheme for this run's rate (integrator.h).
-  const IntegratorSpec scheme = prm.integrator.resolved_for(prm.shear_model.gamma_tilde, prm.shear_model.drag.stokes.reference);
+  const IntegratorSpec scheme = prm.integrator.resolved_for(prm.shear_model.gamma_tilde,
+                                                            prm.shear_model.drag.stokes.reference);
   const auto integrator = make_integrator(scheme);
   const DynamicsCheckpoints resumable(checkpoints, scheme);
   ShearRecord shear;
@@ -182,7 +183,8 @@ void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<co
   OverdampedShear flow(
       ContactSystem(record.packing_particles, record.packing_box, law, prm.packing.skin), model,
       drive);
-  const IntegratorSpec scheme = oscillation_integrator(prm.integrator, protocol, prm.shear_model.drag.stokes.reference);
+  const IntegratorSpec scheme =
+      oscillation_integrator(prm.integrator, protocol, prm.shear_model.drag.stokes.reference);
   const auto integrator = make_integrator(scheme);
   const DynamicsCheckpoints resumable(checkpoints, scheme);
   OscillationRecord oscillation;

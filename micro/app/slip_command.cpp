@@ -160,7 +160,8 @@ void slip_command(const CommandOptions& options) {
       OverdampedShear flow(std::move(system), model);
       if (spec.solvent == SolventReference::local_mean)
         flow.set_solvent_flow(SolventFlow::local_mean(walls.walls.lower, walls.walls.upper));
-      const auto integrator = make_integrator(scheme.resolved_for(rate, model.drag.stokes.reference));
+      const auto integrator =
+          make_integrator(scheme.resolved_for(rate, model.drag.stokes.reference));
       const WallRunResult run = run_wall_shear(flow, *integrator, spec.run);
       const WallRunSummary summary = summarise_wall_run(run);
       write_run(h5, run, summary, walls.walls, identity);

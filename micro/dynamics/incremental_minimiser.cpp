@@ -418,8 +418,7 @@ IncrementalResult IncrementalMinimiser::minimise(
       return result;
     }
     // A guess worse than no move at all is dropped.
-    if (settings_.compare_guess &&
-        guess.elastic + guess.proximal + guess.dissipation > phi_start) {
+    if (settings_.compare_guess && guess.elastic + guess.proximal + guess.dissipation > phi_start) {
       std::fill(u.begin(), u.end(), Vec3::Zero());
       evaluate_at(system, proximal, drag, h, u, value, gradient_, sliding_);
     } else {

@@ -133,10 +133,10 @@ class IncrementalMinimiser {
   /// particle (empty: none), `drag` the frozen drag (may be empty) and `h` the
   /// step. On return the system is at x⁰ + u with its forces computed there
   /// (also when `list_invalid`). If `energies` is given, Φ after each iteration is
-  /// appended (relative to Φ at u = 0, then evaluated whatever compare_guess says). `max_iterations` ≥ 0 overrides the
-  /// settings' limit for this call. `hopeless(u, move)`, if given, is asked
-  /// after every accepted iteration with the iterate and the largest particle
-  /// move of that iteration; true stops the solve (`abandoned`).
+  /// appended (relative to Φ at u = 0, then evaluated whatever compare_guess says).
+  /// `max_iterations` ≥ 0 overrides the settings' limit for this call. `hopeless(u, move)`, if
+  /// given, is asked after every accepted iteration with the iterate and the largest particle move
+  /// of that iteration; true stops the solve (`abandoned`).
   using Hopeless = std::function<bool(const std::vector<Vec3>& u, double move)>;
   IncrementalResult minimise(ContactSystem& system, std::span<const double> proximal,
                              const FrozenDrag& drag, double h, std::vector<Vec3>& u,

@@ -110,8 +110,7 @@ std::vector<std::vector<double>> cycle_responses(const TimeSeries& series,
 }
 
 IntegratorSpec oscillation_integrator(const IntegratorSpec& spec,
-                                      const OscillationProtocol& protocol,
-                                      StokesReference stokes) {
+                                      const OscillationProtocol& protocol, StokesReference stokes) {
   IntegratorSpec resolved = spec.resolved_for(protocol.peak_gamma_tilde(), stokes);
   const double scale = std::min(1.0, protocol.amplitude);
   resolved.tolerance *= scale;

@@ -52,13 +52,12 @@ std::vector<std::vector<double>> cycle_responses(const TimeSeries& series,
                                                  const OscillationProtocol& protocol);
 
 /// The integrator of an oscillatory run: `spec` resolved for the peak rate
-/// (and `stokes`: IntegratorSpec::resolved_for), its position tolerance (units of R) and the implicit step's force residual
-/// (relative to the mean contact force) scaled by min(1, γ0), so that the
-/// displacements and force changes of a small-amplitude cycle, ∝ γ0, are
-/// resolved as finely as those of a unit strain.
+/// (and `stokes`: IntegratorSpec::resolved_for), its position tolerance (units of R) and the
+/// implicit step's force residual (relative to the mean contact force) scaled by min(1, γ0), so
+/// that the displacements and force changes of a small-amplitude cycle, ∝ γ0, are resolved as
+/// finely as those of a unit strain.
 IntegratorSpec oscillation_integrator(const IntegratorSpec& spec,
-                                      const OscillationProtocol& protocol,
-                                      StokesReference stokes);
+                                      const OscillationProtocol& protocol, StokesReference stokes);
 
 /// Runs `flow`, driven by ShearDrive::oscillatory(γ0) at γ̃ = γ0 ω̃ from time 0
 /// (std::invalid_argument otherwise), until periodic. `progress` gets the

@@ -74,7 +74,8 @@ OscillationPlan make_oscillation_plan(const OscillationSpec& spec) {
                               spec.directory / "runs" /
                                   fmt::format("phi{:.4f}_w{:.3e}_g{:.3e}_seed{}.h5",
                                               packing.volume_fraction, omega, gamma0, packing.seed),
-                              case_cost(plan.particles, protocol, spec.scheme, spec.stokes), protocol});
+                              case_cost(plan.particles, protocol, spec.scheme, spec.stokes),
+                              protocol});
       }
     }
   }

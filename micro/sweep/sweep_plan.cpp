@@ -39,8 +39,8 @@ double rate_cost(std::size_t particles, double rate, const std::string& scheme,
   const IntegratorTraits& t = integrators().at(resolved.name).traits;
   const double size =
       t.minimises ? minimiser_scale(particles) : static_cast<double>(particles) / 1000.0;
-  return size * std::max(t.floor_seconds,
-                         t.seconds_at_reference * std::pow(rate / 1e-5, t.rate_exponent));
+  return size *
+         std::max(t.floor_seconds, t.seconds_at_reference * std::pow(rate / 1e-5, t.rate_exponent));
 }
 
 void require_sorted_unique(std::vector<double>& values, const char* entry, const char* context) {

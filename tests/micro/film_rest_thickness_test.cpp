@@ -116,7 +116,8 @@ TEST(FilmRestThickness, RestoresTheLinearViscoelasticPlateau) {
     model.drag.rest_thickness = h0;
     OverdampedShear flow(ContactSystem(packing.particles, packing.box, law, spec.skin), model,
                          ShearDrive::oscillatory(amplitude));
-    const auto integrator = make_integrator(oscillation_integrator({}, protocol, model.drag.stokes.reference));
+    const auto integrator =
+        make_integrator(oscillation_integrator({}, protocol, model.drag.stokes.reference));
     const OscillationResult r = run_oscillation(flow, *integrator, protocol);
     EXPECT_TRUE(r.converged) << r.stop_reason;
     return std::pair(r.summary["loss"].mean, r.summary["storage"].mean);

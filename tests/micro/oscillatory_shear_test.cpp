@@ -144,7 +144,8 @@ OscillationResult oscillate_packing(const Packing& packing, double skin, bool eh
   OverdampedShear flow(
       ContactSystem(packing.particles, packing.box, testing::named_law("seth2011"), skin), model,
       ShearDrive::oscillatory(amplitude));
-  const auto integrator = make_integrator(oscillation_integrator({}, protocol, model.drag.stokes.reference));
+  const auto integrator =
+      make_integrator(oscillation_integrator({}, protocol, model.drag.stokes.reference));
   OscillationResult r = run_oscillation(flow, *integrator, protocol);
   EXPECT_TRUE(r.converged) << r.stop_reason;
   return r;
