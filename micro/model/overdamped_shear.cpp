@@ -105,12 +105,17 @@ void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
 
 void OverdampedShear::update_max_speed() {
   const std::vector<Vec3>& velocity = system_.particles().velocity;
-  double speed2 = 0.0;
-#pragma omp simd reduction(max : speed2)
-  for (std::size_t a = 0; a < velocity.size(); ++a)
-    speed2 = std::max(speed2, velocity[a].squaredNorm());
+  // The maximum alone would let a NaN through (max(s, NaN) is s); the sum of
+  // the squares carries it, and an infinity, to the test.
+  double speed2 = 0.0, sum = 0.0;
+#pragma omp simd reduction(max : speed2) reduction(+ : sum)
+  for (std::size_t a = 0; a < velocity.size(); ++a) {
+    const double s = velocity[a].squaredNorm();
+    speed2 = std::max(speed2, s);
+    sum += s;
+  }
   max_speed_ = std::sqrt(speed2);
-  if (!std::isfinite(max_speed_)) {
+  if (!std::isfinite(sum)) {
     throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
   }
 }

@@ -3,6 +3,9 @@
 // viscous part much smaller than the elastic one, and N2 < 0 (docs/physics.md; the paper).
 #include <gtest/gtest.h>
 
+#include <limits>
+
+#include "common/errors.h"
 #include "micro_test_support.h"
 
 namespace softglass::micro {
@@ -43,6 +46,29 @@ TEST(SteadyShear, StressSignsOfTheStationaryState) {
   // The elastic stress dominates (the paper: σ^e ≥ 100 σ^v over its range; at
   // the fast end γ̃ = 1e-4 the ratio is smallest, so only ≫ 1 is asserted).
   EXPECT_GT(m.elastic_to_viscous, 10.0);
+}
+
+// A velocity that is not a number stops the run with a NumericalError naming
+// it, wherever it sits among the particles: a maximum over the speeds alone
+// passes a NaN by (max(s, NaN) is s) and the run would go on with it.
+TEST(SteadyShear, NonFiniteVelocityIsAnError) {
+  const PackingSpec spec = testing::small_packing_spec(3, 0.8, 200);
+  const auto law = testing::named_law("seth2011");
+  const Packing packing = make_packing(spec, law);
+  ShearModel model;
+  model.gamma_tilde = 1e-4;
+  OverdampedShear flow(ContactSystem(packing.particles, packing.box, law, spec.skin), model);
+  flow.sample_stress_from(std::numeric_limits<double>::infinity());  // no re-evaluation
+  flow.evaluate();
+  std::vector<Vec3> velocity(flow.system().particles().velocity);
+  flow.accept_step_velocities(velocity);  // finite: accepted
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    for (const std::size_t at : {std::size_t{0}, velocity.size() / 2, velocity.size() - 1}) {
+      std::vector<Vec3> broken = velocity;
+      broken[at].y() = bad;
+      EXPECT_THROW(flow.accept_step_velocities(broken), NumericalError) << bad << " at " << at;
+    }
 }
 
 }  // namespace
