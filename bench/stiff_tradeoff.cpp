@@ -16,14 +16,21 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/errors.h"
 #include "micro/protocol/aqs.h"
 #include "micro/dynamics/integrator.h"
 #include "micro/packing/packing.h"
 
 using namespace softglass::micro;
+using softglass::InputError;
+
+int run_all(const PackingSpec& spec, double gamma_tilde, double strain, double time_limit,
+            double sample, double preshear, const std::vector<std::string>& runs);
 
 int main(int argc, char** argv) {
   CLI::App app{"stiff_tradeoff: integrator cost and accuracy at one shear rate"};
@@ -44,7 +51,24 @@ int main(int argc, char** argv) {
                  "aqs:strain_step")
       ->required();
   CLI11_PARSE(app, argc, argv);
+  return softglass::run_reporting_errors("stiff_tradeoff", [&] {
+    return run_all(spec, gamma_tilde, strain, time_limit, sample, preshear, runs);
+  });
+}
 
+// A --run value's number, or an InputError naming it.
+double run_number(const std::string& run, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(v) && v > 0) return v;
+  } catch (const std::logic_error&) {
+  }
+  throw InputError("--run " + run + ": '" + text + "' is not a positive number");
+}
+
+int run_all(const PackingSpec& spec, double gamma_tilde, double strain, double time_limit,
+            double sample, double preshear, const std::vector<std::string>& runs) {
   std::shared_ptr<const ContactLaw> law = make_contact_law({});
   Packing packing = make_packing(spec, law);
   if (preshear > 0) {
@@ -73,9 +97,9 @@ int main(int argc, char** argv) {
       from = colon + 1;
     }
     const std::string scheme = parts[0];
-    const double value = parts.size() > 1 ? std::stod(parts[1]) : 0.0;
+    const double value = parts.size() > 1 ? run_number(run, parts[1]) : 0.0;
     const bool implicit = scheme != "euler";  // implicit, bdf2: the third number is the max step
-    const double third = parts.size() > 2 ? std::stod(parts[2])
+    const double third = parts.size() > 2 ? run_number(run, parts[2])
                                           : (implicit ? IntegratorSpec{}.max_step
                                                       : IntegratorSpec{}.stability_fraction);
     const auto start = std::chrono::steady_clock::now();
