@@ -47,6 +47,19 @@ double forcing_term(double gnorm, double last_gnorm, double largest_force, doubl
   return std::min(kMaxForcing, std::max(gamma * ratio * ratio, 0.5 * tolerance / largest_force));
 }
 
+// The displacement test (IncrementalSettings::move_tolerance) after a full,
+// undamped Newton step that moved no particle by more than `move`, the one
+// before having moved them by `last` (0: not such a step). Newton's iterates
+// close in on the solution at the rate θ = move/last; what remains is then
+// about θ/(1 − θ) × move (Hairer & Wanner, Solving ODEs II, IV.8, the stopping
+// rule of the simplified Newton iteration of implicit Runge–Kutta steps; CVODE
+// stops its Newton iteration the same way, at a tenth of the local error
+// test). Without a rate (the first such step) the move itself is the estimate.
+bool within_move_tolerance(double move, double last, double tolerance) {
+  const double remaining = last > move ? move * move / (last - move) : move;
+  return remaining <= tolerance;
+}
+
 // Whether every component of u is +0, bit for bit: then Φ at u is Φ at the
 // origin, evaluated from the very same input (−0 is not taken for +0: it can
 // turn the sign of a zero gradient component).
@@ -427,6 +440,7 @@ IncrementalResult IncrementalMinimiser::minimise(
   }
   if (energies) energies->assign(1, value.elastic + value.proximal + value.dissipation - phi_start);
   double last_gnorm = 0.0;  // ‖g‖₂ at the last iteration
+  double last_newton_move = 0.0;  // of the last iteration, if a full undamped step; else 0
 
   for (int it = 0;; ++it) {
     const ContactField& field = system.forces();
@@ -469,6 +483,7 @@ IncrementalResult IncrementalMinimiser::minimise(
     for (std::size_t k = 0; k < drag.size(); ++k) {
       relief_[k] = sliding_trial_.speed[k] >= 0.9 * sliding_.speed[k] ? 0.5 : 0.0;
     }
+    const bool undamped = damping_ == 0.0;
     if (t == 1.0) damping_ = damping_ < 1e-8 * diagonal_scale_ ? 0.0 : 0.1 * damping_;
     u.swap(trial_);
     gradient_.swap(gradient_trial_);
@@ -476,7 +491,18 @@ IncrementalResult IncrementalMinimiser::minimise(
     value = trial_value;
     if (energies)
       energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
-    if (hopeless && hopeless(u, t * max_norm(direction_))) {
+    const double move = t * max_norm(direction_);
+    if (t == 1.0 && undamped) {
+      if (within_move_tolerance(move, last_newton_move, settings_.move_tolerance)) {
+        result.residual = max_norm(gradient_);
+        result.converged = true;
+        break;
+      }
+      last_newton_move = move;
+    } else {
+      last_newton_move = 0.0;
+    }
+    if (hopeless && hopeless(u, move)) {
       result.abandoned = true;
       break;
     }

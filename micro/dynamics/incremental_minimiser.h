@@ -31,7 +31,11 @@
 // curvature and returns the iterate so far (Steihaug's truncated CG), which is
 // a descent direction; the Hessian model is then damped, H + μI (Levenberg–
 // Marquardt), μ raised tenfold until CG sees none, and lowered tenfold after
-// each full Newton step. So Φ decreases monotonically, at every iteration. (A
+// each full Newton step. So Φ decreases monotonically, at every iteration.
+// The solve stops when no net force exceeds its tolerance or, when the caller
+// measures accuracy in distance (the implicit step), when the convergence
+// rate of the last two Newton steps says the rest of it would move no particle
+// by more than `move_tolerance`. (A
 // sparse Cholesky factorisation was tried first: the fill-in of a periodic 3D
 // contact network made it 10× slower than CG already at N = 256.)
 
@@ -71,6 +75,11 @@ struct IncrementalSettings {
   double relative_force = 1e-9;
   double absolute_force = 0.0;
   bool loosen = false;
+  /// Converged also when, after a full undamped Newton step, the displacement
+  /// still to come is estimated below this (units of R, largest over the
+  /// particles; 0: off) from the convergence rate of the last two such steps
+  /// (within_move_tolerance in incremental_minimiser.cpp).
+  double move_tolerance = 0.0;
   int max_iterations = 60;
   /// Evaluate Φ at u = 0 too, and start from there if the guess is worse.
   /// The implicit steps turn it off: their guess is the step's predictor, and

@@ -254,5 +254,38 @@ TEST(IncrementalMinimiser, ConvergesWithMonotoneEnergy) {
   EXPECT_EQ(c.force_evaluations, 1 + c.iterations + c.backtracks);
 }
 
+// The displacement stopping rule: a solve stopped by it is as close to the
+// tightly converged minimiser as it promises (the rest of the solve would move
+// no particle by more than move_tolerance), and is stopped sooner. The problem
+// is an implicit step's: a proximal term ζ/h per particle on the affinely
+// sheared packing.
+TEST(IncrementalMinimiser, MoveToleranceBoundsTheDistanceToTheMinimiser) {
+  const Packing& packing = small_packing();
+  const auto solve = [&](const IncrementalSettings& settings, IncrementalCounters& counters) {
+    ContactSystem system(packing.particles, packing.box, testing::named_law("seth2011"), 0.6);
+    system.ensure_neighbours(0.1, 0.01);
+    system.shear(0.01);
+    const std::vector<double> proximal(system.size(), 1e-2);
+    IncrementalMinimiser minimiser(settings);
+    std::vector<Vec3> u;
+    const IncrementalResult r = minimiser.minimise(system, proximal, {}, 1.0, u);
+    EXPECT_TRUE(r.converged);
+    counters = minimiser.counters();
+    return system.wrapped_in_label_order().position;
+  };
+  IncrementalCounters tight, stopped;
+  const auto reference = solve({.relative_force = 1e-12}, tight);
+  for (const double tolerance : {1e-3, 1e-4, 1e-5}) {
+    const auto x = solve({.relative_force = 1e-12, .move_tolerance = tolerance}, stopped);
+    double distance = 0.0;
+    for (std::size_t a = 0; a < x.size(); ++a)
+      distance = std::max(distance, (x[a] - reference[a]).norm());
+    std::printf("[ measured ] move tolerance %.0e: %zu of %zu Newton iterations, distance %.2e\n",
+                tolerance, stopped.iterations, tight.iterations, distance);
+    EXPECT_LE(distance, tolerance);
+    EXPECT_LT(stopped.iterations, tight.iterations);
+  }
+}
+
 }  // namespace
 }  // namespace softglass::micro
