@@ -493,7 +493,8 @@ IncrementalResult IncrementalMinimiser::minimise(
       energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
     const double move = t * max_norm(direction_);
     if (t == 1.0 && undamped) {
-      if (within_move_tolerance(move, last_newton_move, settings_.move_tolerance)) {
+      if (settings_.move_tolerance > 0.0 &&
+          within_move_tolerance(move, last_newton_move, settings_.move_tolerance)) {
         result.residual = max_norm(gradient_);
         result.converged = true;
         break;
