@@ -379,8 +379,9 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
 
 // The Newton direction, the Hessian model damped (Levenberg–Marquardt μ) while
 // CG meets negative curvature, then shortened so that no particle moves more
-// than kMaxMove.
-void IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
+// than kMaxMove. Returns the largest particle move along it.
+double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal,
+                                                     double eta) {
   int cg = newton_direction(proximal, eta);
   for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
     ++counters_.damping_raises;
@@ -390,8 +391,9 @@ void IncrementalMinimiser::damped_newton_direction(std::span<const double> proxi
   }
   counters_.cg_iterations += static_cast<std::size_t>(cg);
   const double longest = max_norm(direction_);
-  if (longest > kMaxMove)
-    for (auto& d : direction_) d *= kMaxMove / longest;
+  if (longest <= kMaxMove) return longest;
+  for (auto& d : direction_) d *= kMaxMove / longest;
+  return kMaxMove;
 }
 
 IncrementalResult IncrementalMinimiser::minimise(
@@ -470,7 +472,7 @@ IncrementalResult IncrementalMinimiser::minimise(
     // Levenberg–Marquardt damping μ: raised while CG meets negative curvature
     // (a plastic instability, or a contact's tangential softening), lowered
     // after full Newton steps, so that near a minimum the step is pure Newton.
-    damped_newton_direction(proximal, eta);
+    const double longest = damped_newton_direction(proximal, eta);
 
     double t = 1.0;
     const LineSearch searched = line_search(system, proximal, drag, h, u, value, trial_value, t);
@@ -491,7 +493,7 @@ IncrementalResult IncrementalMinimiser::minimise(
     value = trial_value;
     if (energies)
       energies->push_back(value.elastic + value.proximal + value.dissipation - phi_start);
-    const double move = t * max_norm(direction_);
+    const double move = t * longest;
     if (t == 1.0 && undamped) {
       if (settings_.move_tolerance > 0.0 &&
           within_move_tolerance(move, last_newton_move, settings_.move_tolerance)) {

@@ -173,7 +173,7 @@ class IncrementalMinimiser {
                      std::vector<Vec3>& out) const;
   /// Leaves the direction in direction_; returns the CG iterations.
   int newton_direction(std::span<const double> proximal, double eta);
-  void damped_newton_direction(std::span<const double> proximal, double eta);
+  double damped_newton_direction(std::span<const double> proximal, double eta);
   enum class LineSearch { accepted, failed, list_invalid };
   LineSearch line_search(ContactSystem& system, std::span<const double> proximal,
                          const FrozenDrag& drag, double h, const std::vector<Vec3>& u, Value& value,

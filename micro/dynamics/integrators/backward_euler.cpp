@@ -166,7 +166,7 @@ class BackwardEuler final : public Integrator {
       // uniform translation; so the solve also stops once Newton's rate says
       // that it would move no particle by more than a tenth of the step
       // tolerance (CVODE's fraction). At γ̃ = 1e-9 (N = 1000, softglass,
-      // 1 strain) that took 29 % fewer Newton and 34 % fewer CG iterations;
+      // 1 strain) that took 30 % fewer Newton and 35 % fewer CG iterations;
       // σ, N1, N2 moved by 0.02–0.07 % (median over 16 packings, N = 256,
       // 1e-9 and 1e-8) — docs/integrators.md, "Stopping the Newton iteration".
       IncrementalSettings settings = minimiser_.settings();
