@@ -130,9 +130,9 @@ void check_cases_before_work(const Sweep& sweep) {
 
 // The wall time of the cases not yet done, from the plan's cost model (core
 // seconds per 5 strain, docs/sweeps.md) at the runs' shortest length, spread
-// over the workers: a lower estimate. The model is calibrated on the literal
-// model (within about a factor 2 there); the default model's `paper` sweep
-// (docs/sweeps.md) took 1.3–2.3× the modelled time per case, on shared cores.
+// over the workers. The model is fitted to the default model's whole `paper`
+// sweep (fixed run length): there it is the expected time; runs that go on
+// past their shortest length (a target error) take longer.
 double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
   const double strain =
       sweep.plan.run ? sweep.plan.run->min_strain : sweep.parameters.base.protocol.min_strain;
@@ -281,8 +281,8 @@ class FlowCurveSweep final : public CaseSweep {
   std::string headline(std::size_t done, const Workers& workers) const override {
     const SweepPlan& plan = sweep_.plan;
     return fmt::format(
-        "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}; estimated at least "
-        "{:.2g} h (cost model, docs/sweeps.md)",
+        "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}; estimated {:.2g} h "
+        "at the runs' shortest length (cost model, docs/sweeps.md)",
         sweep_.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
         plan.directory.string(), estimated_hours(sweep_, workers.size()));
   }
