@@ -380,8 +380,7 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
 // The Newton direction, the Hessian model damped (Levenberg–Marquardt μ) while
 // CG meets negative curvature, then shortened so that no particle moves more
 // than kMaxMove. Returns the largest particle move along it.
-double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal,
-                                                     double eta) {
+double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   int cg = newton_direction(proximal, eta);
   for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
     ++counters_.damping_raises;

@@ -150,9 +150,8 @@ namespace {
 // docs/sweeps.md), every estimate is within a factor 2, and so is the total.
 TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
   const std::vector<std::pair<double, double>> measured = {
-      {1e-9, 163.5}, {3.16e-9, 123.1}, {1e-8, 58.1}, {3.16e-8, 36.6},
-      {1e-7, 16.0},  {3.16e-7, 9.3},   {1e-6, 5.6},  {3.16e-6, 3.8},
-      {1e-5, 3.1},   {3.16e-5, 2.5},   {1e-4, 2.3}};
+      {1e-9, 163.5}, {3.16e-9, 123.1}, {1e-8, 58.1}, {3.16e-8, 36.6}, {1e-7, 16.0}, {3.16e-7, 9.3},
+      {1e-6, 5.6},   {3.16e-6, 3.8},   {1e-5, 3.1},  {3.16e-5, 2.5},  {1e-4, 2.3}};
   const double measured_quasi_static = 142.4;
   std::vector<double> rates;
   for (const auto& [rate, seconds] : measured) rates.push_back(rate);
@@ -194,8 +193,7 @@ TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
                                                  .stokes = StokesReference::affine});
   ASSERT_EQ(affine_plan.cases.size(), measured_euler.size());
   for (std::size_t k = 0; k < measured_euler.size(); ++k)
-    EXPECT_NEAR(std::log(affine_plan.cases[k].cost / measured_euler[k].second), 0.0,
-                std::log(2.0))
+    EXPECT_NEAR(std::log(affine_plan.cases[k].cost / measured_euler[k].second), 0.0, std::log(2.0))
         << "euler, gamma~ " << measured_euler[k].first;
 
   // All-explicit runs cost far more at low rates than the implicit ones.
