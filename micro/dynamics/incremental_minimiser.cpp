@@ -380,8 +380,24 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
 // The Newton direction, the Hessian model damped (Levenberg–Marquardt μ) while
 // CG meets negative curvature, then shortened so that no particle moves more
 // than kMaxMove. Returns the largest particle move along it.
+// Along CG's last direction p (where it met pᵀHp ≤ 0): the proximal part
+// q = Σ_α ζ_α/h |p_α|² scales like 1/h, the rest c = pᵀHp − q is held fixed,
+// so the curvature c + q/s is positive for s < q/(−c).
+double IncrementalMinimiser::convex_fraction(std::span<const double> proximal) const {
+  const std::vector<Vec3>& p = cg_.p;
+  double q = 0.0;
+  for (std::size_t a = 0; a < proximal.size(); ++a) q += proximal[a] * p[a].squaredNorm();
+  const double rest = dot(p, cg_.hp) - q;
+  if (!(q > 0.0) || !(rest < 0.0)) return 1.0;
+  return std::min(1.0, q / -rest);
+}
+
 double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   int cg = newton_direction(proximal, eta);
+  if (negative_curvature_ && settings_.stop_when_unstable) {
+    counters_.cg_iterations += static_cast<std::size_t>(cg);
+    return 0.0;
+  }
   for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
     ++counters_.damping_raises;
     damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
@@ -472,6 +488,11 @@ IncrementalResult IncrementalMinimiser::minimise(
     // (a plastic instability, or a contact's tangential softening), lowered
     // after full Newton steps, so that near a minimum the step is pure Newton.
     const double longest = damped_newton_direction(proximal, eta);
+    if (negative_curvature_ && settings_.stop_when_unstable) {
+      result.unstable = true;
+      result.convex_fraction = convex_fraction(proximal);
+      break;
+    }
 
     double t = 1.0;
     const LineSearch searched = line_search(system, proximal, drag, h, u, value, trial_value, t);

@@ -32,6 +32,8 @@
 // a descent direction; the Hessian model is then damped, H + μI (Levenberg–
 // Marquardt), μ raised tenfold until CG sees none, and lowered tenfold after
 // each full Newton step. So Φ decreases monotonically, at every iteration.
+// (The implicit step stops at that first direction instead: a step across an
+// instability cannot be accurate — `stop_when_unstable`.)
 // The solve stops when no net force exceeds its tolerance or, when the caller
 // measures accuracy in distance (the implicit step), when the convergence
 // rate of the last two Newton steps says the rest of it would move no particle
@@ -81,6 +83,14 @@ struct IncrementalSettings {
   /// (within_move_tolerance in incremental_minimiser.cpp).
   double move_tolerance = 0.0;
   int max_iterations = 60;
+  /// Stop at the first direction p of non-positive curvature that CG meets
+  /// (`unstable`) instead of damping the Hessian model and going on. For the
+  /// implicit step: backward Euler over a step h follows an unstable mode of
+  /// the linearised motion (rate λ, a plastic instability) only while λh < 1,
+  /// which is where its proximal term keeps Φ convex along the mode; CG's
+  /// pᵀHp ≤ 0 certifies λh ≥ 1 along p, so the step cannot be accurate, and
+  /// each attempt that went on was rejected after several Newton iterations.
+  bool stop_when_unstable = false;
   /// Evaluate Φ at u = 0 too, and start from there if the guess is worse.
   /// The implicit steps turn it off: their guess is the step's predictor, and
   /// the extra force evaluation was 6.5 % of a run at γ̃ = 1e-9 (N = 1000).
@@ -127,6 +137,13 @@ struct IncrementalResult {
   // The caller's `hopeless` test stopped the solve after an iteration: the
   // system is at the last accepted point x⁰ + u (valid), not converged.
   bool abandoned = false;
+  // With stop_when_unstable: CG met non-positive curvature along p; the system
+  // is at the last accepted point x⁰ + u. `convex_fraction` is the fraction s
+  // of the step at which the proximal term, ∝ 1/(s h), would make the
+  // curvature along p vanish (the rest of the Hessian model taken as fixed);
+  // in (0, 1].
+  bool unstable = false;
+  double convex_fraction = 1.0;
   int iterations = 0;
   double residual = 0.0;  // max |∂Φ/∂u| at the end (units E* R²)
 };
@@ -174,6 +191,7 @@ class IncrementalMinimiser {
   /// Leaves the direction in direction_; returns the CG iterations.
   int newton_direction(std::span<const double> proximal, double eta);
   double damped_newton_direction(std::span<const double> proximal, double eta);
+  double convex_fraction(std::span<const double> proximal) const;
   enum class LineSearch { accepted, failed, list_invalid };
   LineSearch line_search(ContactSystem& system, std::span<const double> proximal,
                          const FrozenDrag& drag, double h, const std::vector<Vec3>& u, Value& value,

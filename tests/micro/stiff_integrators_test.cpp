@@ -287,5 +287,53 @@ TEST(IncrementalMinimiser, MoveToleranceBoundsTheDistanceToTheMinimiser) {
   }
 }
 
+// The instability stop of the implicit step (IncrementalSettings::
+// stop_when_unstable). The packing is sheared quasi-statically until a strain
+// step whose minimisation meets non-positive curvature (a plastic event: the
+// damped minimiser raises its damping). The same problem with a proximal term
+// far below the Hessian's scale (an implicit step much longer than the
+// relaxation time) stops with `unstable`: at a point no worse than the guess,
+// with a convex fraction in (0, 1] — the step at which the proximal term
+// would make the curvature along CG's direction vanish, here well below 1.
+// With a proximal term far above the contact stiffnesses (a step much shorter
+// than the relaxation time) Φ is convex and the solve converges.
+TEST(IncrementalMinimiser, StopsWhereTheStepIsUnstable) {
+  const Packing& packing = small_packing();
+  ContactSystem system(packing.particles, packing.box, testing::named_law("seth2011"), 0.6);
+  IncrementalMinimiser aqs({.relative_force = 1e-9});
+  std::vector<Vec3> u;
+  ContactSystem before = system;
+  for (int step = 0; step < 500; ++step) {
+    system.ensure_neighbours(0.1, system.box().strain() + 1e-3);
+    system.shear(1e-3);
+    before = system;
+    const std::size_t raises = aqs.counters().damping_raises;
+    u.assign(system.size(), Vec3::Zero());
+    aqs.minimise(system, {}, {}, 1.0, u);
+    if (aqs.counters().damping_raises > raises) break;
+  }
+  ASSERT_GT(aqs.counters().damping_raises, 0u) << "no plastic event in 0.5 strain";
+
+  const auto solve = [&](double proximal_value, std::vector<double>* energies) {
+    ContactSystem at = before;
+    IncrementalMinimiser minimiser({.relative_force = 1e-9, .stop_when_unstable = true});
+    std::vector<Vec3> from_origin(at.size(), Vec3::Zero());
+    return minimiser.minimise(at, std::vector<double>(at.size(), proximal_value), {}, 1.0,
+                              from_origin, energies);
+  };
+  std::vector<double> energies;
+  IncrementalResult r = solve(1e-12, &energies);
+  std::printf("[ measured ] unstable after %d Newton iterations, convex fraction %.3g\n",
+              r.iterations, r.convex_fraction);
+  EXPECT_TRUE(r.unstable);
+  EXPECT_FALSE(r.converged);
+  EXPECT_LE(energies.back(), 0.0);  // Φ relative to the guess (the origin)
+  EXPECT_GT(r.convex_fraction, 0.0);
+  EXPECT_LT(r.convex_fraction, 1e-3);
+  r = solve(1e3, nullptr);  // E* R against stiffnesses ≲ 1
+  EXPECT_TRUE(r.converged);
+  EXPECT_FALSE(r.unstable);
+}
+
 }  // namespace
 }  // namespace softglass::micro

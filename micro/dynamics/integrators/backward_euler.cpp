@@ -44,7 +44,10 @@
 // accepted when max_α e_α ≤ tolerance (units of R); the next step is
 // h · min(1.5, max(0.2, 0.9 √(tol/e))) (size_factor says why), and a rejected
 // one is retried with h · max(0.2, 0.9 tol/e) (retry_factor). A step whose
-// nonlinear solve fails is retried with h/4. BDF2 (Formula below) starts from
+// solve meets non-positive curvature spans a plastic instability faster than
+// the step can follow (λh ≥ 1 along an unstable mode of rate λ): it is
+// rejected at once, before any Newton move, and retried shorter (see the
+// `unstable` branch). A step whose nonlinear solve fails is retried with h/4. BDF2 (Formula below) starts from
 // the second-order predictor h v_n + ½h²(v_n − v_{n−1})/h_{n−1}, and turns
 // its distance to the solution into the local error by Milne's device; its
 // first step, and a step more than twice the last, is a backward-Euler one.
@@ -87,6 +90,7 @@ class BackwardEuler final : public Integrator {
     IncrementalSettings s;
     s.relative_force = spec.solver_tolerance;
     s.compare_guess = false;  // the guess is the predictor
+    s.stop_when_unstable = true;  // instead of damping through an instability
     minimiser_.set_settings(s);
   }
 
@@ -208,6 +212,17 @@ class BackwardEuler final : public Integrator {
         } else {
           h *= partial > spec_.tolerance ? std::max(0.2, size_factor(partial)) : 0.25;
         }
+        continue;
+      }
+      // The step spans an instability (λh ≥ 1 along CG's direction; see
+      // stop_when_unstable): it cannot be accurate. Counted as an error
+      // rejection, retried at half the step at which the proximal term would
+      // make Φ convex along that direction (at least a twentieth of h).
+      if (r.unstable) {
+        flow.restore(before_);
+        record_rejected(Rejection::error);
+        rejected = true;
+        h *= std::clamp(0.5 * r.convex_fraction, 0.05, 0.5);
         continue;
       }
       if (!r.converged && !r.abandoned) {
