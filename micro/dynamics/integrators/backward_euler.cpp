@@ -42,8 +42,7 @@
 // run, and nothing else needs it between the stress samples, where it still
 // runs (OverdampedShear::accept_step_velocities). The step is
 // accepted when max_α e_α ≤ tolerance (units of R); the next step is
-// h · min(1.5, max(0.2, 0.9 √(tol/e))) (size_factor says why), and a rejected
-// one is retried with h · max(0.2, 0.9 tol/e) (retry_factor). A step whose
+// h · min(1.5, max(0.2, 0.9 √(tol/e))) (size_factor says why). A step whose
 // solve meets non-positive curvature spans a plastic instability faster than
 // the step can follow (λh ≥ 1 along an unstable mode of rate λ): it is
 // rejected at once, before any Newton move, and retried shorter (see the
@@ -238,7 +237,7 @@ class BackwardEuler final : public Integrator {
         flow.restore(before_);
         record_rejected(Rejection::error);
         rejected = true;
-        h *= retry_factor(error);
+        h *= std::max(0.2, factor);
         continue;
       }
       // Accepted: the step's velocity u/(βh) stands for the flow's at x_{n+1}
@@ -316,19 +315,6 @@ class BackwardEuler final : public Integrator {
   double size_factor(double error) const {
     if (error <= 0.0) return 2.0;
     return 0.9 * std::sqrt(spec_.tolerance / error);
-  }
-
-  // The cut after a rejection, 0.9 tol/e (at least 0.2): exponent 1, not the
-  // ½ of size_factor. The rejections cluster at the onset of plastic events,
-  // where the error falls more slowly with h than elsewhere: over the chains
-  // of a rejection followed by another (N = 256, φ = 0.80, γ̃ = 1e-11, tolerance
-  // 1e-2) the error fell like h^1.0 (median; quartiles 0.2 and 1.3), so a cut
-  // by √(tol/e) left the retry above the tolerance again. With this cut (and
-  // the stopping test above), over 4 packings at 1e-9 and 1e-11 and
-  // tolerances 1e-3 … 1e-2: 6–18 % fewer CG iterations, 10 % more accepted
-  // steps and 15–20 % fewer rejected ones (docs/integrators.md).
-  double retry_factor(double error) const {
-    return std::max(0.2, 0.9 * spec_.tolerance / error);
   }
 
   // The error constant × max_α |u_α − predicted_α| for the solution (or
