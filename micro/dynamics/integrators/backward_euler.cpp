@@ -46,10 +46,11 @@
 // solve meets non-positive curvature spans a plastic instability faster than
 // the step can follow (λh ≥ 1 along an unstable mode of rate λ): it is
 // rejected at once, before any Newton move, and retried shorter (see the
-// `unstable` branch). A step whose nonlinear solve fails is retried with h/4. BDF2 (Formula below) starts from
-// the second-order predictor h v_n + ½h²(v_n − v_{n−1})/h_{n−1}, and turns
-// its distance to the solution into the local error by Milne's device; its
-// first step, and a step more than twice the last, is a backward-Euler one.
+// `unstable` branch). A step whose nonlinear solve fails is retried with h/4.
+// BDF2 (Formula below) starts from the second-order predictor
+// h v_n + ½h²(v_n − v_{n−1})/h_{n−1}, and turns its distance to the solution
+// into the local error by Milne's device; its first step, and a step more than
+// twice the last, is a backward-Euler one.
 #include <algorithm>
 #include <bit>
 #include <cmath>
