@@ -377,9 +377,6 @@ IncrementalMinimiser::LineSearch IncrementalMinimiser::line_search(
   return LineSearch::failed;
 }
 
-// The Newton direction, the Hessian model damped (Levenberg–Marquardt μ) while
-// CG meets negative curvature, then shortened so that no particle moves more
-// than kMaxMove. Returns the largest particle move along it.
 // Along CG's last direction p (where it met pᵀHp ≤ 0): the proximal part
 // q = Σ_α ζ_α/h |p_α|² scales like 1/h, the rest c = pᵀHp − q is held fixed,
 // so the curvature c + q/s is positive for s < q/(−c).
@@ -392,13 +389,14 @@ double IncrementalMinimiser::convex_fraction(std::span<const double> proximal) c
   return std::min(1.0, q / -rest);
 }
 
+// The Newton direction, the Hessian model damped (Levenberg–Marquardt μ) while
+// CG meets negative curvature (unless the solve stops there:
+// stop_when_unstable), then shortened so that no particle moves more than
+// kMaxMove. Returns the largest particle move along it.
 double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   int cg = newton_direction(proximal, eta);
-  if (negative_curvature_ && settings_.stop_when_unstable) {
-    counters_.cg_iterations += static_cast<std::size_t>(cg);
-    return 0.0;
-  }
-  for (int raise = 0; negative_curvature_ && raise < 8; ++raise) {
+  for (int raise = 0; negative_curvature_ && !settings_.stop_when_unstable && raise < 8;
+       ++raise) {
     ++counters_.damping_raises;
     damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
     invert_diagonal();

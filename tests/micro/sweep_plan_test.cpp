@@ -148,19 +148,27 @@ namespace {
 // model (friction between neighbours: `auto` is `bdf2` at every rate), the
 // means of its five N = 1000 packings at φ = 0.80 (one core each, 5 strain;
 // docs/sweeps.md), every estimate is within a factor 2, and so is the total.
+// The plan of one packing at φ = 0.80, N = 1000, at the rates of a measured
+// column (γ̃, seconds).
+SweepPlan column_plan(const std::vector<std::pair<double, double>>& column,
+                      StokesReference stokes, bool quasi_static) {
+  std::vector<double> rates;
+  for (const auto& [rate, seconds] : column) rates.push_back(rate);
+  return make_sweep_plan({.preset = "custom",
+                          .volume_fractions = {0.80},
+                          .gamma_tildes = rates,
+                          .packings = 1,
+                          .particles = 1000,
+                          .quasi_static = quasi_static,
+                          .stokes = stokes});
+}
+
 TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
   const std::vector<std::pair<double, double>> measured = {
       {1e-9, 163.5}, {3.16e-9, 123.1}, {1e-8, 58.1}, {3.16e-8, 36.6}, {1e-7, 16.0}, {3.16e-7, 9.3},
       {1e-6, 5.6},   {3.16e-6, 3.8},   {1e-5, 3.1},  {3.16e-5, 2.5},  {1e-4, 2.3}};
   const double measured_quasi_static = 142.4;
-  std::vector<double> rates;
-  for (const auto& [rate, seconds] : measured) rates.push_back(rate);
-  const SweepPlan plan = make_sweep_plan({.preset = "custom",
-                                          .volume_fractions = {0.80},
-                                          .gamma_tildes = rates,
-                                          .packings = 1,
-                                          .particles = 1000,
-                                          .stokes = StokesReference::neighbours});
+  const SweepPlan plan = column_plan(measured, StokesReference::neighbours, true);
   double estimated_total = 0.0, measured_total = measured_quasi_static;
   for (const SweepCase& c : plan.cases) {
     estimated_total += c.cost;
@@ -182,15 +190,7 @@ TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
   // factor 2.
   const std::vector<std::pair<double, double>> measured_euler = {
       {1e-5, 25}, {3.16e-5, 9}, {1e-4, 5}};
-  std::vector<double> euler_rates;
-  for (const auto& [rate, seconds] : measured_euler) euler_rates.push_back(rate);
-  const SweepPlan affine_plan = make_sweep_plan({.preset = "custom",
-                                                 .volume_fractions = {0.80},
-                                                 .gamma_tildes = euler_rates,
-                                                 .packings = 1,
-                                                 .particles = 1000,
-                                                 .quasi_static = false,
-                                                 .stokes = StokesReference::affine});
+  const SweepPlan affine_plan = column_plan(measured_euler, StokesReference::affine, false);
   ASSERT_EQ(affine_plan.cases.size(), measured_euler.size());
   for (std::size_t k = 0; k < measured_euler.size(); ++k)
     EXPECT_NEAR(std::log(affine_plan.cases[k].cost / measured_euler[k].second), 0.0, std::log(2.0))
