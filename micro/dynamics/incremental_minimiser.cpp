@@ -395,8 +395,7 @@ double IncrementalMinimiser::convex_fraction(std::span<const double> proximal) c
 // kMaxMove. Returns the largest particle move along it.
 double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   int cg = newton_direction(proximal, eta);
-  for (int raise = 0; negative_curvature_ && !settings_.stop_when_unstable && raise < 8;
-       ++raise) {
+  for (int raise = 0; negative_curvature_ && !settings_.stop_when_unstable && raise < 8; ++raise) {
     ++counters_.damping_raises;
     damping_ = std::max(10.0 * damping_, 1e-4 * diagonal_scale_);
     invert_diagonal();

@@ -150,8 +150,8 @@ namespace {
 // docs/sweeps.md), every estimate is within a factor 2, and so is the total.
 // The plan of one packing at φ = 0.80, N = 1000, at the rates of a measured
 // column (γ̃, seconds).
-SweepPlan column_plan(const std::vector<std::pair<double, double>>& column,
-                      StokesReference stokes, bool quasi_static) {
+SweepPlan column_plan(const std::vector<std::pair<double, double>>& column, StokesReference stokes,
+                      bool quasi_static) {
   std::vector<double> rates;
   for (const auto& [rate, seconds] : column) rates.push_back(rate);
   return make_sweep_plan({.preset = "custom",
