@@ -9,6 +9,7 @@
 
 #include "common/errors.h"
 #include "micro/numerics/thread_range.h"
+#include "micro/numerics/vector_clones.h"
 
 namespace softglass::micro {
 
@@ -28,8 +29,8 @@ ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
 
 namespace {
 // Moves particles [first, last) by dt v; returns the largest tracked |u|².
-double move_range(double dt, const Vec3* v, Vec3* x, Vec3* tracked, std::size_t first,
-                  std::size_t last) {
+SOFTGLASS_VECTOR_CLONES double move_range(double dt, const Vec3* v, Vec3* x, Vec3* tracked,
+                                          std::size_t first, std::size_t last) {
   double max2 = 0.0;
 #pragma omp simd reduction(max : max2)
   for (std::size_t i = first; i < last; ++i) {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/errors.h"
+#include "micro/numerics/vector_clones.h"
 
 namespace softglass::micro {
 
@@ -34,7 +35,7 @@ OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model, 
   model_.validate();
 }
 
-void OverdampedShear::evaluate() {
+SOFTGLASS_VECTOR_CLONES void OverdampedShear::evaluate() {
   // The velocities are implicit with the EHD drag or the Stokes pair dashpots.
   const bool with_drag = model_.drag.enabled || model_.drag.stokes.has_pairs();
   stress_valid_ = time() >= stress_from_;
@@ -103,7 +104,7 @@ void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
   evaluated_ = true;
 }
 
-void OverdampedShear::update_max_speed() {
+SOFTGLASS_VECTOR_CLONES void OverdampedShear::update_max_speed() {
   const std::vector<Vec3>& velocity = system_.particles().velocity;
   // The maximum alone would let a NaN through (max(s, NaN) is s); the sum of
   // the squares carries it, and an infinity, to the test.

@@ -4,6 +4,11 @@
 // from the processor it runs on (GCC's function multiversioning: an ifunc
 // resolver). The binary stays portable while a recent processor runs the
 // vectorised square roots, divisions and powers 4 or 8 wide instead of 2.
+// Used on the contact-force kernel and on the passes over the particles of the
+// explicit step (moving, velocities, error estimate): with them, an explicit
+// Hertz step at N = 1000 takes 36 ns per particle instead of 45. The implicit
+// solver is not cloned: built whole for x86-64-v4 it ran the trade bench's
+// implicit runs no faster.
 // The variants may differ in the last bits (the wider ones contract a·b + c
 // into one fused multiply-add), as results do between compilers.
 #pragma once

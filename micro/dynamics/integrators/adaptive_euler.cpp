@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "micro/dynamics/integrator.h"
+#include "micro/numerics/vector_clones.h"
 
 namespace softglass::micro {
 namespace {
@@ -55,8 +56,9 @@ class AdaptiveEuler final : public Integrator {
   // advection of y by the affine flow: u = c y e_x + v, and y changed by dt v_y
   // while the cell sheared by Δγ (the drive's own change of c moves every
   // particle affinely, which the step integrates exactly).
-  static double error_estimate(const std::vector<Vec3>& v_before, const OverdampedShear& flow,
-                               double dt, double strain_step) {
+  SOFTGLASS_VECTOR_CLONES static double error_estimate(const std::vector<Vec3>& v_before,
+                                                       const OverdampedShear& flow, double dt,
+                                                       double strain_step) {
     const auto v_after = flow.velocities();
     // Componentwise: a Vec3 built and then changed in one component goes
     // through memory, and its reload stalled this loop (11 % of a Hertz step).
