@@ -3,13 +3,16 @@
 # each: N = 1000, phi = 0.80, Hertz law, no EHD drag, neighbour skin 0.3 diameters
 # (= 0.6 R), polydisperse radii uniform in 0.83 … 1.17 of the mean, steady shear
 # with a strain of 2e-6 per step (LAMMPS: dt 0.002 × erate 1e-3).
-# The two alternate `rounds` times so that load from other processes hits both;
-# the best round of each is compared. Last line: speedup_vs_lammps <ratio>.
+# The two alternate `rounds` times (default 5) so that load from other processes
+# hits both; the best round of each is compared. With 3 rounds on a loaded host
+# one side often had no quiet round (three runs: 7.30, 4.87, 6.03; with 5, the
+# same hour: 6.27, 6.28, 6.15; docs/validation.md §2).
+# Last line: speedup_vs_lammps <ratio>.
 #   usage: bench/lammps_comparison.sh [BUILD_DIR] [ROUNDS]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "${1:-$here/../build}" && pwd)
-rounds=${2:-3}
+rounds=${2:-5}
 peer="$here/../../shared/peers/lammps/shear_hertz.in"
 command -v lmp >/dev/null || { echo "lmp not found: apt-get install lammps" >&2; exit 1; }
 [ -f "$peer" ] || { echo "peer input $peer not found" >&2; exit 1; }
