@@ -1,5 +1,6 @@
 // The contact-force kernel, compiled once per contact law with the law's F(ε)
-// inlined (contact/contact_law_impl.h). See contact_forces.h for the physics.
+// inlined (contact/contact_law_impl.h), and for each instruction set
+// (numerics/vector_clones.h). See contact_forces.h for the physics.
 //
 // Loop over particles i and their list neighbours j > i (half list): separation
 // d through the pair's image (neighbour_list.h), overlap test, then for a contact,

@@ -143,11 +143,6 @@ TEST(SweepPlan, RefusesIncompleteOrInvalidLists) {
 namespace softglass::micro {
 namespace {
 
-// The cost estimates split the work over the workers, so they must follow the
-// scheme that runs each case. Against the whole `paper` sweep of the default
-// model (friction between neighbours: `auto` is `bdf2` at every rate), the
-// means of its five N = 1000 packings at φ = 0.80 (one core each, 5 strain;
-// docs/sweeps.md), every estimate is within a factor 2, and so is the total.
 // The plan of one packing at φ = 0.80, N = 1000, at the rates of a measured
 // column (γ̃, seconds).
 SweepPlan column_plan(const std::vector<std::pair<double, double>>& column, StokesReference stokes,
@@ -163,6 +158,11 @@ SweepPlan column_plan(const std::vector<std::pair<double, double>>& column, Stok
                           .stokes = stokes});
 }
 
+// The cost estimates split the work over the workers, so they must follow the
+// scheme that runs each case. Against the whole `paper` sweep of the default
+// model (friction between neighbours: `auto` is `bdf2` at every rate), the
+// means of its five N = 1000 packings at φ = 0.80 (one core each, 5 strain;
+// docs/sweeps.md), every estimate is within a factor 2, and so is the total.
 TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
   const std::vector<std::pair<double, double>> measured = {
       {1e-9, 163.5}, {3.16e-9, 123.1}, {1e-8, 58.1}, {3.16e-8, 36.6}, {1e-7, 16.0}, {3.16e-7, 9.3},
