@@ -101,7 +101,6 @@ void run_case(const Oscillation& o, const OscillationCase& c, const Workers& wor
   RunRecord record = pack_and_measure(prm, law, "oscillate", true);
   record.parameters = stored_parameters(c, record.parameters);
   const CheckpointSettings checkpoints{checkpoint_file(c), o.parameters.spec.checkpoint_steps};
-  const bool resumed = std::filesystem::exists(checkpoints.file);
   oscillate(
       record, prm, law, c.protocol,
       [&](double cycles, double) { progress(std::min(1.0, cycles / c.protocol.max_cycles)); },
@@ -111,11 +110,11 @@ void run_case(const Oscillation& o, const OscillationCase& c, const Workers& wor
   const OscillationResult& r = record.oscillation->result;
   log(workers,
       "run      phi {:.4f} omega~ {:.3e} gamma0 {:.3e} seed {}: G' {:.4e} ± {:.1e}, G'' {:.4e} ± "
-      "{:.1e} E*, I3/I1 {:.3f}, {} cycles, {}, {:.1f} s{}",
+      "{:.1e} E*, I3/I1 {:.3f}, {} cycles, {}, {}",
       c.volume_fraction, c.frequency, c.amplitude, c.seed, r.summary["storage"].mean,
       r.summary["storage"].standard_error, r.summary["loss"].mean, r.summary["loss"].standard_error,
       r.summary["intensity_3"].mean, r.summary.cycles, r.converged ? "converged" : "NOT converged",
-      seconds_since(start), resumed ? ", resumed from its checkpoint" : "");
+      logged_time(record));
 }
 
 // Reads every finished run and writes the averaged and per-packing tables.

@@ -211,4 +211,11 @@ void write_record(AtomicOutput& out, RunRecord& record, double total_seconds) {
   out.commit();
 }
 
+std::string logged_time(const RunRecord& record) {
+  const Timings& t = record.timings;
+  if (t.resumed <= 0.0) return fmt::format("{:.1f} s", t.total);
+  return fmt::format("{:.1f} s, resumed from its checkpoint ({:.1f} s of it before)", t.total,
+                     t.resumed);
+}
+
 }  // namespace softglass::micro

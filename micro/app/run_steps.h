@@ -57,4 +57,10 @@ void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<co
 /// Writes `record` into `out`'s temporary file and renames it into place.
 void write_record(AtomicOutput& out, RunRecord& record, double total_seconds);
 
+/// The wall time of a written record as a log line ends: "268.7 s", or for a
+/// run resumed from a checkpoint "268.7 s, resumed from its checkpoint (164.4 s
+/// of it before)" — the whole run's time, as the record keeps it, so that a
+/// resumed case does not look short beside the others.
+std::string logged_time(const RunRecord& record);
+
 }  // namespace softglass::micro

@@ -169,7 +169,6 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
   const std::shared_ptr<const ContactLaw> law = make_contact_law(prm.contact_law);
   RunRecord record = pack_and_measure(prm, law, "run", true);
   const CheckpointSettings checkpoints{checkpoint_file(c), sweep.parameters.spec.checkpoint_steps};
-  const bool resumed = std::filesystem::exists(checkpoints.file);
   const auto follow = [&](double strain, double) {
     progress(std::min(1.0, strain / prm.protocol.max_strain));
   };
@@ -187,7 +186,7 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
   const auto& aqs = record.shear->quasi_static;
   log(workers,
       "run      phi {:.4f} gamma~ {} seed {}: sigma {:.4e} ± {:.1e} E*, {:.1f} strain, {}{}{}, "
-      "{:.1f} s{}",
+      "{}",
       c.volume_fraction, rate_text(c), c.seed, r.summary["sigma"].mean,
       r.summary["sigma"].standard_error, r.series.strain.back() - r.series.strain.front(),
       r.converged ? "converged" : "NOT converged", r.summary.layered() ? " (LAYERED)" : "",
@@ -195,7 +194,7 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
           ? fmt::format(" ({} of {} strain steps not minimised to tolerance)",
                         aqs->unconverged_steps, r.counters.steps)
           : "",
-      seconds_since(start), resumed ? ", resumed from its checkpoint" : "");
+      logged_time(record));
 }
 
 std::vector<std::string> provenance(const Sweep& sweep) {

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -393,6 +394,14 @@ TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
   EXPECT_GT(timings.read_scalar("resumed"), 0.0);
   EXPECT_GT(timings.read_scalar("shear"), timings.read_scalar("resumed"));
   EXPECT_GE(timings.read_scalar("total"), timings.read_scalar("shear"));
+  // The log line gives the same whole-run time, not only the resumed part.
+  std::smatch logged;
+  ASSERT_TRUE(std::regex_search(
+      resumed.out, logged,
+      std::regex(R"(([0-9.]+) s, resumed from its checkpoint \(([0-9.]+) s of it before\))")))
+      << resumed.out;
+  EXPECT_NEAR(std::stod(logged[1]), timings.read_scalar("total"), 0.051);  // printed to 0.1 s
+  EXPECT_NEAR(std::stod(logged[2]), timings.read_scalar("resumed"), 0.051);
 }
 
 }  // namespace
