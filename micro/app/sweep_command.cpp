@@ -18,6 +18,7 @@
 #include <ctime>
 #include <map>
 #include <optional>
+#include <utility>
 
 #include "common/atomic_output.h"
 #include "common/errors.h"
@@ -128,23 +129,47 @@ void check_cases_before_work(const Sweep& sweep) {
   }
 }
 
-// The wall time of the cases not yet done, from the plan's cost model (core
-// seconds per 5 strain, docs/sweeps.md) at the runs' shortest length, spread
-// over the workers. The model is fitted to the default model's whole `paper`
-// sweep (fixed run length): there it is the expected time; runs that go on
-// past their shortest length (a target error) take longer.
-double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
+// The core seconds of a case by the plan's cost model (per 5 strain,
+// docs/sweeps.md) at the runs' shortest length. The model is fitted to the
+// default model's whole `paper` sweep (fixed run length): there it is the
+// expected time; runs that go on past their shortest length (a target error)
+// take longer.
+double modelled_seconds(const Sweep& sweep, const SweepCase& c) {
   const double strain =
       sweep.plan.run ? sweep.plan.run->min_strain : sweep.parameters.base.protocol.min_strain;
+  return c.cost * std::max(strain, 1.0) / 5.0;
+}
+
+double modelled_core_seconds(const Sweep& sweep, bool pending_only) {
   double seconds = 0.0;
   for (const SweepCase& c : sweep.plan.cases)
-    if (!pending_only || !std::filesystem::exists(c.file))
-      seconds += c.cost * std::max(strain, 1.0) / 5.0;
+    if (!pending_only || !std::filesystem::exists(c.file)) seconds += modelled_seconds(sweep, c);
   return seconds;
 }
 
+// The wall time of the cases not yet done, spread over the workers.
 double estimated_hours(const Sweep& sweep, std::size_t workers) {
   return modelled_core_seconds(sweep, true) / static_cast<double>(workers) / 3600.0;
+}
+
+// The cost model was fitted on one machine; the cases this folder has
+// finished say how fast this one is (and its threads per case). Their wall
+// times as their records keep them (resumed parts included) over their
+// modelled times, with how many there were; {0, 0} before the first.
+std::pair<double, std::size_t> pace_of_finished_cases(const Sweep& sweep) {
+  double measured = 0.0, modelled = 0.0;
+  std::size_t finished = 0;
+  for (const SweepCase& c : sweep.plan.cases) {
+    if (!std::filesystem::exists(c.file)) continue;
+    try {
+      measured += H5File::open(c.file).root().group("timings").read_scalar("total");
+    } catch (const std::exception&) {
+      continue;  // a record without timings says nothing of the pace
+    }
+    modelled += modelled_seconds(sweep, c);
+    ++finished;
+  }
+  return {finished > 0 ? measured / modelled : 0.0, finished};
 }
 
 // Where a running case keeps its checkpoint: beside its result file.
@@ -279,11 +304,18 @@ class FlowCurveSweep final : public CaseSweep {
   void print_plan() const override { micro::print_plan(sweep_); }
   std::string headline(std::size_t done, const Workers& workers) const override {
     const SweepPlan& plan = sweep_.plan;
+    const double hours = estimated_hours(sweep_, workers.size());
+    const auto [pace, finished] = pace_of_finished_cases(sweep_);
     return fmt::format(
         "sweep    preset {}, N = {}, {} cases ({} done), {} workers -> {}; estimated {:.2g} h "
-        "at the runs' shortest length (cost model, docs/sweeps.md)",
+        "at the runs' shortest length (cost model, docs/sweeps.md){}",
         sweep_.parameters.spec.preset, plan.particles, plan.cases.size(), done, workers.size(),
-        plan.directory.string(), estimated_hours(sweep_, workers.size()));
+        plan.directory.string(), hours,
+        finished > 0 && done < plan.cases.size()
+            ? fmt::format(", {:.2g} h at this machine's pace (the {} finished case{} took x{:.3g} "
+                          "the model's time)",
+                          hours * pace, finished, finished == 1 ? "" : "s", pace)
+            : "");
   }
   void run_case(std::size_t k, const Workers& workers,
                 const std::function<void(double)>& progress) const override {

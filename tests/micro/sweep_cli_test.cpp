@@ -347,6 +347,26 @@ TEST_F(MicroCli, SweepRunsOneCaseOfABatchArray) {
   EXPECT_EQ(gather.code, 1) << "one run is missing: the table holds the other, and says so";
   EXPECT_NE(gather.err.find("1 of 2 runs are missing"), std::string::npos) << gather.err;
   EXPECT_EQ(count_lines(table_data(work() / "out/flow_curve.csv")), 1 + 1u);
+
+  // The rest of the sweep: its first line scales the cost model by this
+  // machine's pace, the finished case's recorded time over its modelled one.
+  const Outcome costs = micro("sweep s.prm --list");
+  std::smatch modelled;
+  ASSERT_TRUE(std::regex_search(
+      costs.out, modelled,
+      std::regex(R"(cost +(\S+) core hours for all cases, (\S+) for those pending)")))
+      << costs.out;
+  const double finished_hours = std::stod(modelled[1]) - std::stod(modelled[2]);
+  const fs::path finished_run = fs::directory_iterator(work() / "out/runs")->path();
+  const double recorded = H5File::open(finished_run).root().group("timings").read_scalar("total");
+  const Outcome rest = micro("--threads 1 sweep s.prm --quiet");
+  ASSERT_EQ(rest.code, 0) << rest.err;
+  std::smatch pace;
+  ASSERT_TRUE(std::regex_search(rest.out, pace,
+                                std::regex(R"(the 1 finished case took x(\S+) the model's time)")))
+      << rest.out;
+  // Printed to 3 and 4 significant digits.
+  EXPECT_NEAR(std::stod(pace[1]) / (recorded / (finished_hours * 3600.0)), 1.0, 0.01);
 }
 
 // The run is checkpointed every 100 accepted steps; the first sweep is killed
