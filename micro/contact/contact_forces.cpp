@@ -19,6 +19,16 @@ void ContactList::clear() {
   stiffness.clear();
 }
 
+void ContactList::resize(std::size_t pairs) {
+  i.resize(pairs);
+  j.resize(pairs);
+  separation.resize(pairs);
+  deformation.resize(pairs);
+  contact_radius.resize(pairs);
+  force.resize(pairs);
+  stiffness.resize(pairs);
+}
+
 void ContactField::Touching::reserve(std::size_t pairs) {
   if (pair.size() >= pairs) return;
   pair.resize(pairs);

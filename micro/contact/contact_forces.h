@@ -33,6 +33,7 @@ struct ContactList {
 
   std::size_t size() const { return i.size(); }
   void clear();
+  void resize(std::size_t pairs);
 };
 
 struct ForceRequest {

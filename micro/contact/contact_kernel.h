@@ -121,7 +121,11 @@ contact_blocks(const Law& law, const ForceKernelInput& in,
       if constexpr (kEnergy) pair_energy[k] = rc * rc * rc * law.energy(eps);
     }
 
-    // 3. +f on i (summed in registers), −f on j.
+    // 3. +f on i (summed in registers), −f on j; the contacts, if asked for,
+    //    written in place (appended one by one, each of the seven arrays went
+    //    through a call to grow it per contact).
+    const std::size_t listed = contacts.size();
+    if constexpr (kContacts) contacts.resize(listed + m);
     std::size_t k = 0;
     for (std::size_t i = first; i < last; ++i) {
       double fx = 0, fy = 0, fz = 0, ki = 0;
@@ -139,13 +143,14 @@ contact_blocks(const Law& law, const ForceKernelInput& in,
         magnitude += pair_force[k];
         if constexpr (kEnergy) energy += pair_energy[k];
         if constexpr (kContacts) {
-          contacts.i.push_back(static_cast<std::uint32_t>(i));
-          contacts.j.push_back(j);
-          contacts.separation.emplace_back(dx[k], dy[k], dz[k]);
-          contacts.deformation.push_back(deformation[k]);
-          contacts.contact_radius.push_back(constants[pair[k]].contact_radius);
-          contacts.force.push_back(pair_force[k]);
-          contacts.stiffness.push_back(normal_stiffness[k]);
+          const std::size_t c = listed + k;
+          contacts.i[c] = static_cast<std::uint32_t>(i);
+          contacts.j[c] = j;
+          contacts.separation[c] = Vec3(dx[k], dy[k], dz[k]);
+          contacts.deformation[c] = deformation[k];
+          contacts.contact_radius[c] = constants[pair[k]].contact_radius;
+          contacts.force[c] = pair_force[k];
+          contacts.stiffness[c] = normal_stiffness[k];
         }
       }
       force[i] += Vec3(fx, fy, fz);

@@ -117,22 +117,30 @@ void FrozenDrag::clear() {
 
 void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const EhdSettings& settings,
                  std::span<const double> friction, FrozenDrag& out) {
-  out.clear();
+  // Sized once and filled by index: appended element by element, each of the
+  // nine arrays went through a call to grow it per contact.
+  const std::size_t pairs = c.size();
   out.film = settings.film;
-  for (std::size_t k = 0; k < c.size(); ++k) {
+  out.i.assign(c.i.begin(), c.i.end());
+  out.j.assign(c.j.begin(), c.j.end());
+  out.normal.resize(pairs);
+  out.projector.resize(pairs);
+  out.coefficient.resize(pairs);
+  out.crossover.resize(pairs);
+  out.affine.resize(pairs);
+  out.shift.resize(pairs);
+  for (std::size_t k = 0; k < pairs; ++k) {
     const Vec3 n = c.separation[k].normalized();
-    out.i.push_back(c.i[k]);
-    out.j.push_back(c.j[k]);
-    out.normal.push_back(n);
-    out.projector.push_back(settings.film.projector(n));
+    out.normal[k] = n;
+    out.projector[k] = settings.film.projector(n);
     const double a = settings.enabled ? film_coefficient(gamma_tilde, c.contact_radius[k],
                                                          c.force[k], c.deformation[k])
                                       : 0.0;
-    out.coefficient.push_back(a);
-    out.crossover.push_back(film_crossover(settings.rest_thickness, gamma_tilde, a,
-                                           c.contact_radius[k], c.deformation[k]));
-    out.affine.push_back(settings.film.affine(n, c.separation[k], rate));
-    out.shift.push_back(rate * c.separation[k].y());
+    out.coefficient[k] = a;
+    out.crossover[k] = film_crossover(settings.rest_thickness, gamma_tilde, a,
+                                      c.contact_radius[k], c.deformation[k]);
+    out.affine[k] = settings.film.affine(n, c.separation[k], rate);
+    out.shift[k] = rate * c.separation[k].y();
   }
   settings.stokes.pair_coefficients(c, friction, out.dashpot);
 }
@@ -151,37 +159,48 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
   ++counters_.force_evaluations;
   const std::size_t n = u.size();
   value.elastic = field.energy;
-  value.proximal = 0.0;
-  value.dissipation = 0.0;
+  double proximal_sum = 0.0;
   for (std::size_t a = 0; a < n; ++a) {
     gradient[a] = -field.force[a];
     if (!proximal.empty()) {
       gradient[a] += proximal[a] * u[a];
-      value.proximal += 0.5 * proximal[a] * u[a].squaredNorm();
+      proximal_sum += 0.5 * proximal[a] * u[a].squaredNorm();
     }
   }
+  value.proximal = proximal_sum;
+  // In three passes: the films' sliding velocities (gathered by pair), their
+  // laws over the arrays (evaluate_films), and the forces scattered back.
+  const std::size_t pairs = drag.size();
   std::vector<Vec3>& w = sliding.w;
-  w.resize(drag.size());
-  sliding.speed.resize(drag.size());
-  sliding.secant.resize(drag.size());
-  for (std::size_t k = 0; k < drag.size(); ++k) {
-    const Vec3 du = (u[drag.i[k]] - u[drag.j[k]]) / h;
-    w[k] = drag.film.project(drag.normal[k], du) + drag.affine[k];
-    const double speed = w[k].norm();
-    const FilmLaw law{drag.coefficient[k], drag.crossover[k]};
-    value.dissipation += h * law.potential(speed);
-    const double secant = law.secant(speed);
-    sliding.speed[k] = speed;
-    sliding.secant[k] = secant;
-    Vec3 f = w[k] * secant;                           // a |w|^{1/2} ŵ on the EHD branch (film.h)
+  std::vector<Vec3>& du = sliding.relative;
+  w.resize(pairs);
+  du.resize(pairs);
+  sliding.speed.resize(pairs);
+  sliding.secant.resize(pairs);
+  sliding.potential.resize(pairs);
+  for (std::size_t k = 0; k < pairs; ++k) {
+    du[k] = (u[drag.i[k]] - u[drag.j[k]]) / h;
+    w[k] = drag.film.project(drag.normal[k], du[k]) + drag.affine[k];
+    sliding.speed[k] = w[k].squaredNorm();
+  }
+  evaluate_films(drag.coefficient, drag.crossover, sliding.speed, sliding.secant,
+                 sliding.potential);
+  // The sums run in a local and are stored once: added to `value` in place,
+  // each addition waited for the store of the one before (the gradient's
+  // stores may alias it).
+  double dissipation = 0.0;
+  for (std::size_t k = 0; k < pairs; ++k) {
+    dissipation += h * sliding.potential[k];
+    Vec3 f = w[k] * sliding.secant[k];                // a |w|^{1/2} ŵ on the EHD branch (film.h)
     if (const double b = drag.dashpot[k]; b > 0.0) {  // h · ½ b |q⁰|², q⁰ = du + c d_y e_x
-      const Vec3 q0(du.x() + drag.shift[k], du.y(), du.z());
-      value.dissipation += h * 0.5 * b * q0.squaredNorm();
+      const Vec3 q0(du[k].x() + drag.shift[k], du[k].y(), du[k].z());
+      dissipation += h * 0.5 * b * q0.squaredNorm();
       f += b * q0;
     }
     gradient[drag.i[k]] += f;
     gradient[drag.j[k]] -= f;
   }
+  value.dissipation = dissipation;
   return true;
 }
 
@@ -214,27 +233,47 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
 // preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
 // Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
 // p − q and |K_c| is p + q.
+//
+// In two loops: first r, n = d/r and |f|/r of every contact, a short loop
+// whose square roots and divisions overlap from one contact to the next (inside
+// the long loop of the blocks, each contact's entries waited for its own root
+// and divisions); then the blocks. Particle i's diagonal block is carried in
+// registers over its run of contacts and stored once, the same sums in the
+// same order: added to in memory contact by contact, each addition waited for
+// the store of the one before.
 void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
+  const std::size_t pairs = c.size();
   pair_i_.assign(c.i.begin(), c.i.end());
   pair_j_.assign(c.j.begin(), c.j.end());
-  block_.resize(c.size());
-  for (std::size_t k = 0; k < c.size(); ++k) {
+  block_.resize(pairs);
+  unit_.resize(pairs);
+  tangential_.resize(pairs);
+  for (std::size_t k = 0; k < pairs; ++k) {
     const double r = c.separation[k].norm();
-    const Vec3 nk = c.separation[k] / r;
-    const double stiffness = c.stiffness[k];
-    const double tangential = c.force[k] / r;
-    Eigen::Matrix3d& block = block_[k];
-    Eigen::Matrix3d& di = diagonal_[c.i[k]];
-    Eigen::Matrix3d& dj = diagonal_[c.j[k]];
-    for (int col = 0; col < 3; ++col)
-      for (int row = 0; row < 3; ++row) {
-        const double nn = nk[row] * nk[col];
-        const double p = stiffness * nn;
-        const double q = tangential * ((row == col ? 1.0 : 0.0) - nn);
-        block(row, col) = p - q;
-        di(row, col) += p + q;
-        dj(row, col) += p + q;
-      }
+    unit_[k] = c.separation[k] / r;
+    tangential_[k] = c.force[k] / r;
+  }
+  std::size_t k = 0;
+  while (k < pairs) {
+    const std::uint32_t i = c.i[k];
+    Eigen::Matrix3d di = diagonal_[i];
+    for (; k < pairs && c.i[k] == i; ++k) {
+      const Vec3& nk = unit_[k];
+      const double stiffness = c.stiffness[k];
+      const double tangential = tangential_[k];
+      Eigen::Matrix3d& block = block_[k];
+      Eigen::Matrix3d& dj = diagonal_[c.j[k]];
+      for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row) {
+          const double nn = nk[row] * nk[col];
+          const double p = stiffness * nn;
+          const double q = tangential * ((row == col ? 1.0 : 0.0) - nn);
+          block(row, col) = p - q;
+          di(row, col) += p + q;
+          dj(row, col) += p + q;
+        }
+    }
+    diagonal_[i] = di;
   }
 }
 
@@ -243,32 +282,40 @@ void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
 // added to its pair's elastic block when there is one, halving the product's
 // work. The search for it starts at the block after the last one matched,
 // where the same order puts it, and falls back to the particle's first block.
+// Particle i's diagonal block is carried over its run of pairs, as in
+// assemble_elastic.
 void IncrementalMinimiser::add_drag(const FrozenDrag& drag, double h, double force_floor) {
   const std::size_t elastic_pairs = block_.size();
-  std::size_t cursor = 0, next = 0;
-  for (std::size_t k = 0; k < drag.size(); ++k) {
-    if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-    const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
-    diagonal_[drag.i[k]] += b;
-    diagonal_[drag.j[k]] += b;
-    const auto matches = [&](std::size_t m) {
-      return m < elastic_pairs && pair_i_[m] == drag.i[k] && pair_j_[m] == drag.j[k];
-    };
-    std::size_t match = next;
-    if (!matches(match)) {
-      while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;
-      match = cursor;
-      while (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] != drag.j[k])
-        ++match;
+  const std::size_t pairs = drag.size();
+  std::size_t cursor = 0, next = 0, k = 0;
+  while (k < pairs) {
+    const std::uint32_t i = drag.i[k];
+    Eigen::Matrix3d di = diagonal_[i];
+    for (; k < pairs && drag.i[k] == i; ++k) {
+      if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
+      const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
+      di += b;
+      diagonal_[drag.j[k]] += b;
+      const auto matches = [&](std::size_t m) {
+        return m < elastic_pairs && pair_i_[m] == i && pair_j_[m] == drag.j[k];
+      };
+      std::size_t match = next;
+      if (!matches(match)) {
+        while (cursor < elastic_pairs && pair_i_[cursor] < i) ++cursor;
+        match = cursor;
+        while (match < elastic_pairs && pair_i_[match] == i && pair_j_[match] != drag.j[k])
+          ++match;
+      }
+      if (matches(match)) {
+        block_[match] += b;
+        next = match + 1;
+      } else {
+        pair_i_.push_back(i);
+        pair_j_.push_back(drag.j[k]);
+        block_.push_back(b);
+      }
     }
-    if (matches(match)) {
-      block_[match] += b;
-      next = match + 1;
-    } else {
-      pair_i_.push_back(drag.i[k]);
-      pair_j_.push_back(drag.j[k]);
-      block_.push_back(b);
-    }
+    diagonal_[i] = di;
   }
 }
 

@@ -115,11 +115,12 @@ struct FrozenDrag {
 };
 
 /// The frozen drag's films at a point u: their sliding velocities w_c, speeds
-/// |w_c| and secants (FilmLaw::secant at |w_c|), computed with Φ's gradient and
-/// read again by the Hessian model and the relief test.
+/// |w_c|, secants and potentials (FilmLaw's at |w_c|), computed with Φ's
+/// gradient and read again by the Hessian model and the relief test; and each
+/// pair's relative non-affine velocity (u_i − u_j)/h.
 struct Sliding {
-  std::vector<Vec3> w;
-  std::vector<double> speed, secant;
+  std::vector<Vec3> w, relative;
+  std::vector<double> speed, secant, potential;
 };
 
 /// a_c = (¾ γ̃ R_c |f| √ε)^{1/2} (film.h), w⁰_c at shear rate c (`rate`, 1 in
@@ -207,6 +208,8 @@ class IncrementalMinimiser {
   std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_;
   Sliding sliding_, sliding_trial_;
   std::vector<double> relief_;  // θ_c
+  std::vector<Vec3> unit_;         // n_c of the elastic contacts (assemble_elastic)
+  std::vector<double> tangential_;  // |f_c|/r_c
   std::vector<std::uint32_t> pair_i_, pair_j_;
   std::vector<Eigen::Matrix3d> block_, diagonal_, undamped_diagonal_;
   double damping_ = 0.0;         // μ

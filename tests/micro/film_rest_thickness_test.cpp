@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "micro/model/ehd_drag.h"
 #include "micro/model/film.h"
@@ -54,6 +55,39 @@ TEST(FilmRestThickness, TheLawIsACouetteFilmOfTheThickerThickness) {
   const FilmLaw paper{a, film_crossover(0.0, gamma_tilde, a, rc, eps)};
   EXPECT_EQ(paper.crossover, 0.0);
   EXPECT_DOUBLE_EQ(paper.secant(1e-8) * 1e-8, a * std::sqrt(1e-8));
+}
+
+// The films' law over arrays (what the implicit step's evaluation of Φ uses)
+// is FilmLaw's, film by film, to the last bit: a film with and without a rest
+// thickness, at rest, below, at and above its crossover. Exact equality is the
+// claim (the two compute the same correctly rounded operations in the same
+// order), whichever instruction set's variant the processor runs.
+TEST(FilmRestThickness, TheLawOverArraysIsTheLawFilmByFilm) {
+  const double gamma_tilde = 1e-6, rc = 0.5, eps = 0.2;
+  const double a = film_coefficient(gamma_tilde, rc, 0.05, eps);
+  std::vector<double> coefficient, crossover, squared;
+  for (double h0 : {0.0, 2e-3}) {
+    const double w_star = film_crossover(h0, gamma_tilde, a, rc, eps);
+    const double scale = h0 > 0.0 ? w_star : 1e-4;
+    for (double u : {0.0, 1e-3, 0.5, 0.999, 1.0, 1.001, 3.0, 1e3}) {
+      coefficient.push_back(a);
+      crossover.push_back(w_star);
+      squared.push_back(u * scale * u * scale);
+    }
+  }
+  coefficient.push_back(0.0);  // a pair without EHD film (a dashpot alone)
+  crossover.push_back(0.0);
+  squared.push_back(1e-6);
+  const std::size_t n = squared.size();
+  std::vector<double> speed = squared, secant(n), potential(n);
+  evaluate_films(coefficient, crossover, speed, secant, potential);
+  for (std::size_t k = 0; k < n; ++k) {
+    const FilmLaw law{coefficient[k], crossover[k]};
+    const double u = std::sqrt(squared[k]);
+    EXPECT_EQ(speed[k], u) << k;
+    EXPECT_EQ(secant[k], law.secant(u)) << k;
+    EXPECT_EQ(potential[k], law.potential(u)) << k;
+  }
 }
 
 // The implicit velocities with films of rest thickness satisfy ζv = F^e +
