@@ -118,7 +118,7 @@ void FrozenDrag::clear() {
 void freeze_drag(const ContactList& c, double gamma_tilde, double rate, const EhdSettings& settings,
                  std::span<const double> friction, FrozenDrag& out) {
   // Sized once and filled by index: appended element by element, each of the
-  // nine arrays went through a call to grow it per contact.
+  // eight arrays went through a call to grow it per contact.
   const std::size_t pairs = c.size();
   out.film = settings.film;
   out.i.assign(c.i.begin(), c.i.end());
@@ -233,47 +233,27 @@ void IncrementalMinimiser::assemble(const ContactSystem& system, std::span<const
 // preconditioner takes |K_c| = k_n nnᵀ + (|f|/r)(I − nnᵀ), positive definite.
 // Entry by entry, with p = k_n (nnᵀ)_ab and q = (|f|/r)(I − nnᵀ)_ab, K_c is
 // p − q and |K_c| is p + q.
-//
-// In two loops: first r, n = d/r and |f|/r of every contact, a short loop
-// whose square roots and divisions overlap from one contact to the next (inside
-// the long loop of the blocks, each contact's entries waited for its own root
-// and divisions); then the blocks. Particle i's diagonal block is carried in
-// registers over its run of contacts and stored once, the same sums in the
-// same order: added to in memory contact by contact, each addition waited for
-// the store of the one before.
 void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
-  const std::size_t pairs = c.size();
   pair_i_.assign(c.i.begin(), c.i.end());
   pair_j_.assign(c.j.begin(), c.j.end());
-  block_.resize(pairs);
-  unit_.resize(pairs);
-  tangential_.resize(pairs);
-  for (std::size_t k = 0; k < pairs; ++k) {
+  block_.resize(c.size());
+  for (std::size_t k = 0; k < c.size(); ++k) {
     const double r = c.separation[k].norm();
-    unit_[k] = c.separation[k] / r;
-    tangential_[k] = c.force[k] / r;
-  }
-  std::size_t k = 0;
-  while (k < pairs) {
-    const std::uint32_t i = c.i[k];
-    Eigen::Matrix3d di = diagonal_[i];
-    for (; k < pairs && c.i[k] == i; ++k) {
-      const Vec3& nk = unit_[k];
-      const double stiffness = c.stiffness[k];
-      const double tangential = tangential_[k];
-      Eigen::Matrix3d& block = block_[k];
-      Eigen::Matrix3d& dj = diagonal_[c.j[k]];
-      for (int col = 0; col < 3; ++col)
-        for (int row = 0; row < 3; ++row) {
-          const double nn = nk[row] * nk[col];
-          const double p = stiffness * nn;
-          const double q = tangential * ((row == col ? 1.0 : 0.0) - nn);
-          block(row, col) = p - q;
-          di(row, col) += p + q;
-          dj(row, col) += p + q;
-        }
-    }
-    diagonal_[i] = di;
+    const Vec3 nk = c.separation[k] / r;
+    const double stiffness = c.stiffness[k];
+    const double tangential = c.force[k] / r;
+    Eigen::Matrix3d& block = block_[k];
+    Eigen::Matrix3d& di = diagonal_[c.i[k]];
+    Eigen::Matrix3d& dj = diagonal_[c.j[k]];
+    for (int col = 0; col < 3; ++col)
+      for (int row = 0; row < 3; ++row) {
+        const double nn = nk[row] * nk[col];
+        const double p = stiffness * nn;
+        const double q = tangential * ((row == col ? 1.0 : 0.0) - nn);
+        block(row, col) = p - q;
+        di(row, col) += p + q;
+        dj(row, col) += p + q;
+      }
   }
 }
 
@@ -282,40 +262,32 @@ void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
 // added to its pair's elastic block when there is one, halving the product's
 // work. The search for it starts at the block after the last one matched,
 // where the same order puts it, and falls back to the particle's first block.
-// Particle i's diagonal block is carried over its run of pairs, as in
-// assemble_elastic.
 void IncrementalMinimiser::add_drag(const FrozenDrag& drag, double h, double force_floor) {
   const std::size_t elastic_pairs = block_.size();
-  const std::size_t pairs = drag.size();
-  std::size_t cursor = 0, next = 0, k = 0;
-  while (k < pairs) {
-    const std::uint32_t i = drag.i[k];
-    Eigen::Matrix3d di = diagonal_[i];
-    for (; k < pairs && drag.i[k] == i; ++k) {
-      if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-      const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
-      di += b;
-      diagonal_[drag.j[k]] += b;
-      const auto matches = [&](std::size_t m) {
-        return m < elastic_pairs && pair_i_[m] == i && pair_j_[m] == drag.j[k];
-      };
-      std::size_t match = next;
-      if (!matches(match)) {
-        while (cursor < elastic_pairs && pair_i_[cursor] < i) ++cursor;
-        match = cursor;
-        while (match < elastic_pairs && pair_i_[match] == i && pair_j_[match] != drag.j[k])
-          ++match;
-      }
-      if (matches(match)) {
-        block_[match] += b;
-        next = match + 1;
-      } else {
-        pair_i_.push_back(i);
-        pair_j_.push_back(drag.j[k]);
-        block_.push_back(b);
-      }
+  std::size_t cursor = 0, next = 0;
+  for (std::size_t k = 0; k < drag.size(); ++k) {
+    if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
+    const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
+    diagonal_[drag.i[k]] += b;
+    diagonal_[drag.j[k]] += b;
+    const auto matches = [&](std::size_t m) {
+      return m < elastic_pairs && pair_i_[m] == drag.i[k] && pair_j_[m] == drag.j[k];
+    };
+    std::size_t match = next;
+    if (!matches(match)) {
+      while (cursor < elastic_pairs && pair_i_[cursor] < drag.i[k]) ++cursor;
+      match = cursor;
+      while (match < elastic_pairs && pair_i_[match] == drag.i[k] && pair_j_[match] != drag.j[k])
+        ++match;
     }
-    diagonal_[i] = di;
+    if (matches(match)) {
+      block_[match] += b;
+      next = match + 1;
+    } else {
+      pair_i_.push_back(drag.i[k]);
+      pair_j_.push_back(drag.j[k]);
+      block_.push_back(b);
+    }
   }
 }
 

@@ -208,8 +208,6 @@ class IncrementalMinimiser {
   std::vector<Vec3> gradient_, gradient_trial_, trial_, direction_;
   Sliding sliding_, sliding_trial_;
   std::vector<double> relief_;  // θ_c
-  std::vector<Vec3> unit_;         // n_c of the elastic contacts (assemble_elastic)
-  std::vector<double> tangential_;  // |f_c|/r_c
   std::vector<std::uint32_t> pair_i_, pair_j_;
   std::vector<Eigen::Matrix3d> block_, diagonal_, undamped_diagonal_;
   double damping_ = 0.0;         // μ

@@ -7,10 +7,12 @@
 // Used on the contact-force kernel and on the passes over the particles of the
 // explicit step (moving, velocities, error estimate): with them, an explicit
 // Hertz step at N = 1000 takes 36 ns per particle instead of 45. The implicit
-// solver is not cloned: built whole for x86-64-v4 it ran the trade bench's
-// implicit runs no faster.
+// solver is not cloned (built whole for x86-64-v4 it ran the trade bench's
+// implicit runs no faster), except for the films' law over arrays that its
+// evaluation of Φ calls (model/film.cpp).
 // The variants may differ in the last bits (the wider ones contract a·b + c
-// into one fused multiply-add), as results do between compilers.
+// into one fused multiply-add), as results do between compilers — unless the
+// file is compiled with -ffp-contract=off, as model/film.cpp is.
 #pragma once
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
