@@ -26,10 +26,8 @@ std::string to_string(FilmVelocity velocity) {
   }
 }
 
-// Both regimes from one root: r = √max(|w|, w*), so that s = a/r, and on the
-// EHD branch (|w| ≥ w*) r = √|w| in ⅔ a |w|^{3/2}. The constant ⅙ a w*^{3/2}
-// is taken as FilmLaw::potential takes it; for w* = 0 it is 0 and leaves the
-// first term as it is.
+// FilmLaw itself, inlined: compiled without trapping math, its two regimes
+// become selects, and the loop is vectorised.
 SOFTGLASS_VECTOR_CLONES void evaluate_films(std::span<const double> coefficient,
                                             std::span<const double> crossover,
                                             std::span<double> speed, std::span<double> secant,
@@ -41,19 +39,11 @@ SOFTGLASS_VECTOR_CLONES void evaluate_films(std::span<const double> coefficient,
   double* s = secant.data();
   double* phi = potential.data();
   for (std::size_t k = 0; k < n; ++k) {
+    const FilmLaw law{a[k], cross[k]};
     const double norm = std::sqrt(w[k]);
-    const bool linear = norm < cross[k];
-    const double at = linear ? cross[k] : norm;
-    const double root = std::sqrt(at);
-    // (The divisor is never 0, so the division need not be guarded by a branch.)
-    const double quotient = a[k] / (at > 0.0 ? root : 1.0);
-    const double sec = at > 0.0 ? quotient : 0.0;
-    const double quadratic = 0.5 * sec * norm * norm;
-    const double ehd = (2.0 / 3.0) * a[k] * norm * root -
-                       (1.0 / 6.0) * a[k] * cross[k] * std::sqrt(cross[k]);
     w[k] = norm;
-    s[k] = sec;
-    phi[k] = linear ? quadratic : ehd;
+    s[k] = law.secant(norm);
+    phi[k] = law.potential(norm);
   }
 }
 

@@ -108,10 +108,11 @@ struct FilmLaw {
 /// Many films' speeds, secants and potentials at once: on entry `speed`
 /// holds |w|², on return |w|; `secant` and `potential` are FilmLaw's at |w|,
 /// to the last bit, for films with `coefficient` a_c and `crossover` w*.
-/// Written without branches so that the compiler takes the square roots and
-/// divisions of several films in one instruction; film by film, the branch
-/// on the regime (a film near w* goes either way) and the square root whose
-/// result it waits for bounded the implicit step's evaluation of Φ.
+/// Compiled so that FilmLaw's regimes become selects (micro/CMakeLists.txt)
+/// and the square roots and divisions of several films go in one instruction;
+/// film by film, the branch on the regime (a film near w* goes either way) and
+/// the square root whose result it waits for bounded the implicit step's
+/// evaluation of Φ.
 void evaluate_films(std::span<const double> coefficient, std::span<const double> crossover,
                     std::span<double> speed, std::span<double> secant,
                     std::span<double> potential);
