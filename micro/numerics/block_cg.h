@@ -34,10 +34,30 @@
 
 namespace softglass::micro {
 
+/// Σ_a term(a) over the particles a = 0 … n − 1, calling term in that order,
+/// summed in four partial sums (particle a into sum a mod 4, the last n mod 4
+/// into the first) added as (s₀ + s₁) + (s₂ + s₃). One running sum made
+/// every pass of CG wait, particle after particle, for the addition before;
+/// four are four independent chains. The order is fixed, so the sum does not
+/// depend on the machine or on the compiler's vector width.
+template <class Term>
+double sum_over_particles(std::size_t n, Term&& term) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t a = 0;
+  for (; a + 4 <= n; a += 4) {
+    s0 += term(a);
+    s1 += term(a + 1);
+    s2 += term(a + 2);
+    s3 += term(a + 3);
+  }
+  for (; a < n; ++a) s0 += term(a);
+  return (s0 + s1) + (s2 + s3);
+}
+
 inline double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
-  double sum = 0.0;
-  for (std::size_t a = 0; a < x.size(); ++a) sum += x[a].dot(y[a]);
-  return sum;
+  const Vec3* u = x.data();
+  const Vec3* v = y.data();
+  return sum_over_particles(x.size(), [&](std::size_t a) { return u[a].dot(v[a]); });
 }
 
 /// The vectors CG works on, kept between solves so that no solve allocates.
@@ -53,8 +73,8 @@ struct CgOutcome {
 /// z = D⁻¹ r (`precondition(a, v)` per particle) plus, when
 /// `translation_stiffness` c > 0, the coarse correction (Σ_α r_α)/c on every
 /// particle; returns r·z. The dot product is summed in the pass that finishes
-/// z, particle by particle as `dot` would: one pass over the vectors fewer, the
-/// same sum to the last bit.
+/// z, in the order of `dot`: one pass over the vectors fewer, the same sum to
+/// the last bit.
 ///
 /// The loops here and in solve_newton_system run on raw pointers held in
 /// locals: Eigen stores its packets through may-alias types, so with the
@@ -67,21 +87,23 @@ double two_level_precondition(Precondition& precondition, double translation_sti
   const std::size_t n = residual.size();
   const Vec3* r = residual.data();
   Vec3* z = preconditioned.data();
-  Vec3 total = Vec3::Zero();
-  double rz = 0.0;
   const bool coarse_correction = translation_stiffness > 0.0;
+  if (!coarse_correction) {
+    return sum_over_particles(n, [&](std::size_t a) {
+      z[a] = precondition(a, r[a]);
+      return r[a].dot(z[a]);
+    });
+  }
+  Vec3 total = Vec3::Zero();
   for (std::size_t a = 0; a < n; ++a) {
     z[a] = precondition(a, r[a]);
     total += r[a];
-    if (!coarse_correction) rz += r[a].dot(z[a]);
   }
-  if (!coarse_correction) return rz;
   const Vec3 coarse = total / translation_stiffness;
-  for (std::size_t a = 0; a < n; ++a) {
+  return sum_over_particles(n, [&](std::size_t a) {
     z[a] += coarse;
-    rz += r[a].dot(z[a]);
-  }
-  return rz;
+    return r[a].dot(z[a]);
+  });
 }
 
 /// x ← the CG approximation of −H⁻¹ g. `hessian_times(in, out)` sets out = H in;
@@ -115,16 +137,15 @@ CgOutcome solve_newton_system(const std::vector<Vec3>& gradient, HessianTimes&& 
     }
     // The update and ‖r‖² in one pass (the sum in `dot`'s order).
     const double alpha = rz / curvature;
-    double rr = 0.0;
     Vec3* xa = x.data();
     Vec3* r = w.r.data();
     const Vec3* p = w.p.data();
     const Vec3* hp = w.hp.data();
-    for (std::size_t a = 0; a < n; ++a) {
+    const double rr = sum_over_particles(n, [&](std::size_t a) {
       xa[a] += alpha * p[a];
       r[a] -= alpha * hp[a];
-      rr += r[a].dot(r[a]);
-    }
+      return r[a].dot(r[a]);
+    });
     ++outcome.iterations;
     if (rr <= target2) break;
     const double rz_next = two_level_precondition(precondition, translation_stiffness, w.r, w.z);
