@@ -23,8 +23,9 @@
 // (Nocedal & Wright, Numerical Optimization, ch. 3 and 7). Each Newton system
 // is solved matrix-free by conjugate gradients with a 3×3 block-Jacobi
 // preconditioner, to a relative residual η (the forcing term: Eisenstat &
-// Walker's choice 2, floored so that no solve oversolves the exit test;
-// `forcing_term` in incremental_minimiser.cpp). The elastic Hessian of a
+// Walker's choice 2, floored so that no solve oversolves the exit test or
+// the displacement test; `forcing_term` and `displacement_floor` in
+// incremental_minimiser.cpp). The elastic Hessian of a
 // contact, K_c = k_n n nᵀ − (|f|/r)(I − n nᵀ), is indefinite across the
 // contact, and the total one loses definiteness at a
 // plastic instability: CG stops at the first direction of non-positive
