@@ -16,7 +16,7 @@ struct IncrementalCounters {
   std::size_t cg_iterations = 0;      // CG iterations of their linear solves
   std::size_t force_evaluations = 0;  // force-kernel passes (Φ and ∇Φ at a point)
   std::size_t assemblies = 0;         // Hessian models built
-  std::size_t damping_raises = 0;     // Levenberg–Marquardt μ raised: each restarts CG
+  std::size_t damping_raises = 0;     // Levenberg–Marquardt μ raised (negative curvature met)
   std::size_t backtracks = 0;         // line-search trials shortened (t halved)
 
   IncrementalCounters& operator+=(const IncrementalCounters& more) {

@@ -30,9 +30,10 @@
 // contact, and the total one loses definiteness at a
 // plastic instability: CG stops at the first direction of non-positive
 // curvature and returns the iterate so far (Steihaug's truncated CG), which is
-// a descent direction; the Hessian model is then damped, H + μI (Levenberg–
-// Marquardt), μ raised tenfold until CG sees none, and lowered tenfold after
-// each full Newton step. So Φ decreases monotonically, at every iteration.
+// a descent direction, taken for this iteration; the next iteration's Hessian
+// model is damped, H + μI (Levenberg–Marquardt), μ raised tenfold after each
+// iteration that met such a direction and lowered tenfold after each full
+// Newton step that met none. So Φ decreases monotonically, at every iteration.
 // (The implicit step stops at that first direction instead: a step across an
 // instability cannot be accurate — `stop_when_unstable`.)
 // The solve stops when no net force exceeds its tolerance or, when the caller
