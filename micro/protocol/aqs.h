@@ -11,8 +11,9 @@
 // The minimiser is incremental_minimiser.h with Φ = E (Newton–CG, damped when
 // indefinite, Armijo line search): the energy falls monotonically
 // within every step. The guess for each step's non-affine displacement is the
-// previous step's (linear response between events); measured at Δγ = 2e-4, a
-// step takes 5–7 Newton iterations on average (docs/integrators.md).
+// previous step's (linear response between events); measured at Δγ = 2e-4
+// (N = 1000, φ = 0.80, 5 strain), a step takes 3.9 Newton iterations of 45 CG
+// each on average (docs/integrators.md).
 //
 // Usage: `aqs_flow_curve_point(packing system, settings)`; the result carries the
 // sampled series and the same steady-state summary (MSER + blocking) as a
