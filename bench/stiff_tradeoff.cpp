@@ -4,8 +4,9 @@
 // (`--run euler:1e-4`, `--run implicit:1e-3`, …), optionally a third number —
 // the fraction of the stability limit for `euler` (`euler:1e-5:0.4`), the
 // largest step in strain for `implicit` and `bdf2` (`implicit:1e-3:5e-4`) — or
-// quasi-static shear (`--run aqs:2e-4`, the number being the strain step),
-// over the same strain window [0, --strain]. Each prints one line
+// quasi-static shear (`--run aqs:2e-4`, the number being the strain step;
+// `aqs:2e-4:1e-5` also sets the minimiser's force tolerance), over the same
+// strain window [0, --strain]. Each prints one line
 //   run <scheme> <tol> gamma <γ̃> sigma <σ> N1 <N1> N2 <N2> seconds <s>
 //       per_strain <s/strain> steps <n> rejected <n> strain <done> complete <0|1>
 // where σ, N1, N2 are means of the total stress over samples every 0.01 strain
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
   app.add_option("--time-limit", time_limit, "seconds per run before it is cut short");
   app.add_option("--run", runs,
                  "scheme:tolerance[:stability fraction (euler) | max step (implicit, bdf2)] or "
-                 "aqs:strain_step")
+                 "aqs:strain_step[:force tolerance]")
       ->required();
   CLI11_PARSE(app, argc, argv);
   return softglass::run_reporting_errors("stiff_tradeoff", [&] {
@@ -98,10 +99,13 @@ int run_all(const PackingSpec& spec, double gamma_tilde, double strain, double t
     }
     const std::string scheme = parts[0];
     const double value = parts.size() > 1 ? run_number(run, parts[1]) : 0.0;
-    const bool implicit = scheme != "euler";  // implicit, bdf2: the third number is the max step
-    const double third = parts.size() > 2 ? run_number(run, parts[2])
-                                          : (implicit ? IntegratorSpec{}.max_step
-                                                      : IntegratorSpec{}.stability_fraction);
+    // euler: the third number is the stability fraction; implicit, bdf2: the
+    // max step; aqs: the force tolerance.
+    const bool implicit = scheme != "euler";
+    const double third = parts.size() > 2   ? run_number(run, parts[2])
+                         : scheme == "aqs" ? AqsSettings{}.relative_force
+                         : implicit        ? IntegratorSpec{}.max_step
+                                           : IntegratorSpec{}.stability_fraction;
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -113,6 +117,7 @@ int run_all(const PackingSpec& spec, double gamma_tilde, double strain, double t
       if (scheme == "aqs") {
         AqsSettings s;
         s.strain_step = value;
+        s.relative_force = third;
         s.strain = strain;
         s.min_stationary_strain = strain / 2;
         ContactSystem system(packing.particles, packing.box, law, spec.skin);

@@ -212,6 +212,7 @@ class IncrementalMinimiser {
   std::vector<double> relief_;  // θ_c
   std::vector<std::uint32_t> pair_i_, pair_j_;
   std::vector<Eigen::Matrix3d> block_, diagonal_, undamped_diagonal_;
+  mutable std::vector<double> padded_product_;  // hessian_times' scratch
   double damping_ = 0.0;         // μ
   double diagonal_scale_ = 1.0;  // mean diagonal entry of the Hessian model
   bool negative_curvature_ = false;
