@@ -49,16 +49,18 @@ __attribute__((target("avx2,fma"))) void pair_block_product_avx2(const PairBlock
                                                              std::vector<Vec3>& out,
                                                              std::vector<double>& padded) {
   const std::size_t n = in.size();
+  if (n == 0) return;
   padded.resize(4 * n);
   const __m256i first_three = _mm256_setr_epi64x(-1, -1, -1, 0);
-  const double* x = in.data()->data();  // 3 per particle
+  const double* x = in.front().data();  // 3 per particle
   double* y = padded.data();            // 4 per particle, the last 0
   for (std::size_t a = 0; a < n; ++a) {
     const double s = (diagonal.empty() ? 0.0 : diagonal[a]) + shift;
     _mm256_storeu_pd(y + 4 * a,
                      _mm256_mul_pd(_mm256_set1_pd(s), _mm256_maskload_pd(x + 3 * a, first_three)));
   }
-  const double* block = pairs.block.data()->data();  // 9 per pair, column by column
+  // 9 per pair, column by column (none: the loop below does not run)
+  const double* block = pairs.block.empty() ? nullptr : pairs.block.front().data();
   const std::uint32_t* pair_i = pairs.i.data();
   const std::uint32_t* pair_j = pairs.j.data();
   const std::size_t m = pairs.block.size();

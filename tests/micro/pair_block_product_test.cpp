@@ -89,5 +89,16 @@ TEST(PairBlockProduct, AppliesTheDenseOperatorItStandsFor) {
   expect_near(y, false, "no diagonal");
 }
 
+TEST(PairBlockProduct, WithoutPairsOnlyTheDiagonalActs) {
+  // A packing below jamming has no contacts: the product is the diagonal's.
+  const std::vector<Vec3> x = {Vec3(1.0, -2.0, 3.0), Vec3(0.5, 0.25, -4.0)};
+  const std::vector<double> diagonal = {2.0, 3.0};
+  std::vector<Vec3> y(2);
+  std::vector<double> padded;
+  pair_block_product({}, diagonal, 0.5, x, y, padded);
+  EXPECT_EQ(y[0], Vec3(2.5, -5.0, 7.5));  // exact: products of binary fractions
+  EXPECT_EQ(y[1], Vec3(1.75, 0.875, -14.0));
+}
+
 }  // namespace
 }  // namespace softglass::micro
