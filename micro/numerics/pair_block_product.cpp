@@ -20,7 +20,8 @@ void pair_block_product_portable(const PairBlocks& pairs, std::span<const double
   const std::size_t n = in.size();
   const Vec3* x = in.data();
   Vec3* y = out.data();
-  for (std::size_t a = 0; a < n; ++a) y[a] = ((diagonal.empty() ? 0.0 : diagonal[a]) + shift) * x[a];
+  for (std::size_t a = 0; a < n; ++a)
+    y[a] = ((diagonal.empty() ? 0.0 : diagonal[a]) + shift) * x[a];
   const Eigen::Matrix3d* block = pairs.block.data();
   const std::uint32_t* pair_i = pairs.i.data();
   const std::uint32_t* pair_j = pairs.j.data();
@@ -42,12 +43,9 @@ void pair_block_product_portable(const PairBlocks& pairs, std::span<const double
 #ifdef SOFTGLASS_PAIR_PRODUCT_AVX2
 namespace {
 
-__attribute__((target("avx2,fma"))) void pair_block_product_avx2(const PairBlocks& pairs,
-                                                             std::span<const double> diagonal,
-                                                             double shift,
-                                                             const std::vector<Vec3>& in,
-                                                             std::vector<Vec3>& out,
-                                                             std::vector<double>& padded) {
+__attribute__((target("avx2,fma"))) void pair_block_product_avx2(
+    const PairBlocks& pairs, std::span<const double> diagonal, double shift,
+    const std::vector<Vec3>& in, std::vector<Vec3>& out, std::vector<double>& padded) {
   const std::size_t n = in.size();
   if (n == 0) return;
   padded.resize(4 * n);
@@ -73,9 +71,12 @@ __attribute__((target("avx2,fma"))) void pair_block_product_avx2(const PairBlock
       const double* b = block + 9 * k;
       const __m256d d = _mm256_sub_pd(xi, _mm256_maskload_pd(x + 3 * pair_j[k], first_three));
       // f = B (x_i − x_j), column by column: b₀ dx + b₁ dy + b₂ dz.
-      __m256d f = _mm256_mul_pd(_mm256_maskload_pd(b, first_three), _mm256_permute4x64_pd(d, 0x00));
-      f = _mm256_fmadd_pd(_mm256_maskload_pd(b + 3, first_three), _mm256_permute4x64_pd(d, 0x55), f);
-      f = _mm256_fmadd_pd(_mm256_maskload_pd(b + 6, first_three), _mm256_permute4x64_pd(d, 0xAA), f);
+      const __m256d b0 = _mm256_maskload_pd(b, first_three);
+      const __m256d b1 = _mm256_maskload_pd(b + 3, first_three);
+      const __m256d b2 = _mm256_maskload_pd(b + 6, first_three);
+      __m256d f = _mm256_mul_pd(b0, _mm256_permute4x64_pd(d, 0x00));
+      f = _mm256_fmadd_pd(b1, _mm256_permute4x64_pd(d, 0x55), f);
+      f = _mm256_fmadd_pd(b2, _mm256_permute4x64_pd(d, 0xAA), f);
       yi = _mm256_add_pd(yi, f);
       double* yj = y + 4 * pair_j[k];
       _mm256_storeu_pd(yj, _mm256_sub_pd(_mm256_loadu_pd(yj), f));

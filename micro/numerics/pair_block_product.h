@@ -45,10 +45,9 @@ void pair_block_product(const PairBlocks& pairs, std::span<const double> diagona
                         const std::vector<Vec3>& in, std::vector<Vec3>& out,
                         std::vector<double>& padded);
 
-/// The portable implementation alone (the tests compare the two).
+/// The portable implementation alone, which the tests check on every processor.
 void pair_block_product_portable(const PairBlocks& pairs, std::span<const double> diagonal,
-                                 double shift, const std::vector<Vec3>& in,
-                                 std::vector<Vec3>& out);
+                                 double shift, const std::vector<Vec3>& in, std::vector<Vec3>& out);
 
 /// True when this processor runs the AVX2 implementation.
 bool pair_block_product_vectorised();
