@@ -13,6 +13,7 @@ void ContactList::clear() {
   i.clear();
   j.clear();
   separation.clear();
+  inverse_distance.clear();
   deformation.clear();
   contact_radius.clear();
   force.clear();
@@ -23,17 +24,31 @@ void ContactList::resize(std::size_t pairs) {
   i.resize(pairs);
   j.resize(pairs);
   separation.resize(pairs);
+  inverse_distance.resize(pairs);
   deformation.resize(pairs);
   contact_radius.resize(pairs);
   force.resize(pairs);
   stiffness.resize(pairs);
 }
 
+Eigen::Matrix3d ContactList::virial() const {
+  double xx = 0, yy = 0, zz = 0, xy = 0, xz = 0, yz = 0;
+  for (std::size_t k = 0; k < size(); ++k) {
+    const Vec3& d = separation[k];
+    const Vec3 f = (force[k] * inverse_distance[k]) * d;
+    xx += f.x() * d.x(), yy += f.y() * d.y(), zz += f.z() * d.z();
+    xy += f.y() * d.x(), xz += f.z() * d.x(), yz += f.z() * d.y();
+  }
+  Eigen::Matrix3d v;
+  v << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  return v;
+}
+
 void ContactField::Touching::reserve(std::size_t pairs) {
   if (pair.size() >= pairs) return;
   pair.resize(pairs);
   for (std::vector<double>* a : {&dx, &dy, &dz, &distance2, &deformation, &magnitude, &scale,
-                                 &normal_stiffness, &norm, &energy})
+                                 &normal_stiffness, &norm, &energy, &inverse_distance})
     a->resize(pairs);
 }
 
@@ -43,8 +58,8 @@ std::size_t ContactField::memory_bytes() const {
   for (const auto& k : scratch.stiffness) bytes += k.capacity() * sizeof(double);
   const auto list_bytes = [](const ContactList& c) {
     return c.i.capacity() * 8 + c.separation.capacity() * sizeof(Vec3) +
-           (c.deformation.capacity() + c.contact_radius.capacity() + c.force.capacity() +
-            c.stiffness.capacity()) *
+           (c.inverse_distance.capacity() + c.deformation.capacity() + c.contact_radius.capacity() +
+            c.force.capacity() + c.stiffness.capacity()) *
                sizeof(double);
   };
   bytes += list_bytes(contacts);
@@ -108,6 +123,7 @@ void finish_kernel(const ForceKernelInput& in, const std::vector<KernelTotals>& 
     cat(out.contacts.i, part.i);
     cat(out.contacts.j, part.j);
     cat(out.contacts.separation, part.separation);
+    cat(out.contacts.inverse_distance, part.inverse_distance);
     cat(out.contacts.deformation, part.deformation);
     cat(out.contacts.contact_radius, part.contact_radius);
     cat(out.contacts.force, part.force);

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "micro/contact/contact_law.h"
-#include "micro/geometry/lees_edwards_box.h"
 #include "micro/contact/wall_contacts.h"
+#include "micro/geometry/lees_edwards_box.h"
 #include "micro/geometry/neighbour_list.h"
 
 namespace softglass::micro {
@@ -25,13 +25,18 @@ namespace softglass::micro {
 /// drag or an analysis needs them.
 struct ContactList {
   std::vector<std::uint32_t> i, j;
-  std::vector<Vec3> separation;        // d = x_i − x_j (nearest image)
-  std::vector<double> deformation;     // ε
-  std::vector<double> contact_radius;  // R_c
-  std::vector<double> force;           // |f| = R_c² F(ε)
-  std::vector<double> stiffness;       // df/dh = R_c F'(ε)
+  std::vector<Vec3> separation;          // d = x_i − x_j (nearest image)
+  std::vector<double> inverse_distance;  // 1/r = 1/|d|, the kernel's: spares the Hessian's
+                                         // assembly a square root and a division per contact
+  std::vector<double> deformation;       // ε
+  std::vector<double> contact_radius;    // R_c
+  std::vector<double> force;             // |f| = R_c² F(ε)
+  std::vector<double> stiffness;         // df/dh = R_c F'(ε)
 
   std::size_t size() const { return i.size(); }
+  /// Σ d ⊗ f over the contacts, f = (|f|/r) d: the kernel's virial, from a
+  /// list already at hand instead of another pass over the neighbour list.
+  Eigen::Matrix3d virial() const;
   void clear();
   void resize(std::size_t pairs);
 };
@@ -58,7 +63,7 @@ struct ContactField {
       Eigen::Matrix3d::Zero();  // Σ_pairs d ⊗ f  (σ^e = −virial/V), if requested
   double energy = 0.0;
   double force_magnitude_sum = 0.0;  // Σ_c |f_c|
-  std::size_t contact_count = 0;  // pairs only
+  std::size_t contact_count = 0;     // pairs only
   ContactList contacts;
   WallContacts walls;  // with walls (wall_contacts.h): always filled
 
@@ -74,6 +79,7 @@ struct ContactField {
     std::vector<std::uint32_t> pair, end;
     std::vector<double> dx, dy, dz, distance2;
     std::vector<double> deformation, magnitude, scale, normal_stiffness, norm, energy;
+    std::vector<double> inverse_distance;  // written only when the contacts are asked for
     /// Room for at least `pairs` pairs (contents kept).
     void reserve(std::size_t pairs);
   };

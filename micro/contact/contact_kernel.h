@@ -81,6 +81,7 @@ contact_blocks(const Law& law, const ForceKernelInput& in,
     double* const normal_stiffness = touching.normal_stiffness.data();
     double* const norm = touching.norm.data();
     double* const pair_energy = touching.energy.data();
+    double* const inverse_distance = touching.inverse_distance.data();
 
     // 1. ε > 0 ⇔ r < R_i + R_j: the pair is written in any case, kept by
     //    advancing m.
@@ -119,6 +120,7 @@ contact_blocks(const Law& law, const ForceKernelInput& in,
       normal_stiffness[k] = kn;
       norm[k] = std::max(kn, fmag * inv_r);
       if constexpr (kEnergy) pair_energy[k] = rc * rc * rc * law.energy(eps);
+      if constexpr (kContacts) inverse_distance[k] = inv_r;
     }
 
     // 3. +f on i (summed in registers), −f on j; the contacts, if asked for,
@@ -147,6 +149,7 @@ contact_blocks(const Law& law, const ForceKernelInput& in,
           contacts.i[c] = static_cast<std::uint32_t>(i);
           contacts.j[c] = j;
           contacts.separation[c] = Vec3(dx[k], dy[k], dz[k]);
+          contacts.inverse_distance[c] = inverse_distance[k];
           contacts.deformation[c] = deformation[k];
           contacts.contact_radius[c] = constants[pair[k]].contact_radius;
           contacts.force[c] = pair_force[k];

@@ -93,14 +93,15 @@ bool is_origin(const std::vector<Vec3>& u) {
 
 // The frozen drag's block (a/h)|w|^{-1/2}(P − θ ŵŵᵀ), |w| floored (see the
 // header), plus (b/h) I of the Stokes pair dashpots, for drag pair k at the
-// point `sliding` was evaluated at, with relief θ. A free function called
-// once, so that it is inlined: returned from a call, the block went through
-// the stack as scalars and was reloaded as packets, stalling on the partial
-// stores.
+// point `sliding` was evaluated at, with relief θ (`inverse_step` is 1/h). A
+// free function called once, so that it is inlined: returned from a call, the
+// block went through the stack as scalars and was reloaded as packets,
+// stalling on the partial stores. The only division left on the common path
+// is ŵ's: the floor's test compares squares, and 1/h is taken once.
 Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Sliding& sliding,
-                           double relief, double h, double force_floor) {
+                           double relief, double inverse_step, double force_floor) {
   const double a = drag.coefficient[k];
-  const double dashpot = drag.dashpot[k] / h;
+  const double dashpot = drag.dashpot[k] * inverse_step;
   Eigen::Matrix3d b;
   if (a <= 0.0) {
     b = dashpot * Eigen::Matrix3d::Identity();
@@ -108,13 +109,20 @@ Eigen::Matrix3d drag_block(const FrozenDrag& drag, std::size_t k, const Sliding&
   }
   const Vec3& w = sliding.w[k];
   const double speed = sliding.speed[k];
-  const double floor_speed = (force_floor / a) * (force_floor / a);
   const FilmLaw law{a, drag.crossover[k]};
-  // The secant at max(|w|, floor): the one evaluate_at computed, unless floored.
-  const double s = (speed < floor_speed ? law.secant(floor_speed) : sliding.secant[k]) / h;
-  // A film in its linear regime has the isotropic curvature s P: no relief.
-  const Vec3 unit = speed > 0.0 && !law.linear(speed) ? Vec3(w / speed) : Vec3::Zero();
-  const Vec3 relieved = relief * unit;
+  // The secant at max(|w|, floor): the one evaluate_at computed, unless the
+  // film's drag a|w|^{1/2} is below the floor, i.e. |w| < (floor/a)².
+  const bool floored = a * a * speed < force_floor * force_floor;
+  const double s =
+      (floored ? law.secant((force_floor / a) * (force_floor / a)) : sliding.secant[k]) *
+      inverse_step;
+  // A film in its linear regime has the isotropic curvature s P: no relief;
+  // nor has a film whose relief θ is 0 (the majoriser).
+  Vec3 unit = Vec3::Zero(), relieved = Vec3::Zero();
+  if (relief > 0.0 && speed > 0.0 && !law.linear(speed)) {
+    unit = w / speed;
+    relieved = relief * unit;
+  }
   const Eigen::Matrix3d& projector = drag.projector[k];
   for (int col = 0; col < 3; ++col)
     for (int row = 0; row < 3; ++row)
@@ -199,8 +207,9 @@ bool IncrementalMinimiser::evaluate_at(ContactSystem& system, std::span<const do
   sliding.speed.resize(pairs);
   sliding.secant.resize(pairs);
   sliding.potential.resize(pairs);
+  const double inverse_step = 1.0 / h;
   for (std::size_t k = 0; k < pairs; ++k) {
-    du[k] = (u[drag.i[k]] - u[drag.j[k]]) / h;
+    du[k] = (u[drag.i[k]] - u[drag.j[k]]) * inverse_step;
     w[k] = drag.film.project(drag.normal[k], du[k]) + drag.affine[k];
     sliding.speed[k] = w[k].squaredNorm();
   }
@@ -259,10 +268,9 @@ void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
   pair_j_.assign(c.j.begin(), c.j.end());
   block_.resize(c.size());
   for (std::size_t k = 0; k < c.size(); ++k) {
-    const double r = c.separation[k].norm();
-    const Vec3 nk = c.separation[k] / r;
+    const Vec3 nk = c.separation[k] * c.inverse_distance[k];
     const double stiffness = c.stiffness[k];
-    const double tangential = c.force[k] / r;
+    const double tangential = c.force[k] * c.inverse_distance[k];
     Eigen::Matrix3d& block = block_[k];
     Eigen::Matrix3d& di = diagonal_[c.i[k]];
     Eigen::Matrix3d& dj = diagonal_[c.j[k]];
@@ -285,10 +293,11 @@ void IncrementalMinimiser::assemble_elastic(const ContactList& c) {
 // where the same order puts it, and falls back to the particle's first block.
 void IncrementalMinimiser::add_drag(const FrozenDrag& drag, double h, double force_floor) {
   const std::size_t elastic_pairs = block_.size();
+  const double inverse_step = 1.0 / h;
   std::size_t cursor = 0, next = 0;
   for (std::size_t k = 0; k < drag.size(); ++k) {
     if (drag.coefficient[k] <= 0.0 && drag.dashpot[k] <= 0.0) continue;
-    const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], h, force_floor);
+    const Eigen::Matrix3d b = drag_block(drag, k, sliding_, relief_[k], inverse_step, force_floor);
     diagonal_[drag.i[k]] += b;
     diagonal_[drag.j[k]] += b;
     const auto matches = [&](std::size_t m) {

@@ -25,6 +25,8 @@ class ContactSystem {
                 double skin);
 
   /// Particles in the engine's order, positions not necessarily in the cell.
+  /// Positions change only through the methods below (move, shear, …), which
+  /// is what lets current_forces tell a configuration it has evaluated.
   const Particles& particles() const { return particles_; }
   Particles& particles() { return particles_; }
   /// Particles in label order with positions wrapped into the cell: for output.
@@ -47,6 +49,10 @@ class ContactSystem {
   /// Elastic forces at the current configuration (the list must be valid).
   const ContactField& compute_forces(const ForceRequest& request = {});
   const ContactField& forces() const { return field_; }
+  /// The same, but the last evaluation's if nothing has moved, been reordered
+  /// or sheared since and it computed at least what `request` asks for: the
+  /// implicit step freezes its drag at the point its last solve evaluated.
+  const ContactField& current_forces(const ForceRequest& request);
 
   /// Rebuilds the list (reordering particles) unless it stays valid for a further
   /// non-affine move of up to `extra_nonaffine` per particle and strain `strain`.
@@ -84,6 +90,9 @@ class ContactSystem {
 
  private:
   void rebuild();
+  // Every change of the positions, the cell or the particles' order counts
+  // one configuration; the field remembers the one it was computed at.
+  void changed() { ++configuration_; }
 
   Particles particles_;
   LeesEdwardsBox box_;
@@ -91,6 +100,9 @@ class ContactSystem {
   Walls walls_;
   NeighbourList neighbours_;
   ContactField field_;
+  std::uint64_t configuration_ = 0;
+  std::uint64_t field_configuration_ = ~std::uint64_t{0};  // none yet
+  ForceRequest field_request_{};
   std::vector<Vec3> nonaffine_;  // since the last build
   double max_nonaffine_ = 0.0;
 };

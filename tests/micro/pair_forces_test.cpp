@@ -91,6 +91,72 @@ TEST_P(PairForces, ThirdLawPerPairThroughTheContactList) {
   for (std::size_t k = 0; k < c.size(); ++k) EXPECT_GT(c.force[k], 0.0);
 }
 
+// The list's 1/r is the reciprocal of |d| to a rounding or two (the kernel
+// takes it as 1/√(d·d)), and the virial summed over the list is the kernel's
+// Σ d ⊗ f up to the order and fusing of the sums: a few ulp of Σ|f_c| r.
+TEST_P(PairForces, ContactListCarriesTheKernelsDistanceAndVirial) {
+  ContactSystem system = overlapping_system(GetParam());
+  const ContactField& field = system.compute_forces({.contacts = true, .virial = true});
+  const ContactList& c = field.contacts;
+  ASSERT_GT(c.size(), 300u);
+  double scale = 0.0;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const double r = c.separation[k].norm();
+    EXPECT_NEAR(c.inverse_distance[k] * r, 1.0, 4 * DBL_EPSILON) << "contact " << k;
+    scale += c.force[k] * r;
+  }
+  const Eigen::Matrix3d summed = c.virial();
+  EXPECT_LE((summed - field.virial).norm(), 1e-13 * scale);
+  EXPECT_LE((summed - summed.transpose()).norm(), 0.0);  // symmetric by construction
+  EXPECT_GT(field.virial.norm(), 1e-3 * scale);          // and not trivially small
+}
+
+// current_forces hands back the last evaluation while the configuration is
+// the one it was made at and it computed what is asked for; any move, shear,
+// strain, restore or rebuild makes it evaluate again.
+TEST(CurrentForces, ReusedOnlyAtTheConfigurationTheyWereComputedAt) {
+  ContactSystem system = overlapping_system(0.1);
+  const std::size_t n = system.size();
+  const double energy = system.compute_forces({.energy = true, .contacts = true}).energy;
+  ASSERT_GT(energy, 0.0);
+  const std::vector<Vec3> at_start = system.forces().force;
+  const auto same_as_fresh = [&](const ForceRequest& request) {
+    const ContactField& reused = system.current_forces(request);
+    const std::vector<Vec3> forces = reused.force;
+    const std::size_t contacts = reused.contacts.size();
+    const ContactField& fresh = system.compute_forces(request);
+    return forces == fresh.force && contacts == fresh.contacts.size();
+  };
+
+  // Reused: the very object, with the energy and contacts it had.
+  const ContactField& again = system.current_forces({.contacts = true, .virial = false});
+  EXPECT_EQ(&again, &system.forces());
+  EXPECT_EQ(again.energy, energy);
+  EXPECT_EQ(again.force, at_start);
+  // A request for more than was computed (the virial) evaluates again.
+  system.compute_forces({.energy = true, .contacts = true, .virial = false});
+  EXPECT_EQ(system.current_forces({.virial = true}).virial,
+            system.compute_forces({.virial = true}).virial);
+
+  // Each change of the configuration is seen.
+  std::vector<Vec3> push(n, Vec3(1e-3, -2e-3, 5e-4));
+  system.compute_forces({.contacts = true});
+  system.move(1.0, push);
+  EXPECT_NE(system.current_forces({.contacts = true}).force, at_start);
+  EXPECT_TRUE(same_as_fresh({.contacts = true}));
+  system.shear(1e-3);
+  EXPECT_TRUE(same_as_fresh({.contacts = true}));
+  const std::vector<Vec3> positions = system.particles().position;
+  const double strain = system.box().strain();
+  system.move(1.0, push);
+  system.compute_forces({.contacts = true});
+  system.restore_positions(positions, strain);
+  EXPECT_TRUE(same_as_fresh({.contacts = true}));
+  system.compute_forces({.contacts = true});
+  system.set_strain(strain + 0.01);  // rebuilds, reordering the particles
+  EXPECT_TRUE(same_as_fresh({.contacts = true}));
+}
+
 INSTANTIATE_TEST_SUITE_P(Strains, PairForces, ::testing::Values(0.0, 0.37));
 
 // From 2048 particles the kernel splits its blocks over the threads, which add

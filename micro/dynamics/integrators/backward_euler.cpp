@@ -280,7 +280,10 @@ class BackwardEuler final : public Integrator {
     drag_.clear();
     if (model.drag.enabled || model.drag.stokes.has_pairs()) {
       ++stats_.drag_freezes;
-      const ContactField& field = system.compute_forces({.contacts = true, .virial = false});
+      // At x_n, where the last accepted solve (or the stress sample after it)
+      // evaluated the forces with their contacts: not evaluated again unless
+      // the list was rebuilt since.
+      const ContactField& field = system.current_forces({.contacts = true, .virial = false});
       freeze_drag(field.contacts, gamma_tilde, rate, model.drag, friction_, drag_);
     }
   }
