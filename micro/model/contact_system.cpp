@@ -121,13 +121,12 @@ Particles ContactSystem::wrapped_in_label_order() const {
 }
 
 void ContactSystem::set_strain(double strain) {
-  changed();
-  box_.set_strain(strain);
+  box_.set_strain(strain);  // rebuild() counts the change
   rebuild();
 }
 
 void ContactSystem::rescale(double factor) {
-  changed();
+  // rebuild(), at the end, counts the change.
   for (auto& x : particles_.position) x *= factor;
   const double strain = box_.strain();
   box_ = LeesEdwardsBox(box_.side() * factor);
