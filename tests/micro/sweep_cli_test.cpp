@@ -178,36 +178,59 @@ TEST_F(MicroCli, SweepQuasiStaticCaseIsTheLowEndOfTheFlowCurve) {
   EXPECT_EQ(table_data(work() / "out/flow_curve.csv"), table);
 }
 
-// A finished quasi-static run minimised to a tighter force tolerance than the
-// sweep file now asks for meets the request and is kept; one made at a looser
-// tolerance is refused, naming the heading line that differs.
-TEST_F(MicroCli, SweepKeepsAQuasiStaticRunMadeAtATighterForceTolerance) {
-  const auto file_at = [&](const std::string& tolerance) {
-    return sweep_file("out",
-                      "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n"
-                      "  set packings = 1\n  set quasi-static = true\n"
-                      "  set quasi-static strain step = 1e-3\n"
-                      "  set quasi-static force tolerance = " +
-                          tolerance + "\n",
-                      0.5, 128);
+// A finished quasi-static run made at a finer setting than the sweep file now
+// asks for — a tighter force tolerance, a smaller strain step — resolves the
+// request and is kept; one made at a coarser setting is refused, naming the
+// heading line that differs. `entry` is the sweep entry, the other setting
+// stays at the file's: strain step 1e-3, force tolerance 1e-6.
+class SweepKeptRun : public MicroCli {
+ protected:
+  void expect_finer_quasi_static_run_kept(const std::string& entry, const std::string& made,
+                                          const std::string& coarser, const std::string& finer,
+                                          const std::string& heading) const;
+};
+
+void SweepKeptRun::expect_finer_quasi_static_run_kept(const std::string& entry,
+                                                      const std::string& made,
+                                                      const std::string& coarser,
+                                                      const std::string& finer,
+                                                      const std::string& heading) const {
+  const auto file_at = [&](const std::string& value) {
+    std::string entries =
+        "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n"
+        "  set packings = 1\n  set quasi-static = true\n";
+    for (const auto& [name, fixed] : {std::pair<std::string, std::string>{"strain step", "1e-3"},
+                                      {"force tolerance", "1e-6"}})
+      entries += "  set quasi-static " + name + " = " + (name == entry ? value : fixed) + "\n";
+    return sweep_file("out", entries, 0.5, 128);
   };
-  parameters("tight.prm", file_at("1e-9"));
-  const Outcome made = micro("--threads 1 sweep tight.prm --case 0 --quiet");
-  ASSERT_EQ(made.code, 0) << made.err;
+  parameters("made.prm", file_at(made));
+  const Outcome first = micro("--threads 1 sweep made.prm --case 0 --quiet");
+  ASSERT_EQ(first.code, 0) << first.err;
   const fs::path record = work() / "out/runs/phi0.8000_aqs_seed1.h5";
   const auto written = fs::last_write_time(record);
 
-  parameters("loose.prm", file_at("1e-6"));
-  const Outcome again = micro("--threads 1 sweep loose.prm --case 0 --quiet");
+  parameters("coarser.prm", file_at(coarser));
+  const Outcome again = micro("--threads 1 sweep coarser.prm --case 0 --quiet");
   ASSERT_EQ(again.code, 0) << again.err;
-  EXPECT_EQ(fs::last_write_time(record), written) << "the tighter run is not recomputed";
+  EXPECT_EQ(fs::last_write_time(record), written) << "the finer run is not recomputed";
 
-  parameters("tighter.prm", file_at("1e-10"));
-  const Outcome refused = micro("--threads 1 sweep tighter.prm --case 0 --quiet");
+  parameters("finer.prm", file_at(finer));
+  const Outcome refused = micro("--threads 1 sweep finer.prm --case 0 --quiet");
   EXPECT_EQ(refused.code, 2);
-  EXPECT_NE(refused.err.find("minimiser force tolerance 1e-09"), std::string::npos) << refused.err;
-  EXPECT_NE(refused.err.find("minimiser force tolerance 1e-10"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find(heading + " " + made), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find(heading + " " + finer), std::string::npos) << refused.err;
   EXPECT_EQ(fs::last_write_time(record), written);
+}
+
+TEST_F(SweepKeptRun, QuasiStaticRunMadeAtATighterForceTolerance) {
+  expect_finer_quasi_static_run_kept("force tolerance", "1e-09", "1e-06", "1e-10",
+                                     "minimiser force tolerance");
+}
+
+TEST_F(SweepKeptRun, QuasiStaticRunMadeAtASmallerStrainStep) {
+  expect_finer_quasi_static_run_kept("strain step", "0.0005", "0.001", "0.00025",
+                                     "strain step");
 }
 
 // A preset fixes each run's length whatever the file's subsection shear says:
