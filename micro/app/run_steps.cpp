@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -159,6 +160,16 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
   const auto start = Clock::now();
   const std::optional<QuasiStaticCheckpoint> resume =
       existing_checkpoint<QuasiStaticCheckpoint>(checkpoints, read_quasi_static_checkpoint);
+  // A run goes on with the step it was made with, so that its record's step is
+  // that of every step it took (the default changed from 2e-4 to 1e-3).
+  if (resume && resume->counters.steps > 0) {
+    const double made = strain_step_of(*resume);
+    require(std::abs(made - settings.strain_step) <= 1e-6 * settings.strain_step,
+            fmt::format("checkpoint {} was made at quasi-static strain step {:.6g}, the run asks "
+                        "for {}: set 'quasi-static strain step' = {:.6g} to go on from it, or "
+                        "delete it to start this run afresh",
+                        checkpoints.file.string(), made, settings.strain_step, made));
+  }
   QuasiStaticResult r = run_quasi_static(
       record.packing_particles, record.packing_box, law, prm.packing.skin, settings, prm.protocol,
       follow(progress), checkpointing_of<QuasiStaticCheckpointing>(checkpoints, resume));

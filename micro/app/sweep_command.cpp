@@ -78,7 +78,7 @@ QuasiStaticSettings quasi_static_settings(const Sweep& sweep) {
 // The parameter text a case's run file stores: the quasi-static case's heads
 // it with what the file's entries do not say, its strain step and its
 // minimiser's tolerance among them.
-std::string stored_parameters(const Sweep& sweep, const SweepCase& c, const std::string& text,
+std::string stored_parameters(const SweepCase& c, const std::string& text,
                               const QuasiStaticSettings& settings) {
   if (!c.quasi_static) return text;
   return fmt::format(
@@ -132,8 +132,8 @@ void check_cases_before_work(const Sweep& sweep) {
   for (const SweepCase& c : sweep.plan.cases) {
     const MicroParameters prm = checked_parameters_of(sweep, c);
     if (std::filesystem::exists(c.file))
-      require_same_computation(c.file,
-                               stored_parameters(sweep, c, prm.text, kept_quasi_static_settings(sweep, c)));
+      require_same_computation(
+          c.file, stored_parameters(c, prm.text, kept_quasi_static_settings(sweep, c)));
   }
 }
 
@@ -205,8 +205,7 @@ void run_case(const Sweep& sweep, const SweepCase& c, const Workers& workers,
   const auto follow = [&](double strain, double) {
     progress(std::min(1.0, strain / prm.protocol.max_strain));
   };
-  record.parameters =
-      stored_parameters(sweep, c, record.parameters, quasi_static_settings(sweep));
+  record.parameters = stored_parameters(c, record.parameters, quasi_static_settings(sweep));
   if (c.quasi_static) {
     shear_quasi_statically_and_analyse(record, prm, law, quasi_static_settings(sweep), follow,
                                        checkpoints);

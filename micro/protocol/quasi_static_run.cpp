@@ -73,6 +73,12 @@ void append(const AqsResult& r, const Layout& l, double segment_start,
 
 }  // namespace
 
+double strain_step_of(const QuasiStaticCheckpoint& checkpoint) {
+  if (checkpoint.counters.steps == 0) return 0.0;
+  return (checkpoint.box.strain() - checkpoint.start) /
+         static_cast<double>(checkpoint.counters.steps);
+}
+
 QuasiStaticResult run_quasi_static(const Particles& particles, const LeesEdwardsBox& box,
                                    std::shared_ptr<const ContactLaw> law, double skin,
                                    const QuasiStaticSettings& settings,

@@ -50,6 +50,10 @@ struct QuasiStaticCheckpoint {
   double seconds = 0.0;  // wall time up to the checkpoint
 };
 
+/// The strain step a checkpoint's run took (the strain it sheared over its
+/// steps), 0 before its first step.
+double strain_step_of(const QuasiStaticCheckpoint& checkpoint);
+
 /// Checkpoints every `every_steps` strain steps (at the end of a segment).
 /// `{}` initialisers: a caller may name one field alone.
 struct QuasiStaticCheckpointing {

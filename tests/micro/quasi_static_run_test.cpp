@@ -100,6 +100,8 @@ TEST_F(QuasiStaticRun, ResumedRunIsBitIdenticalToTheUninterruptedOne) {
   ASSERT_GT(stored.series.size(), 0u);
   EXPECT_GT(stored.counters.minimiser.solves, 0u) << "the minimiser's counters are stored";
   EXPECT_THROW(read_checkpoint(file), InputError) << "not a sheared run's checkpoint";
+  EXPECT_NEAR(strain_step_of(stored), settings_.strain_step, 1e-9 * settings_.strain_step)
+      << "the step it was made at: its strain over its steps";
   const QuasiStaticResult resumed = shear({.resume_from = &stored});
 
   const TimeSeries& a = whole.run.series;

@@ -199,8 +199,8 @@ void SweepKeptRun::expect_finer_quasi_static_run_kept(const std::string& entry,
     std::string entries =
         "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n"
         "  set packings = 1\n  set quasi-static = true\n";
-    for (const auto& [name, fixed] : {std::pair<std::string, std::string>{"strain step", "1e-3"},
-                                      {"force tolerance", "1e-6"}})
+    for (const auto& [name, fixed] :
+         {std::pair<std::string, std::string>{"strain step", "1e-3"}, {"force tolerance", "1e-6"}})
       entries += "  set quasi-static " + name + " = " + (name == entry ? value : fixed) + "\n";
     return sweep_file("out", entries, 0.5, 128);
   };
@@ -229,8 +229,54 @@ TEST_F(SweepKeptRun, QuasiStaticRunMadeAtATighterForceTolerance) {
 }
 
 TEST_F(SweepKeptRun, QuasiStaticRunMadeAtASmallerStrainStep) {
-  expect_finer_quasi_static_run_kept("strain step", "0.0005", "0.001", "0.00025",
-                                     "strain step");
+  expect_finer_quasi_static_run_kept("strain step", "0.0005", "0.001", "0.00025", "strain step");
+}
+
+// A quasi-static case killed after a checkpoint goes on only with the strain
+// step it was made with: its record names one step for the whole run. Asked
+// for another (a sweep file, or a default, that changed), the rerun is
+// refused, naming the checkpoint and both steps, and leaves it in place.
+TEST_F(MicroCli, SweepResumesAQuasiStaticCheckpointOnlyAtItsOwnStrainStep) {
+  const auto file_at = [&](const std::string& step) {
+    return sweep_file("out",
+                      "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n"
+                      "  set packings = 1\n  set quasi-static = true\n"
+                      "  set checkpoint steps = 100\n  set quasi-static strain step = " +
+                          step + "\n",
+                      4.0, 128);
+  };
+  parameters("made.prm", file_at("5e-4"));
+  parameters("other.prm", file_at("1e-3"));
+  const fs::path pid_file = work() / "pid";
+  const std::string start = "cd '" + work().string() +
+                            "' && ('" SOFTGLASS_MICRO_EXECUTABLE
+                            "' --threads 1 sweep made.prm --case 0 --quiet > made.log 2>&1 & "
+                            "echo $! > '" +
+                            pid_file.string() + "')";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  const fs::path checkpoint = work() / "out/runs/phi0.8000_aqs_seed1.checkpoint.h5";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint within 2 minutes";
+  const pid_t pid = std::stoi(testing::read_text(pid_file));
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  for (int k = 0; k < 100 && ::kill(pid, 0) == 0; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_FALSE(fs::exists(work() / "out/runs/phi0.8000_aqs_seed1.h5"))
+      << "killed too late: the case had finished";
+
+  const Outcome refused = micro("--threads 1 sweep other.prm --case 0 --quiet");
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("was made at quasi-static strain step 0.0005, the run asks for 0.001"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find(checkpoint.filename().string()), std::string::npos) << refused.err;
+  EXPECT_TRUE(fs::exists(checkpoint)) << "the checkpoint is kept";
+
+  const Outcome resumed = micro("--threads 1 sweep made.prm --case 0 --quiet");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("resumed from its checkpoint"), std::string::npos) << resumed.out;
 }
 
 // A preset fixes each run's length whatever the file's subsection shear says:
