@@ -52,6 +52,27 @@ std::size_t count_lines(const std::string& text) {
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
+// Starts `micro <arguments>` in `work` in the background and kills it with
+// SIGKILL as soon as `checkpoint` exists, before `result` does.
+void kill_after_checkpoint(const fs::path& work, const std::string& arguments,
+                           const fs::path& checkpoint, const fs::path& result) {
+  const fs::path pid_file = work / "pid";
+  const std::string start = "cd '" + work.string() + "' && ('" SOFTGLASS_MICRO_EXECUTABLE "' " +
+                            arguments + " > killed.log 2>&1 & echo $! > '" + pid_file.string() +
+                            "')";
+  ASSERT_EQ(std::system(start.c_str()), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint within 2 minutes";
+  const pid_t pid = std::stoi(testing::read_text(pid_file));
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  // Gone (or a zombie nobody reaps yet: it runs no more either way).
+  for (int k = 0; k < 100 && ::kill(pid, 0) == 0; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_FALSE(fs::exists(result)) << "killed too late: the case had finished";
+}
+
 TEST_F(MicroCli, SweepWritesTheFlowCurveTablesAndSkipsFinishedWorkOnARerun) {
   const std::string entries =
       "  set volume fractions = 0.70, 0.80\n  set gamma dot tildes = 1e-4, 3e-5\n"
@@ -247,24 +268,10 @@ TEST_F(MicroCli, SweepResumesAQuasiStaticCheckpointOnlyAtItsOwnStrainStep) {
   };
   parameters("made.prm", file_at("5e-4"));
   parameters("other.prm", file_at("1e-3"));
-  const fs::path pid_file = work() / "pid";
-  const std::string start = "cd '" + work().string() +
-                            "' && ('" SOFTGLASS_MICRO_EXECUTABLE
-                            "' --threads 1 sweep made.prm --case 0 --quiet > made.log 2>&1 & "
-                            "echo $! > '" +
-                            pid_file.string() + "')";
-  ASSERT_EQ(std::system(start.c_str()), 0);
   const fs::path checkpoint = work() / "out/runs/phi0.8000_aqs_seed1.checkpoint.h5";
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint within 2 minutes";
-  const pid_t pid = std::stoi(testing::read_text(pid_file));
-  ASSERT_EQ(::kill(pid, SIGKILL), 0);
-  for (int k = 0; k < 100 && ::kill(pid, 0) == 0; ++k)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ASSERT_FALSE(fs::exists(work() / "out/runs/phi0.8000_aqs_seed1.h5"))
-      << "killed too late: the case had finished";
+  kill_after_checkpoint(work(), "--threads 1 sweep made.prm --case 0 --quiet", checkpoint,
+                        work() / "out/runs/phi0.8000_aqs_seed1.h5");
+  if (HasFatalFailure()) return;
 
   const Outcome refused = micro("--threads 1 sweep other.prm --case 0 --quiet");
   EXPECT_EQ(refused.code, 2);
@@ -449,25 +456,10 @@ TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
   parameters("killed.prm", sweep_file("killed", entries, 6.0));
   ASSERT_EQ(micro("--threads 1 sweep reference.prm --quiet").code, 0);
 
-  const fs::path pid_file = work() / "pid";
-  const std::string start =
-      "cd '" + work().string() +
-      "' && ('" SOFTGLASS_MICRO_EXECUTABLE
-      "' --threads 1 sweep killed.prm --quiet > killed.log 2>&1 & echo $! > '" +
-      pid_file.string() + "')";
-  ASSERT_EQ(std::system(start.c_str()), 0);
   const fs::path checkpoint = work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.checkpoint.h5";
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(checkpoint)) << "no checkpoint within 2 minutes";
-  const pid_t pid = std::stoi(testing::read_text(pid_file));
-  ASSERT_EQ(::kill(pid, SIGKILL), 0);
-  // Gone (or a zombie nobody reaps yet: it runs no more either way).
-  for (int k = 0; k < 100 && ::kill(pid, 0) == 0; ++k)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  ASSERT_FALSE(fs::exists(work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.h5"))
-      << "killed too late: the case had finished";
+  kill_after_checkpoint(work(), "--threads 1 sweep killed.prm --quiet", checkpoint,
+                        work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.h5");
+  if (HasFatalFailure()) return;
 
   const Outcome resumed = micro("--threads 1 sweep killed.prm --quiet");
   ASSERT_EQ(resumed.code, 0) << resumed.err;
