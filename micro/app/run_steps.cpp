@@ -11,6 +11,7 @@
 #include "common/errors.h"
 #include "common/progress.h"
 #include "micro/analysis/shear_modulus.h"
+#include "micro/input/finished_work.h"
 #include "micro/io/checkpoint_file.h"
 #include "micro/results/run_structure.h"
 
@@ -23,38 +24,49 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// A checkpoint to go on from, if its file exists; `read` is the reader of its kind.
+// A checkpoint to go on from, if its file exists; `read` is the reader of its
+// kind. Refused unless it was written by a run of `parameters` (the text the
+// run's record stores).
 template <class Checkpoint, class Read>
-std::optional<Checkpoint> existing_checkpoint(const CheckpointSettings& checkpoints, Read read) {
+std::optional<Checkpoint> existing_checkpoint(const CheckpointSettings& checkpoints, Read read,
+                                              const std::string& parameters) {
   if (checkpoints.file.empty() || !std::filesystem::exists(checkpoints.file)) return std::nullopt;
   try {
-    return read(checkpoints.file);
+    Checkpoint checkpoint = read(checkpoints.file);
+    require_checkpoint_of_same_computation(checkpoints.file, parameters);
+    return checkpoint;
   } catch (const InputError& e) {
     throw InputError(fmt::format("{} (delete it to start this run afresh)", e.what()));
   }
 }
 
-// Checkpointing of a run (ShearCheckpointing or QuasiStaticCheckpointing): go
-// on from `resume`, if any, and save into the file of `checkpoints`.
+// Checkpointing of a run of `parameters` (ShearCheckpointing or
+// QuasiStaticCheckpointing): go on from `resume`, if any, and save into the
+// file of `checkpoints`. Both references must outlive the run.
 template <class Checkpointing, class Checkpoint>
 Checkpointing checkpointing_of(const CheckpointSettings& checkpoints,
-                               const std::optional<Checkpoint>& resume) {
+                               const std::optional<Checkpoint>& resume,
+                               const std::string& parameters) {
   Checkpointing c;
   if (resume) c.resume_from = &*resume;
   if (!checkpoints.file.empty()) {
     c.every_steps = checkpoints.every_steps;
-    c.save = [&checkpoints](const Checkpoint& state) { write_checkpoint(checkpoints.file, state); };
+    c.save = [&checkpoints, &parameters](const Checkpoint& state) {
+      write_checkpoint(checkpoints.file, state, parameters);
+    };
   }
   return c;
 }
 
-// The checkpoints of a run of the overdamped dynamics by `scheme`: saved into
-// the file of `settings`, and resumed from it when it exists.
+// The checkpoints of a run of the overdamped dynamics by `scheme` with the
+// parameter text `parameters`: saved into the file of `settings`, and resumed
+// from it when it exists.
 class DynamicsCheckpoints {
  public:
-  DynamicsCheckpoints(const CheckpointSettings& settings, const IntegratorSpec& scheme)
-      : resume_(existing_checkpoint<ShearCheckpoint>(settings, read_checkpoint)),
-        checkpointing_(checkpointing_of<ShearCheckpointing>(settings, resume_)) {
+  DynamicsCheckpoints(const CheckpointSettings& settings, const IntegratorSpec& scheme,
+                      const std::string& parameters)
+      : resume_(existing_checkpoint<ShearCheckpoint>(settings, read_checkpoint, parameters)),
+        checkpointing_(checkpointing_of<ShearCheckpointing>(settings, resume_, parameters)) {
     if (!settings.file.empty())
       checkpointing_.new_integrator = [scheme] { return make_integrator(scheme); };
   }
@@ -141,7 +153,7 @@ void shear_and_analyse(RunRecord& record, const MicroParameters& prm,
   const IntegratorSpec scheme = prm.integrator.resolved_for(prm.shear_model.gamma_tilde,
                                                             prm.shear_model.drag.stokes.reference);
   const auto integrator = make_integrator(scheme);
-  const DynamicsCheckpoints resumable(checkpoints, scheme);
+  const DynamicsCheckpoints resumable(checkpoints, scheme, record.parameters);
   ShearRecord shear;
   shear.gamma_tilde = prm.shear_model.gamma_tilde;
   shear.integrator = fmt::format("{}, tolerance {}", scheme.name, scheme.tolerance);
@@ -158,10 +170,12 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
                                         const std::function<void(double, double)>& progress,
                                         const CheckpointSettings& checkpoints) {
   const auto start = Clock::now();
-  const std::optional<QuasiStaticCheckpoint> resume =
-      existing_checkpoint<QuasiStaticCheckpoint>(checkpoints, read_quasi_static_checkpoint);
+  const std::optional<QuasiStaticCheckpoint> resume = existing_checkpoint<QuasiStaticCheckpoint>(
+      checkpoints, read_quasi_static_checkpoint, record.parameters);
   // A run goes on with the step it was made with, so that its record's step is
-  // that of every step it took (the default changed from 2e-4 to 1e-3).
+  // that of every step it took (the default changed from 2e-4 to 1e-3). The
+  // parameters above hold the step; this reads it from a checkpoint written
+  // before checkpoints kept their parameters.
   if (resume && resume->counters.steps > 0) {
     const double made = strain_step_of(*resume);
     require(std::abs(made - settings.strain_step) <= 1e-6 * settings.strain_step,
@@ -172,7 +186,8 @@ void shear_quasi_statically_and_analyse(RunRecord& record, const MicroParameters
   }
   QuasiStaticResult r = run_quasi_static(
       record.packing_particles, record.packing_box, law, prm.packing.skin, settings, prm.protocol,
-      follow(progress), checkpointing_of<QuasiStaticCheckpointing>(checkpoints, resume));
+      follow(progress),
+      checkpointing_of<QuasiStaticCheckpointing>(checkpoints, resume, record.parameters));
   ShearRecord shear;
   shear.gamma_tilde = 0.0;
   shear.result = std::move(r.run);
@@ -197,7 +212,7 @@ void oscillate(RunRecord& record, const MicroParameters& prm, std::shared_ptr<co
   const IntegratorSpec scheme =
       oscillation_integrator(prm.integrator, protocol, prm.shear_model.drag.stokes.reference);
   const auto integrator = make_integrator(scheme);
-  const DynamicsCheckpoints resumable(checkpoints, scheme);
+  const DynamicsCheckpoints resumable(checkpoints, scheme, record.parameters);
   OscillationRecord oscillation;
   oscillation.protocol = protocol;
   oscillation.integrator = fmt::format("{}, tolerance {}", scheme.name, scheme.tolerance);

@@ -52,10 +52,12 @@ std::vector<double> counter_values(const ShearCounters& c) {
   return values;
 }
 
-// What every checkpoint holds: its kind, the configuration, the run's state
-// and counters as two arrays, the series and the snapshots so far.
+// What every checkpoint holds: its kind, its run's parameter text (none in
+// some tests), the configuration, the run's state and counters as two arrays,
+// the series and the snapshots so far.
 struct Parts {
   const char* kind;
+  const std::string& parameters;
   const Particles& particles;
   const LeesEdwardsBox& box;
   std::vector<double> state;
@@ -74,6 +76,9 @@ void write_parts(const std::filesystem::path& path, const Parts& parts,
     H5File file = H5File::create(out.temporary_path());
     H5Group root = file.root();
     root.set_attribute("kind", std::string(parts.kind));
+    if (!parts.parameters.empty())
+      root.write_string("parameters", parts.parameters,
+                        {"", "the parameter text of the run's record (micro/io/run_file.h)"});
     write_configuration(root.create_group("configuration"), parts.particles, parts.box);
     if (more) more(root);
     root.write("state", parts.state, {}, {"", parts.state_names});
@@ -151,9 +156,11 @@ ReadParts read_parts(const H5Group& root, const std::string& where, const char* 
 
 }  // namespace
 
-void write_checkpoint(const std::filesystem::path& path, const ShearCheckpoint& c) {
+void write_checkpoint(const std::filesystem::path& path, const ShearCheckpoint& c,
+                      const std::string& parameters) {
   write_parts(path,
               {kShearKind,
+               parameters,
                c.particles,
                c.box,
                {c.start, c.next_sample, c.next_check, c.next_snapshot, c.worst, c.seconds,
@@ -233,7 +240,8 @@ ShearCheckpoint read_checkpoint(const std::filesystem::path& path) {
 // A quasi-static checkpoint's counters: 5, then (appended later) the minimiser's.
 constexpr std::size_t kOlderQuasiStaticCounters = 5;
 
-void write_checkpoint(const std::filesystem::path& path, const QuasiStaticCheckpoint& c) {
+void write_checkpoint(const std::filesystem::path& path, const QuasiStaticCheckpoint& c,
+                      const std::string& parameters) {
   std::vector<double> counters{double(c.counters.steps), double(c.counters.newton_iterations),
                                double(c.counters.cg_iterations), double(c.stress_drops),
                                double(c.unconverged_steps)};
@@ -242,6 +250,7 @@ void write_checkpoint(const std::filesystem::path& path, const QuasiStaticCheckp
       fmt::format("steps, Newton iterations, CG iterations, stress drops, unconverged steps, {}",
                   kMinimiserCounterNames);
   write_parts(path, {kQuasiStaticKind,
+                     parameters,
                      c.particles,
                      c.box,
                      {c.start, c.next_check, c.worst, c.last_sigma, c.seconds},

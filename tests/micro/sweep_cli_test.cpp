@@ -12,6 +12,7 @@
 #include <regex>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include "common/h5_file.h"
 #include "micro/sweep/directory_lock.h"
@@ -254,32 +255,39 @@ TEST_F(SweepKeptRun, QuasiStaticRunMadeAtASmallerStrainStep) {
 }
 
 // A quasi-static case killed after a checkpoint goes on only with the strain
-// step it was made with: its record names one step for the whole run. Asked
-// for another (a sweep file, or a default, that changed), the rerun is
-// refused, naming the checkpoint and both steps, and leaves it in place.
-TEST_F(MicroCli, SweepResumesAQuasiStaticCheckpointOnlyAtItsOwnStrainStep) {
-  const auto file_at = [&](const std::string& step) {
+// step and force tolerance it was made with: its record names one of each for
+// the whole run. Asked for another (a sweep file, or a default, that changed),
+// the rerun is refused, naming the checkpoint and both values, and leaves it
+// in place.
+TEST_F(MicroCli, SweepResumesAQuasiStaticCheckpointOnlyAtItsOwnSettings) {
+  const auto file_at = [&](const std::string& step, const std::string& tolerance) {
     return sweep_file("out",
                       "  set volume fractions = 0.8\n  set gamma dot tildes = 1e-4\n"
                       "  set packings = 1\n  set quasi-static = true\n"
                       "  set checkpoint steps = 100\n  set quasi-static strain step = " +
-                          step + "\n",
+                          step + "\n  set quasi-static force tolerance = " + tolerance + "\n",
                       4.0, 128);
   };
-  parameters("made.prm", file_at("5e-4"));
-  parameters("other.prm", file_at("1e-3"));
+  parameters("made.prm", file_at("5e-4", "1e-6"));
+  parameters("other_step.prm", file_at("1e-3", "1e-6"));
+  parameters("other_tolerance.prm", file_at("5e-4", "1e-8"));
   const fs::path checkpoint = work() / "out/runs/phi0.8000_aqs_seed1.checkpoint.h5";
   kill_after_checkpoint(work(), "--threads 1 sweep made.prm --case 0 --quiet", checkpoint,
                         work() / "out/runs/phi0.8000_aqs_seed1.h5");
   if (HasFatalFailure()) return;
 
-  const Outcome refused = micro("--threads 1 sweep other.prm --case 0 --quiet");
-  EXPECT_EQ(refused.code, 2);
-  EXPECT_NE(refused.err.find("was made at quasi-static strain step 0.0005, the run asks for 0.001"),
-            std::string::npos)
-      << refused.err;
-  EXPECT_NE(refused.err.find(checkpoint.filename().string()), std::string::npos) << refused.err;
-  EXPECT_TRUE(fs::exists(checkpoint)) << "the checkpoint is kept";
+  for (const auto& [file, made, asked] :
+       {std::tuple{"other_step.prm", "strain step 0.0005,", "strain step 0.001,"},
+        std::tuple{"other_tolerance.prm", "force tolerance 1e-06;", "force tolerance 1e-08;"}}) {
+    const Outcome refused = micro(std::string("--threads 1 sweep ") + file + " --case 0 --quiet");
+    EXPECT_EQ(refused.code, 2) << file;
+    EXPECT_NE(refused.err.find("is the checkpoint of another computation"), std::string::npos)
+        << refused.err;
+    for (const std::string& named :
+         {checkpoint.filename().string(), std::string(made), std::string(asked)})
+      EXPECT_NE(refused.err.find(named), std::string::npos) << named << " in " << refused.err;
+    EXPECT_TRUE(fs::exists(checkpoint)) << "the checkpoint is kept";
+  }
 
   const Outcome resumed = micro("--threads 1 sweep made.prm --case 0 --quiet");
   ASSERT_EQ(resumed.code, 0) << resumed.err;
@@ -460,6 +468,20 @@ TEST_F(MicroCli, SweepKilledMidCaseResumesToTheUninterruptedTable) {
   kill_after_checkpoint(work(), "--threads 1 sweep killed.prm --quiet", checkpoint,
                         work() / "killed/runs/phi0.8000_gt3.000e-05_seed1.h5");
   if (HasFatalFailure()) return;
+
+  // Under another integrator tolerance the checkpoint is refused, and kept:
+  // its steps were taken under the first. The case fails as a case does in a
+  // whole sweep: logged, the table without it, exit code 1.
+  parameters("changed.prm", sweep_file("killed", entries, 6.0) +
+                                "subsection integrator\n  set tolerance = 1e-3\nend\n");
+  const Outcome refused = micro("--threads 1 sweep changed.prm --quiet");
+  EXPECT_EQ(refused.code, 1);
+  const std::string said = refused.out + refused.err;
+  for (const std::string& named :
+       {std::string("is the checkpoint of another computation"), checkpoint.filename().string(),
+        std::string("'integrator/tolerance = 0'"), std::string("'integrator/tolerance = 1e-3'")})
+    EXPECT_NE(said.find(named), std::string::npos) << named << " in " << said;
+  EXPECT_TRUE(fs::exists(checkpoint));
 
   const Outcome resumed = micro("--threads 1 sweep killed.prm --quiet");
   ASSERT_EQ(resumed.code, 0) << resumed.err;
