@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "common/h5_file.h"
+#include "micro/io/checkpoint_file.h"
 #include "micro/sweep/directory_lock.h"
 #include "micro_cli_fixture.h"
 
@@ -258,7 +259,8 @@ TEST_F(SweepKeptRun, QuasiStaticRunMadeAtASmallerStrainStep) {
 // step and force tolerance it was made with: its record names one of each for
 // the whole run. Asked for another (a sweep file, or a default, that changed),
 // the rerun is refused, naming the checkpoint and both values, and leaves it
-// in place.
+// in place; so is one written before checkpoints kept their parameters, by
+// its strain step.
 TEST_F(MicroCli, SweepResumesAQuasiStaticCheckpointOnlyAtItsOwnSettings) {
   const auto file_at = [&](const std::string& step, const std::string& tolerance) {
     return sweep_file("out",
@@ -288,6 +290,17 @@ TEST_F(MicroCli, SweepResumesAQuasiStaticCheckpointOnlyAtItsOwnSettings) {
       EXPECT_NE(refused.err.find(named), std::string::npos) << named << " in " << refused.err;
     EXPECT_TRUE(fs::exists(checkpoint)) << "the checkpoint is kept";
   }
+
+  // A checkpoint from before checkpoints kept their parameters (the same one,
+  // rewritten without them): its step is read from its strain over its steps.
+  write_checkpoint(checkpoint, read_quasi_static_checkpoint(checkpoint));
+  const Outcome older = micro("--threads 1 sweep other_step.prm --case 0 --quiet");
+  EXPECT_EQ(older.code, 2);
+  EXPECT_NE(older.err.find("was made at quasi-static strain step 0.0005, the run asks for 0.001"),
+            std::string::npos)
+      << older.err;
+  EXPECT_NE(older.err.find(checkpoint.filename().string()), std::string::npos) << older.err;
+  EXPECT_TRUE(fs::exists(checkpoint)) << "the checkpoint is kept";
 
   const Outcome resumed = micro("--threads 1 sweep made.prm --case 0 --quiet");
   ASSERT_EQ(resumed.code, 0) << resumed.err;
