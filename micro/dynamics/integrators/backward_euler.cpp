@@ -380,23 +380,23 @@ IntegratorEntry implicit_integrator() {
 
 // The default below γ̃ = 1e-5, and at every rate with the Stokes friction
 // between neighbours (`auto`). Tolerance 3e-3: as accurate as `implicit` at
-// 1e-3 (docs/integrators.md, "BDF2"). Cost: 1.6 s × (γ̃/1e-5)^-0.51 per 5
-// strain at N = 1000, and at least 2.4 s (about a step per stress sample,
+// 1e-3 (docs/integrators.md, "BDF2"). Cost: 1.42 s × (γ̃/1e-5)^-0.484 per 5
+// strain at N = 1000, and at least 2.33 s (about a step per stress sample,
 // each with its velocity solve): fitted to the 275 rate cases of the whole
-// `paper` sweep of the default model (2026-11-27, 8c9d998, two at a time on
-// two cores; least squares in logs over the 175 cases at γ̃ ≤ 1e-6, the floor
-// the median at 3.16e-5 and 1e-4). Each case is within 0.56–1.9× of it (the
-// model has no φ: at 1e-9 φ = 0.70 costs 0.8× φ = 0.90, at 1e-8 0.4×), the
-// sweep's total within 2 % (docs/sweeps.md).
+// `paper` sweep of the default model (2026-11-29, ba41311, two at a time on
+// the two cores of an AVX-512 host; least squares in logs over the 175 cases
+// at γ̃ ≤ 1e-6, the floor the median at 3.16e-5 and 1e-4). Each case is
+// within 0.56–1.76× of it (the model has no φ: at 1e-9 φ = 0.70 costs 0.8×
+// φ = 0.90, at 1e-8 0.5×), the sweep's total within 2 % (docs/sweeps.md).
 IntegratorEntry bdf2_integrator() {
   return {"bdf2",
           "variable-step BDF2 as a minimising movement, Newton-CG, error control (for low gamma~)",
           {},
           make_bdf2,
           {.default_tolerance = 3e-3,
-           .seconds_at_reference = 1.6,
-           .rate_exponent = -0.51,
-           .floor_seconds = 2.4,
+           .seconds_at_reference = 1.42,
+           .rate_exponent = -0.484,
+           .floor_seconds = 2.33,
            .minimises = true}};
 }
 
