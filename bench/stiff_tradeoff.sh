@@ -20,7 +20,13 @@
 #
 # Per γ̃ ≤ 1e-6, `cost_vs_aqs_<Δγ>_<γ̃>`: that cheapest setting's cost per
 # strain against quasi-static shear at strain step Δγ (2e-4, the sweep's, and
-# 1e-3). Ends with `cost_ratio_1e-9_vs_1e-5 <ratio>`: the cheapest setting at γ̃ = 1e-9
+# 1e-3). Over many packings no setting keeps every packing within 2 % (each
+# run either follows the reference's sequence of plastic events, within
+# 0.05 %, or takes another branch and differs by ~20 %: docs/integrators.md,
+# "1e-11 over 256 packings"), so the issue's rule — σ within 2 % in the mean
+# over packings — is applied too: the cheapest setting whose Σ(σ − σ_ref)/Σσ_ref
+# is within 2 % at two standard errors, `cost_vs_aqs_mean_rule_<Δγ>_<γ̃>`.
+# Ends with `cost_ratio_1e-9_vs_1e-5 <ratio>`: the cheapest setting at γ̃ = 1e-9
 # whose σ is within 2 % of the reference for every packing, against the same at
 # γ̃ = 1e-5 (and the same for 1e-11); also the ratio against the explicit
 # default at 1e-5.
@@ -92,7 +98,7 @@ print(f"# N = {n}, phi = {phi}, window {window} strain after {preshear} strain o
       f"seeds {seeds}; errors: mean signed ± SE over seeds [largest |error|]")
 print("| gamma~ | setting | sigma (E*) | err sigma | err N1 | err N2 | s / strain | steps / strain |")
 print("|---|---|---|---|---|---|---|---|")
-best, explicit, aqs = {}, {}, {}
+best, best_mean, explicit, aqs = {}, {}, {}, {}
 for g in sorted({k[0] for k in rows}, reverse=True):
     ref = rows.get((g, ref_setting(g)), {})
     for (gg, s), per_seed in sorted(rows.items(), key=lambda kv: kv[0][1]):
@@ -112,12 +118,24 @@ for g in sorted({k[0] for k in rows}, reverse=True):
         sig_txt = f"{sig:.4e}" if complete else "-"
         print(f"| {g:.0e} | {label(s)} | {sig_txt} | {cell('sigma')} | {cell('N1')} | {cell('N2')} | {cost:.3g} | {steps:.3g} |")
         if s.startswith("aqs"): aqs[s.split(":")[1]] = cost
-        elif complete and not is_ref and len(complete) == len(per_seed) and max(abs(e) for e in errs["sigma"]) <= 0.02:
-            if g not in best or cost < best[g][0]: best[g] = (cost, label(s))
+        elif complete and not is_ref and len(complete) == len(per_seed):
+            if max(abs(e) for e in errs["sigma"]) <= 0.02 and (g not in best or cost < best[g][0]):
+                best[g] = (cost, label(s))
+            # the mean over packings: Σ(σ − σ_ref)/Σσ_ref, within 2 % at two standard errors
+            if len(complete) > 1:
+                d = [float(per_seed[x]["sigma"]) - float(ref[x]["sigma"]) for x in complete]
+                scale = sum(float(ref[x]["sigma"]) for x in complete) / len(complete)
+                m, se = stats(d)
+                if abs(m) / scale + 2 * se / scale <= 0.02 and (g not in best_mean or cost < best_mean[g][0]):
+                    best_mean[g] = (cost, label(s), m / scale, se / scale)
         if s == "euler:1e-04:0.8": explicit[g] = cost
 print()
 for g in sorted(best, reverse=True):
     print(f"cheapest with sigma within 2 % of the reference for every packing: gamma {g:.0e}: {best[g][1]}, {best[g][0]:.3g} s/strain")
+for g in sorted(best_mean, reverse=True):
+    c, name, m, se = best_mean[g]
+    print(f"cheapest with the mean sigma over packings within 2 % of the reference's at two SE: "
+          f"gamma {g:.0e}: {name} ({100*m:+.2f} ± {100*se:.2f} %), {c:.3g} s/strain")
 def ratio(a, b):
     return best[a][0] / best[b][0] if a in best and b in best else float("nan")
 for g in (1e-9, 1e-11):
@@ -127,6 +145,9 @@ for step, c in sorted(aqs.items()):
     for g in sorted(best, reverse=True):
         if g <= 1e-6:
             print(f"cost_vs_aqs_{step}_{g:.0e} {best[g][0] / c:.3g}")
+    for g in sorted(best_mean, reverse=True):
+        if g <= 1e-6:
+            print(f"cost_vs_aqs_mean_rule_{step}_{g:.0e} {best_mean[g][0] / c:.3g}")
 print(f"cost_ratio_1e-11_vs_1e-5 {ratio(1e-11, 1e-5):.3g}")
 print(f"cost_ratio_1e-9_vs_1e-5 {ratio(1e-9, 1e-5):.3g}")
 PY
