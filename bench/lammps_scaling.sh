@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # How the time per particle-step grows with N, for softglass and for LAMMPS on
 # the same work (bench/lammps_comparison.sh's: Hertz, phi = 0.80, no drag, skin
-# 0.3 diameters, strain 2e-6 per step), on one core, the two in turn at each N. A rise
-# from 1e3 to 1e5 particles that both codes show is the memory hierarchy's
-# (the data leave the caches), not one code's; scaling.sh gives ours alone,
-# up to 1e6 (LAMMPS' compression stage alone would take hours there).
-# softglass tiles a relaxed base packing (scaling.sh's sizes); LAMMPS makes a
-# packing of N at each size (its input's 25 000 compression steps are not
-# timed: only its last run, the shear).
+# 0.3 diameters, strain 2e-6 per step), on one core, the two in turn at each
+# N. A rise from 1e3 to 1e5 particles that both codes show is the memory
+# hierarchy's (the data leave the caches), not one code's; scaling.sh gives
+# ours alone, up to 1e6 (LAMMPS' compression stage alone would take hours
+# there). softglass tiles a relaxed base packing (scaling.sh's sizes); LAMMPS
+# makes a packing of N at each size (its input's 25 000 compression steps are
+# not timed: only its last run, the shear).
 # Last lines: growth_1e3_to_<N>_softglass / _lammps <ratio of ns per particle-step>.
 # The defaults took 22 min (2026-11-30; LAMMPS' compression at 1e5 alone 18 min).
 #   usage: bench/lammps_scaling.sh [BUILD_DIR]   (env: SIZES, default "1000 10000 100000")

@@ -22,7 +22,7 @@
 # strain against quasi-static shear at strain step Δγ (2e-4, the sweep's, and
 # 1e-3). Over many packings no setting keeps every packing within 2 % (each
 # run either follows the reference's sequence of plastic events, within
-# 0.05 %, or takes another branch and differs by ~20 %: docs/integrators.md,
+# 0.03 %, or takes another branch and differs by ~20 %: docs/integrators.md,
 # "1e-11 over 256 packings"), so the rule — σ within 2 % in the mean
 # over packings — is applied too: the cheapest setting whose Σ(σ − σ_ref)/Σσ_ref
 # is within 2 % at two standard errors, `cost_vs_aqs_mean_rule_<Δγ>_<γ̃>`.
