@@ -13,9 +13,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "${1:-$here/../build}" && pwd)
 rounds=${2:-5}
-peer="$here/../../shared/peers/lammps/shear_hertz.in"
-command -v lmp >/dev/null || { echo "lmp not found: apt-get install lammps" >&2; exit 1; }
-[ -f "$peer" ] || { echo "peer input $peer not found" >&2; exit 1; }
+source "$here/lammps_peer.sh"
+require_lammps
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 steps=20000
 
@@ -24,9 +23,8 @@ for round in $(seq "$rounds"); do
   OMP_NUM_THREADS=1 "$build/bench/engine_bench" --base 1000 --phi 0.80 --law hertz --skin 0.6 \
       --steps $steps --strain-per-step 2e-6 --threads 1 > "$work/ours.txt"
   ours=$(awk '$1=="particle_steps_per_second"{print $2}' "$work/ours.txt")
-  (cd "$work" && OMP_NUM_THREADS=1 lmp -in "$peer" -var N 1000 -var phi 0.80 -var nshear $steps \
-      -log none > lammps.txt 2>&1)
-  loop=$(awk '/^Loop time/{t=$4} END{print t}' "$work/lammps.txt")  # the last run: shear
+  lammps_shear 1000 $steps "$work"
+  loop=$(lammps_shear_seconds "$work")
   lammps=$(awk -v t="$loop" -v s=$steps 'BEGIN{printf "%.4e", 1000*s/t}')
   echo "round $round: softglass $ours, lammps $lammps particle-steps/s"
   best_ours=$(awk -v a="$best_ours" -v b="$ours" 'BEGIN{print (b>a)?b:a}')

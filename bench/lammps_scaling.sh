@@ -14,9 +14,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=$(cd "${1:-$here/../build}" && pwd)
-peer="$here/../../shared/peers/lammps/shear_hertz.in"
-command -v lmp >/dev/null || { echo "lmp not found: apt-get install lammps" >&2; exit 1; }
-[ -f "$peer" ] || { echo "peer input $peer not found" >&2; exit 1; }
+source "$here/lammps_peer.sh"
+require_lammps
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 sizes=${SIZES:-"1000 10000 100000"}
 
@@ -39,9 +38,8 @@ for n in $sizes; do
   out=$(OMP_NUM_THREADS=1 "$build/bench/engine_bench" --base "$base" --tile "$tile" --phi 0.80 \
         --law hertz --skin 0.6 --steps "$steps" --strain-per-step 2e-6 --threads 1)
   ours[$n]=$(awk '$1=="ns_per_particle_step"{print $2}' <<< "$out")
-  (cd "$work" && OMP_NUM_THREADS=1 lmp -in "$peer" -var N "$n" -var phi 0.80 -var nshear "$steps" \
-      -log none > lammps.txt 2>&1)
-  loop=$(awk '/^Loop time/{t=$4} END{print t}' "$work/lammps.txt")
+  lammps_shear "$n" "$steps" "$work"
+  loop=$(lammps_shear_seconds "$work")
   lammps[$n]=$(awk -v t="$loop" -v n="$n" -v s="$steps" 'BEGIN{printf "%.2f", 1e9*t/(n*s)}')
   printf "%-9s %-22s %-22s %.2f\n" "$n" "${ours[$n]}" "${lammps[$n]}" \
     "$(awk -v a="${lammps[$n]}" -v b="${ours[$n]}" 'BEGIN{print a/b}')"
