@@ -28,22 +28,45 @@ ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
 }
 
 namespace {
-// Moves particles [first, last) by dt v; returns the largest tracked |u|².
-SOFTGLASS_VECTOR_CLONES double move_range(double dt, const Vec3* v, Vec3* x, Vec3* tracked,
+// Particles [first, last): x = x⁰ + increment y⁰ e_x + dt v and the tracked
+// non-affine displacement u = u⁰ + dt v, from the arrays x⁰, u⁰ (which may be
+// x, u themselves); returns the largest |u|².
+SOFTGLASS_VECTOR_CLONES double move_range(double increment, double dt, const Vec3* v,
+                                          const Vec3* x0, const Vec3* u0, Vec3* x, Vec3* u,
                                           std::size_t first, std::size_t last) {
   double max2 = 0.0;
 #pragma omp simd reduction(max : max2)
   for (std::size_t i = first; i < last; ++i) {
+    // Componentwise, and in the order of shear() then move(): x += Δγ y, then
+    // x += dt v.
     const Vec3 step = dt * v[i];
-    x[i] += step;
-    tracked[i] += step;
-    max2 = std::max(max2, tracked[i].squaredNorm());
+    x[i] = Vec3(x0[i].x() + increment * x0[i].y() + step.x(), x0[i].y() + step.y(),
+                x0[i].z() + step.z());
+    u[i] = u0[i] + step;
+    max2 = std::max(max2, u[i].squaredNorm());
   }
   return max2;
 }
 }  // namespace
 
 void ContactSystem::move(double dt, std::span<const Vec3> v) {
+  move_from(0.0, dt, v, particles_.position.data(), nonaffine_.data());
+}
+
+void ContactSystem::shear_and_move(double increment, double dt, std::span<const Vec3> v,
+                                   std::vector<Vec3>& position_before, Tracking& before) {
+  const std::size_t n = size();
+  position_before.resize(n);
+  before.nonaffine.resize(n);
+  std::swap(particles_.position, position_before);
+  std::swap(nonaffine_, before.nonaffine);
+  before.max_nonaffine = max_nonaffine_;
+  move_from(increment, dt, v, position_before.data(), before.nonaffine.data());
+  box_.advance_strain(increment);
+}
+
+void ContactSystem::move_from(double increment, double dt, std::span<const Vec3> v,
+                              const Vec3* x0, const Vec3* u0) {
   changed();
   const std::size_t n = size();
   Vec3* x = particles_.position.data();
@@ -53,12 +76,12 @@ void ContactSystem::move(double dt, std::span<const Vec3> v) {
   // whose `if` turns it off is a libgomp call per step.
   const int threads = n >= 4096 ? omp_get_max_threads() : 1;
   if (threads == 1) {
-    max2 = std::max(max2, move_range(dt, v.data(), x, tracked, 0, n));
+    max2 = std::max(max2, move_range(increment, dt, v.data(), x0, u0, x, tracked, 0, n));
   } else {
 #pragma omp parallel num_threads(threads) reduction(max : max2)
     {
       const auto [first, last] = thread_range(n, threads, omp_get_thread_num());
-      max2 = std::max(max2, move_range(dt, v.data(), x, tracked, first, last));
+      max2 = std::max(max2, move_range(increment, dt, v.data(), x0, u0, x, tracked, first, last));
     }
   }
   max_nonaffine_ = std::sqrt(max2);

@@ -85,11 +85,20 @@ class ContactSystem {
   void save_tracking(Tracking& into) const;
   void restore_tracking(const Tracking& from);
   void restore_positions(const std::vector<Vec3>& x, double strain);
+  /// shear(increment) then move(dt, v), in one pass; the positions and the
+  /// tracking they leave are handed to `position_before` and `before` (to
+  /// restore a rejected step) by swapping arrays, not copying them.
+  void shear_and_move(double increment, double dt, std::span<const Vec3> v,
+                      std::vector<Vec3>& position_before, Tracking& before);
 
   std::size_t memory_bytes() const;
 
  private:
   void rebuild();
+  // Positions x = x⁰ + increment y⁰ e_x + dt v and the tracking u = u⁰ + dt v,
+  // from arrays x⁰, u⁰ that may be the system's own.
+  void move_from(double increment, double dt, std::span<const Vec3> v, const Vec3* x0,
+                 const Vec3* u0);
   // Every change of the positions, the cell or the particles' order counts
   // one configuration; the field remembers the one it was computed at.
   void changed() { ++configuration_; }

@@ -35,7 +35,7 @@ OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model, 
   model_.validate();
 }
 
-SOFTGLASS_VECTOR_CLONES void OverdampedShear::evaluate() {
+void OverdampedShear::evaluate() {
   // The velocities are implicit with the EHD drag or the Stokes pair dashpots.
   const bool with_drag = model_.drag.enabled || model_.drag.stokes.has_pairs();
   stress_valid_ = time() >= stress_from_;
@@ -73,21 +73,13 @@ SOFTGLASS_VECTOR_CLONES void OverdampedShear::evaluate() {
     if (stress_valid_)
       viscous_virial_ =
           drag_.virial(field.contacts, model_.gamma_tilde, c, p.velocity, {}, friction_);
+    scan_velocities<false, true>({}, field.stiffness_sum);
   } else {
-    for (std::size_t a = 0; a < n; ++a) p.velocity[a] = mobility_[a] * force[a];
     viscous_virial_ = {};
+    scan_velocities<true, true>(force, field.stiffness_sum);
   }
   solvent_.update(p.position, p.velocity, friction_, c);
   elastic_virial_ = field.virial;
-
-  // The maxima below are exact in any order, so they are vectorised (a single
-  // chain of comparisons would bound the loop by its latency).
-  double rate = 0.0;
-#pragma omp simd reduction(max : rate)
-  for (std::size_t a = 0; a < n; ++a)
-    rate = std::max(rate, 2.0 * field.stiffness_sum[a] * mobility_[a]);
-  relaxation_rate_ = rate;
-  update_max_speed();
   evaluated_ = true;
   ++evaluations_;
 }
@@ -98,23 +90,35 @@ void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
     evaluate();
     return;
   }
-  update_max_speed();
+  scan_velocities<false, false>({}, {});
   stress_valid_ = false;
   last_solve_ = {};
   evaluated_ = true;
 }
 
-SOFTGLASS_VECTOR_CLONES void OverdampedShear::update_max_speed() {
-  const std::vector<Vec3>& velocity = system_.particles().velocity;
-  // The maximum alone would let a NaN through (max(s, NaN) is s); the sum of
-  // the squares carries it, and an infinity, to the test.
-  double speed2 = 0.0, sum = 0.0;
-#pragma omp simd reduction(max : speed2) reduction(+ : sum)
-  for (std::size_t a = 0; a < velocity.size(); ++a) {
+// One pass over the particles after the forces (each loop of its own was a
+// few per cent of a Hertz step at N = 1000): v = F/ζ when the drag is free
+// draining, the relaxation rate's bound λ = max 2 Σ_j k_ij / ζ_α from the
+// stiffness sums, and the largest speed. The maxima are exact in any order, so
+// the loop is vectorised (a single chain of comparisons would bound it by its
+// latency). The maximum alone would let a NaN through (max(s, NaN) is s); the
+// sum of the squares carries it, and an infinity, to the test.
+template <bool kFreeDraining, bool kRate>
+SOFTGLASS_VECTOR_CLONES void OverdampedShear::scan_velocities(std::span<const Vec3> force,
+                                                              std::span<const double> stiffness) {
+  Vec3* const velocity = system_.particles().velocity.data();
+  const double* const mobility = mobility_.data();
+  const std::size_t n = system_.size();
+  double rate = 0.0, speed2 = 0.0, sum = 0.0;
+#pragma omp simd reduction(max : rate, speed2) reduction(+ : sum)
+  for (std::size_t a = 0; a < n; ++a) {
+    if constexpr (kFreeDraining) velocity[a] = mobility[a] * force[a];
+    if constexpr (kRate) rate = std::max(rate, 2.0 * stiffness[a] * mobility[a]);
     const double s = velocity[a].squaredNorm();
     speed2 = std::max(speed2, s);
     sum += s;
   }
+  if constexpr (kRate) relaxation_rate_ = rate;
   max_speed_ = std::sqrt(speed2);
   if (!std::isfinite(sum)) {
     throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
@@ -148,9 +152,24 @@ void OverdampedShear::advance_affinely(double dt) {
 void OverdampedShear::save(Snapshot& into) const {
   const Particles& p = system_.particles();
   into.position.assign(p.position.begin(), p.position.end());
+  system_.save_tracking(into.tracking);
+  save_all_but_positions(into);
+}
+
+void OverdampedShear::save_and_step(Snapshot& into, double dt) {
+  save_all_but_positions(into);
+  const double increment = strain_increment(dt);
+  time_ += dt;
+  evaluated_ = false;
+  system_.shear_and_move(increment, dt, system_.particles().velocity, into.position,
+                         into.tracking);
+}
+
+void OverdampedShear::save_all_but_positions(Snapshot& into) const {
+  // The velocities are copied, not swapped: the drag's solve starts from them.
+  const Particles& p = system_.particles();
   into.velocity.assign(p.velocity.begin(), p.velocity.end());
   into.solvent = solvent_;
-  system_.save_tracking(into.tracking);
   into.strain = strain();
   into.time = time_;
   into.relaxation_rate = relaxation_rate_;

@@ -33,9 +33,8 @@ class AdaptiveEuler final : public Integrator {
 
     for (;;) {
       flow.prepare_step(dt);
-      flow.save(before_);
       const double strain_step = flow.strain_increment(dt);
-      flow.step(dt);
+      flow.save_and_step(before_, dt);
       flow.evaluate();
       const double error = error_estimate(before_.velocity, flow, dt, strain_step);
       const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
