@@ -70,7 +70,48 @@ void NeighbourList::build(const LeesEdwardsBox& box, std::span<const Vec3> x,
   gather_rows(n);
   compute_constants(radius, threads);
   strain_at_build_ = box.strain();
-  offset_at_build_ = box.image_offset();
+  images_strain_ = box.strain();
+  images_offset_ = box.image_offset();
+  built_ = true;
+  ++builds_;
+}
+
+// Two passes over the wider list's rows: count the pairs kept per row, then
+// copy them (and their constants) into place, each thread over its own rows.
+void NeighbourList::filter(const NeighbourList& wider, const LeesEdwardsBox& box,
+                           std::span<const Vec3> x) {
+  const std::size_t n = wider.size();
+  const auto shifts = wider.image_shifts(box);
+  const auto kept = [&](std::size_t i, std::size_t p) {
+    const std::uint32_t entry = wider.neighbours_[p];
+    const Vec3 d = x[i] - x[index(entry)] - shifts[image(entry)];
+    const double cutoff = wider.constants_[p].contact_distance + skin_;
+    return d.squaredNorm() < cutoff * cutoff;
+  };
+  const int threads = n >= 4096 ? omp_get_max_threads() : 1;
+  start_.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t count = 0;
+    for (std::size_t p = wider.start_[i]; p < wider.start_[i + 1]; ++p) count += kept(i, p);
+    start_[i + 1] = count;
+  }
+  std::partial_sum(start_.begin(), start_.end(), start_.begin());
+  neighbours_.resize(start_[n]);
+  constants_.resize(start_[n]);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t q = start_[i];
+    for (std::size_t p = wider.start_[i]; p < wider.start_[i + 1]; ++p) {
+      if (!kept(i, p)) continue;
+      neighbours_[q] = wider.neighbours_[p];
+      constants_[q++] = wider.constants_[p];
+    }
+  }
+  max_radius_ = wider.max_radius_;
+  strain_at_build_ = box.strain();
+  images_strain_ = wider.images_strain_;
+  images_offset_ = wider.images_offset_;
   built_ = true;
   ++builds_;
 }
@@ -197,7 +238,7 @@ void NeighbourList::compute_constants(std::span<const double> radius, int thread
 std::array<Vec3, NeighbourList::kImages> NeighbourList::image_shifts(
     const LeesEdwardsBox& box) const {
   const double L = box.side();
-  const double delta = offset_at_build_ + L * (box.strain() - strain_at_build_);
+  const double delta = images_offset_ + L * (box.strain() - images_strain_);
   std::array<Vec3, kImages> shifts;
   for (int nz = -1; nz <= 1; ++nz)
     for (int ny = -1; ny <= 1; ++ny)

@@ -20,6 +20,13 @@
 // since the build (the affine part moves a pair by Δγ times its y separation,
 // which is at most 2 R_max + 2A for pairs that end up in contact). The list is
 // valid while that bound stays below the skin.
+//
+// A list can also be filtered from another of a larger skin (filter): the
+// pairs of the wider list closer than R_i + R_j + skin now, with their images.
+// Between the wider list's builds a narrow list is refreshed in one pass over
+// the wider one's pairs, so the contact kernel loops over fewer non-touching
+// pairs (ContactSystem). The bound above holds for it with its own skin, the
+// strain and the non-affine displacement since the filtering.
 #pragma once
 
 #include <array>
@@ -46,12 +53,20 @@ class NeighbourList {
   /// Builds the list; throws InputError if the cell is too small for the grid
   /// (fewer than three cells of side 2 R_max + skin per direction).
   void build(const LeesEdwardsBox& box, std::span<const Vec3> x, std::span<const double> radius);
+  /// Builds the list as the pairs of `wider` (a list of a larger skin that
+  /// holds every pair within this one's reach at x) closer than
+  /// R_i + R_j + skin at x, in the same order and seen through the same images.
+  void filter(const NeighbourList& wider, const LeesEdwardsBox& box, std::span<const Vec3> x);
 
   /// The list's reach at `strain`: the bound above solved for A, i.e. the
   /// non-affine displacement below which it still holds every contact
   /// (negative when the strain alone has used up the skin).
   double nonaffine_reach(double strain) const {
-    const double shear = std::abs(strain - strain_at_build_);
+    return reach_after(std::abs(strain - strain_at_build_));
+  }
+  /// The reach of the list once the strain has changed by `shear` since it
+  /// was built.
+  double reach_after(double shear) const {
     return (skin_ - 2.0 * shear * max_radius_) / (2.0 + 2.0 * shear);
   }
 
@@ -117,8 +132,11 @@ class NeighbourList {
 
   double skin_;
   bool built_ = false;
-  double strain_at_build_ = 0.0;
-  double offset_at_build_ = 0.0;
+  double strain_at_build_ = 0.0;  // of the bound above
+  // The Lees–Edwards offset δ at strain γ_images, from which image_shifts
+  // continues it: the grid build's (a filtered list keeps the wider one's).
+  double images_strain_ = 0.0;
+  double images_offset_ = 0.0;
   double max_radius_ = 0.0;
   std::size_t builds_ = 0;
   std::vector<std::size_t> start_;

@@ -15,7 +15,8 @@ namespace softglass::micro {
 
 ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
                              std::shared_ptr<const ContactLaw> law, double skin)
-    : particles_(std::move(particles)), box_(box), law_(std::move(law)), neighbours_(skin) {
+    : particles_(std::move(particles)), box_(box), law_(std::move(law)), neighbours_(skin),
+      near_(kNearSkinFraction * skin) {
   for (auto& x : particles_.position) {
     if (!x.allFinite()) throw InputError("a particle position is not finite");
     box_.wrap(x);
@@ -28,14 +29,19 @@ ContactSystem::ContactSystem(Particles particles, LeesEdwardsBox box,
 }
 
 namespace {
+struct Maxima {
+  double wide = 0.0, near = 0.0;  // largest |u|², |w|²
+};
 // Particles [first, last): x = x⁰ + increment y⁰ e_x + dt v and the tracked
-// non-affine displacement u = u⁰ + dt v, from the arrays x⁰, u⁰ (which may be
-// x, u themselves); returns the largest |u|².
-SOFTGLASS_VECTOR_CLONES double move_range(double increment, double dt, const Vec3* v,
-                                          const Vec3* x0, const Vec3* u0, Vec3* x, Vec3* u,
-                                          std::size_t first, std::size_t last) {
-  double max2 = 0.0;
-#pragma omp simd reduction(max : max2)
+// non-affine displacements u = u⁰ + dt v (since the build) and w = w⁰ + dt v
+// (since the filtering), from the arrays x⁰, u⁰, w⁰ (which may be x, u, w
+// themselves); returns their largest squares.
+SOFTGLASS_VECTOR_CLONES Maxima move_range(double increment, double dt, const Vec3* v,
+                                          const Vec3* x0, const Vec3* u0, const Vec3* w0,
+                                          Vec3* x, Vec3* u, Vec3* w, std::size_t first,
+                                          std::size_t last) {
+  double wide = 0.0, near = 0.0;
+#pragma omp simd reduction(max : wide, near)
   for (std::size_t i = first; i < last; ++i) {
     // Componentwise, and in the order of shear() then move(): x += Δγ y, then
     // x += dt v.
@@ -43,14 +49,16 @@ SOFTGLASS_VECTOR_CLONES double move_range(double increment, double dt, const Vec
     x[i] = Vec3(x0[i].x() + increment * x0[i].y() + step.x(), x0[i].y() + step.y(),
                 x0[i].z() + step.z());
     u[i] = u0[i] + step;
-    max2 = std::max(max2, u[i].squaredNorm());
+    w[i] = w0[i] + step;
+    wide = std::max(wide, u[i].squaredNorm());
+    near = std::max(near, w[i].squaredNorm());
   }
-  return max2;
+  return {wide, near};
 }
 }  // namespace
 
 void ContactSystem::move(double dt, std::span<const Vec3> v) {
-  move_from(0.0, dt, v, particles_.position.data(), nonaffine_.data());
+  move_from(0.0, dt, v, particles_.position.data(), nonaffine_.data(), near_nonaffine_.data());
 }
 
 void ContactSystem::shear_and_move(double increment, double dt, std::span<const Vec3> v,
@@ -58,33 +66,46 @@ void ContactSystem::shear_and_move(double increment, double dt, std::span<const 
   const std::size_t n = size();
   position_before.resize(n);
   before.nonaffine.resize(n);
+  before.near_nonaffine.resize(n);
   std::swap(particles_.position, position_before);
   std::swap(nonaffine_, before.nonaffine);
+  std::swap(near_nonaffine_, before.near_nonaffine);
   before.max_nonaffine = max_nonaffine_;
-  move_from(increment, dt, v, position_before.data(), before.nonaffine.data());
+  before.max_near_nonaffine = max_near_nonaffine_;
+  move_from(increment, dt, v, position_before.data(), before.nonaffine.data(),
+            before.near_nonaffine.data());
   box_.advance_strain(increment);
 }
 
 void ContactSystem::move_from(double increment, double dt, std::span<const Vec3> v,
-                              const Vec3* x0, const Vec3* u0) {
+                              const Vec3* x0, const Vec3* u0, const Vec3* w0) {
   changed();
   const std::size_t n = size();
   Vec3* x = particles_.position.data();
-  Vec3* tracked = nonaffine_.data();
-  double max2 = max_nonaffine_ * max_nonaffine_;
+  Maxima m{max_nonaffine_ * max_nonaffine_, max_near_nonaffine_ * max_near_nonaffine_};
+  const auto range = [&](std::size_t first, std::size_t last) {
+    return move_range(increment, dt, v.data(), x0, u0, w0, x, nonaffine_.data(),
+                      near_nonaffine_.data(), first, last);
+  };
   // One thread moves them all without entering a parallel region: even one
   // whose `if` turns it off is a libgomp call per step.
   const int threads = n >= 4096 ? omp_get_max_threads() : 1;
   if (threads == 1) {
-    max2 = std::max(max2, move_range(increment, dt, v.data(), x0, u0, x, tracked, 0, n));
+    const Maxima r = range(0, n);
+    m = {std::max(m.wide, r.wide), std::max(m.near, r.near)};
   } else {
-#pragma omp parallel num_threads(threads) reduction(max : max2)
+    double wide = m.wide, near = m.near;
+#pragma omp parallel num_threads(threads) reduction(max : wide, near)
     {
       const auto [first, last] = thread_range(n, threads, omp_get_thread_num());
-      max2 = std::max(max2, move_range(increment, dt, v.data(), x0, u0, x, tracked, first, last));
+      const Maxima r = range(first, last);
+      wide = std::max(wide, r.wide);
+      near = std::max(near, r.near);
     }
+    m = {wide, near};
   }
-  max_nonaffine_ = std::sqrt(max2);
+  max_nonaffine_ = std::sqrt(m.wide);
+  max_near_nonaffine_ = std::sqrt(m.near);
 }
 
 void ContactSystem::shear(double increment) {
@@ -101,16 +122,31 @@ void ContactSystem::rebuild() {
   neighbours_.build(box_, particles_.position, particles_.radius);
   nonaffine_.assign(size(), Vec3::Zero());
   max_nonaffine_ = 0.0;
+  refilter();
+}
+
+void ContactSystem::refilter() {
+  near_.filter(neighbours_, box_, particles_.position);
+  near_nonaffine_.assign(size(), Vec3::Zero());
+  max_near_nonaffine_ = 0.0;
 }
 
 bool ContactSystem::ensure_neighbours(double extra_nonaffine, double strain) {
-  if (neighbours_.valid_for(max_nonaffine_ + extra_nonaffine, strain)) return false;
-  rebuild();
-  return true;
+  if (!neighbours_.valid_for(max_nonaffine_ + extra_nonaffine, strain)) {
+    rebuild();
+    return true;
+  }
+  // The narrow list is refreshed if the move would leave it, unless even a
+  // fresh one would not hold (a wide margin of the implicit step): the wide
+  // list serves those evaluations.
+  if (!near_.valid_for(max_near_nonaffine_ + extra_nonaffine, strain) &&
+      near_.reach_after(std::abs(strain - box_.strain())) > extra_nonaffine)
+    refilter();
+  return false;
 }
 
 const ContactField& ContactSystem::compute_forces(const ForceRequest& request) {
-  compute_contact_forces(*law_, box_, particles_.position, neighbours_, request, field_);
+  compute_contact_forces(*law_, box_, particles_.position, contact_list(), request, field_);
   if (walls_.present())
     add_wall_forces(*law_, walls_, particles_.position, particles_.radius, request, field_);
   field_configuration_ = configuration_;
@@ -161,12 +197,16 @@ void ContactSystem::rescale(double factor) {
 
 void ContactSystem::save_tracking(Tracking& into) const {
   into.nonaffine.assign(nonaffine_.begin(), nonaffine_.end());
+  into.near_nonaffine.assign(near_nonaffine_.begin(), near_nonaffine_.end());
   into.max_nonaffine = max_nonaffine_;
+  into.max_near_nonaffine = max_near_nonaffine_;
 }
 
 void ContactSystem::restore_tracking(const Tracking& from) {
   nonaffine_.assign(from.nonaffine.begin(), from.nonaffine.end());
+  near_nonaffine_.assign(from.near_nonaffine.begin(), from.near_nonaffine.end());
   max_nonaffine_ = from.max_nonaffine;
+  max_near_nonaffine_ = from.max_near_nonaffine;
 }
 
 void ContactSystem::restore_positions(const std::vector<Vec3>& x, double strain) {
@@ -177,7 +217,8 @@ void ContactSystem::restore_positions(const std::vector<Vec3>& x, double strain)
 
 std::size_t ContactSystem::memory_bytes() const {
   return size() * (2 * sizeof(Vec3) + sizeof(double) + sizeof(std::uint32_t)) +
-         nonaffine_.capacity() * sizeof(Vec3) + neighbours_.memory_bytes() + field_.memory_bytes();
+         (nonaffine_.capacity() + near_nonaffine_.capacity()) * sizeof(Vec3) +
+         neighbours_.memory_bytes() + near_.memory_bytes() + field_.memory_bytes();
 }
 
 }  // namespace softglass::micro

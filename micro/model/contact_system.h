@@ -7,6 +7,15 @@
 // which records the non-affine part of each displacement, and the
 // list is rebuilt — with the particles reordered cell by cell for locality —
 // only when the bound of neighbour_list.h says a contact could be missed.
+//
+// The forces loop over a narrower list filtered from it (neighbour_list.h):
+// the pairs within a quarter of the skin, refreshed in one pass over the wide
+// list when a move would leave it. With the usual skin of 0.6 R a fifth of the
+// wide list's pairs drop out, and the pass that finds the touching pairs was
+// half of the contact kernel (docs/validation.md). The narrow list serves an
+// evaluation only when its own bound holds at that moment, else the wide list
+// does, so callers see the wide list's validity alone and the forces are the
+// same bits either way.
 #pragma once
 
 #include <memory>
@@ -37,6 +46,11 @@ class ContactSystem {
   std::size_t size() const { return particles_.size(); }
   double volume_fraction() const { return particles_.total_volume() / box_.volume(); }
   const NeighbourList& neighbours() const { return neighbours_; }
+  /// The list the next evaluation loops over: the narrow one while its bound
+  /// holds at the current configuration, else the wide one.
+  const NeighbourList& contact_list() const {
+    return near_.valid_for(max_near_nonaffine_, box_.strain()) ? near_ : neighbours_;
+  }
 
   /// Smooth walls (wall_contacts.h); none by default. Checked against the
   /// cell, the largest radius and the skin (InputError).
@@ -79,8 +93,8 @@ class ContactSystem {
   /// Non-affine displacement bookkeeping, exposed so that an integrator can save
   /// and restore it along with the positions when it rejects a step.
   struct Tracking {
-    std::vector<Vec3> nonaffine;
-    double max_nonaffine;
+    std::vector<Vec3> nonaffine, near_nonaffine;  // since the build, the filtering
+    double max_nonaffine, max_near_nonaffine;
   };
   void save_tracking(Tracking& into) const;
   void restore_tracking(const Tracking& from);
@@ -95,10 +109,11 @@ class ContactSystem {
 
  private:
   void rebuild();
-  // Positions x = x⁰ + increment y⁰ e_x + dt v and the tracking u = u⁰ + dt v,
-  // from arrays x⁰, u⁰ that may be the system's own.
+  void refilter();
+  // Positions x = x⁰ + increment y⁰ e_x + dt v and the trackings u = u⁰ + dt v,
+  // w = w⁰ + dt v, from arrays x⁰, u⁰, w⁰ that may be the system's own.
   void move_from(double increment, double dt, std::span<const Vec3> v, const Vec3* x0,
-                 const Vec3* u0);
+                 const Vec3* u0, const Vec3* w0);
   // Every change of the positions, the cell or the particles' order counts
   // one configuration; the field remembers the one it was computed at.
   void changed() { ++configuration_; }
@@ -108,12 +123,19 @@ class ContactSystem {
   std::shared_ptr<const ContactLaw> law_;
   Walls walls_;
   NeighbourList neighbours_;
+  // The narrow list and its share of the skin. A quarter: at φ = 0.80 the pairs
+  // per particle are 6.54, 5.63, 5.22 and 5.00 for skins 0.6, 0.3, 0.15 and
+  // 0.08 R, and a narrower list is refreshed more often for little gain.
+  static constexpr double kNearSkinFraction = 0.25;
+  NeighbourList near_;
   ContactField field_;
   std::uint64_t configuration_ = 0;
   std::uint64_t field_configuration_ = ~std::uint64_t{0};  // none yet
   ForceRequest field_request_{};
   std::vector<Vec3> nonaffine_;  // since the last build
   double max_nonaffine_ = 0.0;
+  std::vector<Vec3> near_nonaffine_;  // since the last filtering
+  double max_near_nonaffine_ = 0.0;
 };
 
 }  // namespace softglass::micro

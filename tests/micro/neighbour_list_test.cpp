@@ -128,6 +128,65 @@ TEST(NeighbourList, StaysCompleteWithinTheValidityBound) {
   EXPECT_NE(before, expected);
 }
 
+TEST(NeighbourList, FilteredListHoldsThePairsWithinItsSkinAndStaysComplete) {
+  // A wide list built at strain 7.3, the particles moved within its bound, a
+  // narrow list (a quarter of the skin) filtered from it there: the narrow list
+  // holds exactly the pairs within R_i + R_j + skin/4 of the moved
+  // configuration, through the wide list's images. Moved again within the
+  // narrow list's own bound (from the filtering), it still holds every contact.
+  const auto c = random_configuration(400, 0.7, 77);
+  const double r_max = *std::max_element(c.radius.begin(), c.radius.end());
+  const double start = 7.3, narrow_skin = 0.25 * kSkin;
+  LeesEdwardsBox box(c.side);
+  box.set_strain(start);
+  NeighbourList wide(kSkin), narrow(narrow_skin);
+  wide.build(box, c.position, c.radius);
+
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> normal;
+  // x + a n + Δγ y e_x with 2a + Δγ (2 R_max + 2a) = `share` of `skin`.
+  const auto move = [&](const std::vector<Vec3>& x, double skin, double share, double& strain) {
+    const double a = 0.2 * skin;
+    const double step = (share * skin - 2 * a) / (2 * r_max + 2 * a);
+    std::vector<Vec3> moved = x;
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+      const Vec3 direction = Vec3(normal(rng), normal(rng), normal(rng)).normalized();
+      moved[i] += a * direction + Vec3(step * x[i].y(), 0, 0);
+    }
+    strain += step;
+    return moved;
+  };
+  const auto wrapped_at = [&](std::vector<Vec3> x, double strain) {
+    LeesEdwardsBox b(c.side);
+    b.set_strain(strain);
+    for (Vec3& xi : x) b.wrap(xi);
+    return x;
+  };
+
+  double strain = start;
+  const std::vector<Vec3> first = move(c.position, kSkin, 0.5, strain);
+  box.set_strain(strain);
+  narrow.filter(wide, box, first);
+  PairSet ambiguous;
+  const PairSet expected = brute_force_pairs(wrapped_at(first, strain), c.radius, c.side, strain,
+                                             narrow_skin, 1e-9, &ambiguous);
+  ASSERT_TRUE(ambiguous.empty());
+  EXPECT_EQ(list_pairs(narrow), expected);
+  EXPECT_LT(narrow.pair_count(), wide.pair_count());
+  EXPECT_TRUE(narrow.valid_for(0.0, strain));
+  const PairSet first_contacts = contact_pairs(box, first, wide);
+  EXPECT_EQ(contact_pairs(box, first, narrow), first_contacts);
+
+  const std::vector<Vec3> second = move(first, narrow_skin, 0.95, strain);
+  EXPECT_TRUE(narrow.valid_for(0.2 * narrow_skin, strain));
+  box.set_strain(strain);
+  const PairSet contacts = brute_force_pairs(wrapped_at(second, strain), c.radius, c.side, strain,
+                                             0.0, 1e-9, &ambiguous);
+  ASSERT_TRUE(ambiguous.empty());
+  EXPECT_EQ(contact_pairs(box, second, narrow), contacts);
+  EXPECT_NE(contacts, first_contacts) << "the moves changed the contact network";
+}
+
 TEST(NeighbourList, ValidityBoundIsTightForNonAffineMoves) {
   // Two unit spheres a distance 2 + 1.001·skin apart: not in the list. Moving
   // each towards the other by A closes the gap by 2A. With 2A = 0.999 skin the
