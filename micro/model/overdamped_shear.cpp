@@ -138,11 +138,6 @@ void OverdampedShear::prepare_step(double dt) {
   system_.ensure_neighbours(dt * max_speed_, strain_after(dt));
 }
 
-void OverdampedShear::step(double dt) {
-  advance_affinely(dt);
-  system_.move(dt, system_.particles().velocity);
-}
-
 void OverdampedShear::advance_affinely(double dt) {
   system_.shear(strain_increment(dt));
   time_ += dt;

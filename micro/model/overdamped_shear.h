@@ -112,14 +112,11 @@ class OverdampedShear {
   /// Makes the neighbour list valid for an Euler step of `dt` from here. May
   /// reorder particles (velocities move with them).
   void prepare_step(double dt);
-  /// x += Δγ y e_x + dt v, time += dt, with Δγ the drive's strain increment
-  /// over dt and v from the last evaluation.
-  void step(double dt);
   /// The affine part of a step: time += dt, x += Δγ y e_x, the cell's strain
   /// += Δγ. The caller adds the non-affine move (system().move).
   void advance_affinely(double dt);
 
-  /// Everything `step` and `evaluate` change, for rejecting a trial step.
+  /// Everything a step and `evaluate` change, for rejecting a trial step.
   struct Snapshot {
     std::vector<Vec3> position, velocity;
     SolventFlow solvent;
@@ -131,10 +128,12 @@ class OverdampedShear {
   };
   /// Copies into `into`'s buffers (no allocation once they have grown).
   void save(Snapshot& into) const;
-  /// save(into) then step(dt), in one pass over the particles: the positions
-  /// and their tracking are handed to `into` by swapping arrays, and the new
-  /// ones written from them (an explicit step's copies and its two passes were
-  /// 5 % of a Hertz step at N = 1000).
+  /// save(into), then the explicit step x += Δγ y e_x + dt v, time += dt (Δγ
+  /// the drive's strain increment over dt, v from the last evaluation), in
+  /// one pass over the particles: the positions and their tracking are handed
+  /// to `into` by swapping arrays, and the new ones written from them (the
+  /// copies and the separate shear and move were 5 % of an explicit Hertz step
+  /// at N = 1000).
   void save_and_step(Snapshot& into, double dt);
   void restore(const Snapshot& from);
 
