@@ -35,9 +35,21 @@ OverdampedShear::OverdampedShear(ContactSystem system, const ShearModel& model, 
   model_.validate();
 }
 
+bool OverdampedShear::free_draining() const {
+  return !model_.drag.enabled && !model_.drag.stokes.has_pairs();
+}
+
 void OverdampedShear::evaluate() {
+  evaluate_against(nullptr);
+}
+
+double OverdampedShear::evaluate(const VelocityChange& change) {
+  return evaluate_against(&change);
+}
+
+double OverdampedShear::evaluate_against(const VelocityChange* change) {
   // The velocities are implicit with the EHD drag or the Stokes pair dashpots.
-  const bool with_drag = model_.drag.enabled || model_.drag.stokes.has_pairs();
+  const bool with_drag = !free_draining();
   stress_valid_ = time() >= stress_from_;
   const ContactField& field =
       system_.compute_forces({.energy = false, .contacts = with_drag, .virial = stress_valid_});
@@ -66,22 +78,25 @@ void OverdampedShear::evaluate() {
     force = driving_force_;
   }
 
+  double velocity_change;
   if (with_drag) {
-    last_solve_ =
-        drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, force, p.velocity,
-                    field.walls);
+    last_solve_ = drag_.solve(field.contacts, model_.gamma_tilde, c, friction_, force, p.velocity,
+                              field.walls);
     if (stress_valid_)
       viscous_virial_ =
           drag_.virial(field.contacts, model_.gamma_tilde, c, p.velocity, {}, friction_);
-    scan_velocities<false, true>({}, field.stiffness_sum);
+    velocity_change = change ? scan_velocities<false, true, true>({}, field.stiffness_sum, change)
+                             : scan_velocities<false, true, false>({}, field.stiffness_sum, {});
   } else {
     viscous_virial_ = {};
-    scan_velocities<true, true>(force, field.stiffness_sum);
+    velocity_change = change ? scan_velocities<true, true, true>(force, field.stiffness_sum, change)
+                             : scan_velocities<true, true, false>(force, field.stiffness_sum, {});
   }
   solvent_.update(p.position, p.velocity, friction_, c);
   elastic_virial_ = field.virial;
   evaluated_ = true;
   ++evaluations_;
+  return velocity_change;
 }
 
 void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
@@ -90,7 +105,7 @@ void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
     evaluate();
     return;
   }
-  scan_velocities<false, false>({}, {});
+  scan_velocities<false, false, false>({}, {}, {});
   stress_valid_ = false;
   last_solve_ = {};
   evaluated_ = true;
@@ -102,27 +117,40 @@ void OverdampedShear::accept_step_velocities(std::span<const Vec3> velocity) {
 // stiffness sums, and the largest speed. The maxima are exact in any order, so
 // the loop is vectorised (a single chain of comparisons would bound it by its
 // latency). The maximum alone would let a NaN through (max(s, NaN) is s); the
-// sum of the squares carries it, and an infinity, to the test.
-template <bool kFreeDraining, bool kRate>
-SOFTGLASS_VECTOR_CLONES void OverdampedShear::scan_velocities(std::span<const Vec3> force,
-                                                              std::span<const double> stiffness) {
+// sum of the squares carries it, and an infinity, to the test. The velocity
+// change is taken componentwise: a Vec3 built and then changed in one
+// component goes through memory, and its reload stalled the loop.
+template <bool kFreeDraining, bool kRate, bool kChange>
+SOFTGLASS_VECTOR_CLONES double OverdampedShear::scan_velocities(std::span<const Vec3> force,
+                                                                std::span<const double> stiffness,
+                                                                const VelocityChange* change) {
   Vec3* const velocity = system_.particles().velocity.data();
   const double* const mobility = mobility_.data();
+  const Vec3* const before = kChange ? change->before.data() : nullptr;
+  const double strain_step = kChange ? change->strain_step : 0.0;
   const std::size_t n = system_.size();
-  double rate = 0.0, speed2 = 0.0, sum = 0.0;
-#pragma omp simd reduction(max : rate, speed2) reduction(+ : sum)
+  double rate = 0.0, speed2 = 0.0, sum = 0.0, change2 = 0.0;
+#pragma omp simd reduction(max : rate, speed2, change2) reduction(+ : sum)
   for (std::size_t a = 0; a < n; ++a) {
     if constexpr (kFreeDraining) velocity[a] = mobility[a] * force[a];
     if constexpr (kRate) rate = std::max(rate, 2.0 * stiffness[a] * mobility[a]);
     const double s = velocity[a].squaredNorm();
     speed2 = std::max(speed2, s);
     sum += s;
+    if constexpr (kChange) {
+      const Vec3& v0 = before[a];
+      const Vec3& v = velocity[a];
+      const double cx = v.x() - v0.x() + strain_step * v0.y();
+      const double cy = v.y() - v0.y(), cz = v.z() - v0.z();
+      change2 = std::max(change2, cx * cx + cy * cy + cz * cz);
+    }
   }
   if constexpr (kRate) relaxation_rate_ = rate;
   max_speed_ = std::sqrt(speed2);
   if (!std::isfinite(sum)) {
     throw NumericalError(fmt::format("non-finite particle velocity at strain {}", strain()));
   }
+  return change2;
 }
 
 StressSample OverdampedShear::stress() const {
@@ -147,23 +175,29 @@ void OverdampedShear::advance_affinely(double dt) {
 void OverdampedShear::save(Snapshot& into) const {
   const Particles& p = system_.particles();
   into.position.assign(p.position.begin(), p.position.end());
+  into.velocity.assign(p.velocity.begin(), p.velocity.end());
   system_.save_tracking(into.tracking);
-  save_all_but_positions(into);
+  save_state(into);
 }
 
 void OverdampedShear::save_and_step(Snapshot& into, double dt) {
-  save_all_but_positions(into);
+  // The velocities are copied when the drag's solve starts from them, else
+  // handed over: the next evaluation sets every one.
+  std::vector<Vec3>& velocity = system_.particles().velocity;
+  if (free_draining()) {
+    std::swap(velocity, into.velocity);
+    velocity.resize(into.velocity.size());
+  } else {
+    into.velocity.assign(velocity.begin(), velocity.end());
+  }
+  save_state(into);
   const double increment = strain_increment(dt);
   time_ += dt;
   evaluated_ = false;
-  system_.shear_and_move(increment, dt, system_.particles().velocity, into.position,
-                         into.tracking);
+  system_.shear_and_move(increment, dt, into.velocity, into.position, into.tracking);
 }
 
-void OverdampedShear::save_all_but_positions(Snapshot& into) const {
-  // The velocities are copied, not swapped: the drag's solve starts from them.
-  const Particles& p = system_.particles();
-  into.velocity.assign(p.velocity.begin(), p.velocity.end());
+void OverdampedShear::save_state(Snapshot& into) const {
   into.solvent = solvent_;
   into.strain = strain();
   into.time = time_;

@@ -30,6 +30,7 @@
 #include "micro/model/ehd_drag.h"
 #include "micro/model/shear_drive.h"
 #include "micro/model/solvent_flow.h"
+#include "micro/numerics/vector_clones.h"
 
 namespace softglass::micro {
 
@@ -81,6 +82,21 @@ class OverdampedShear {
   /// Forces, velocities and stiffness bound at the current configuration, and
   /// the stress if the strain has reached the one set by `sample_stress_from`.
   void evaluate();
+  /// What a step's error estimate compares the new velocities with
+  /// (adaptive_euler.cpp): the velocities v⁰ at the step's start and the
+  /// step's strain increment Δγ.
+  struct VelocityChange {
+    std::span<const Vec3> before;
+    double strain_step;
+  };
+  /// evaluate(), returning as well max_α |Δu_α|², the largest change over the
+  /// step of a particle's total velocity u = c y e_x + v: Δu_α = v_α − v⁰_α +
+  /// Δγ v⁰_α,y e_x (its y moved by dt v⁰_y while the cell sheared by Δγ; the
+  /// drive's own change of c moves every particle affinely, which a step
+  /// integrates exactly). It is taken in the pass that sets the velocities: a
+  /// pass of its own read both velocity arrays again, 3 % of an explicit step
+  /// at N = 10⁵.
+  double evaluate(const VelocityChange& change);
   /// After an implicit step to this configuration: takes `velocity` (the
   /// step's own u/h, which solve its equation of motion with the drag of the
   /// step's start) as the velocities here instead of solving for them — unless
@@ -133,27 +149,38 @@ class OverdampedShear {
   /// one pass over the particles: the positions and their tracking are handed
   /// to `into` by swapping arrays, and the new ones written from them (the
   /// copies and the separate shear and move were 5 % of an explicit Hertz step
-  /// at N = 1000).
+  /// at N = 1000). Without drag the velocities are handed over too, since the
+  /// next evaluation overwrites them all; until it, velocities() holds stale
+  /// values.
   void save_and_step(Snapshot& into, double dt);
   void restore(const Snapshot& from);
 
  private:
+  // evaluate(), with the velocity change if `change` is given (else 0).
+  double evaluate_against(const VelocityChange* change);
+  // Everything a snapshot holds but the positions and the velocities.
+  void save_state(Snapshot& into) const;
+  // Whether the velocities are F/ζ (no EHD drag, no Stokes pair dashpots):
+  // then nothing implicit starts from the last ones.
+  bool free_draining() const;
   /// max_speed_ from the particles' velocities, after setting them to F/ζ if
-  /// kFreeDraining and relaxation_rate_ from the stiffness sums if kRate;
-  /// throws NumericalError if a velocity is not finite.
-  void save_all_but_positions(Snapshot& into) const;
-  template <bool kFreeDraining, bool kRate>
-  void scan_velocities(std::span<const Vec3> force, std::span<const double> stiffness);
+  /// kFreeDraining, relaxation_rate_ from the stiffness sums if kRate, and
+  /// returns max |Δu|² against `change` if kChange (else 0); throws
+  /// NumericalError if a velocity is not finite.
+  template <bool kFreeDraining, bool kRate, bool kChange>
+  SOFTGLASS_VECTOR_CLONES double scan_velocities(std::span<const Vec3> force,
+                                                 std::span<const double> stiffness,
+                                                 const VelocityChange* change);
 
   ContactSystem system_;
   ShearModel model_;
   ShearDrive drive_;
   double time_;  // time of a time-dependent drive
   EhdDrag drag_;
-  std::vector<double> friction_;      // ζ_α
-  std::vector<double> mobility_;      // 1/ζ_α
+  std::vector<double> friction_;  // ζ_α
+  std::vector<double> mobility_;  // 1/ζ_α
   SolventFlow solvent_;
-  std::vector<Vec3> driving_force_;  // F^e + ζ_r v̄(y) e_x, with a non-affine solvent flow
+  std::vector<Vec3> driving_force_;   // F^e + ζ_r v̄(y) e_x, with a non-affine solvent flow
   std::size_t ordered_at_build_ = 0;  // the list build whose particle order they follow
   bool evaluated_ = false;
   bool stress_valid_ = false;

@@ -8,14 +8,15 @@
 //
 // Error. The difference between the Euler step and Heun's second-order step from
 // the same point is  e = (dt/2)|u(x_{n+1}) − u(x_n)|, and u(x_{n+1}) is what the
-// next step needs anyway, so the estimate costs nothing. A step whose largest
-// per-particle e exceeds the tolerance is rejected and retried smaller; the next
-// step is dt·min(2, 0.9 √(tol/e)) (Euler's local error is O(dt²)).
+// next step needs anyway, so the estimate costs nothing: the evaluation at
+// x_{n+1} takes max |Δu| in its pass over the velocities (overdamped_shear.h).
+// A step whose largest per-particle e exceeds the tolerance is rejected and
+// retried smaller; the next step is dt·min(2, 0.9 √(tol/e)) (Euler's local
+// error is O(dt²)).
 #include <algorithm>
 #include <cmath>
 
 #include "micro/dynamics/integrator.h"
-#include "micro/numerics/vector_clones.h"
 
 namespace softglass::micro {
 namespace {
@@ -35,8 +36,7 @@ class AdaptiveEuler final : public Integrator {
       flow.prepare_step(dt);
       const double strain_step = flow.strain_increment(dt);
       flow.save_and_step(before_, dt);
-      flow.evaluate();
-      const double error = error_estimate(before_.velocity, flow, dt, strain_step);
+      const double error = 0.5 * dt * std::sqrt(flow.evaluate({before_.velocity, strain_step}));
       const double factor = error > 0.0 ? 0.9 * std::sqrt(spec_.tolerance / error) : 2.0;
       if (error <= spec_.tolerance) {
         record_accepted(dt);
@@ -51,28 +51,6 @@ class AdaptiveEuler final : public Integrator {
   }
 
  private:
-  // max_α (dt/2)|u_α(x_{n+1}) − u_α(x_n)| for the non-affine velocity and the
-  // advection of y by the affine flow: u = c y e_x + v, and y changed by dt v_y
-  // while the cell sheared by Δγ (the drive's own change of c moves every
-  // particle affinely, which the step integrates exactly).
-  SOFTGLASS_VECTOR_CLONES static double error_estimate(const std::vector<Vec3>& v_before,
-                                                       const OverdampedShear& flow, double dt,
-                                                       double strain_step) {
-    const auto v_after = flow.velocities();
-    // Componentwise: a Vec3 built and then changed in one component goes
-    // through memory, and its reload stalled this loop (11 % of a Hertz step).
-    double worst = 0.0;
-#pragma omp simd reduction(max : worst)
-    for (std::size_t a = 0; a < v_before.size(); ++a) {
-      const Vec3& before = v_before[a];
-      const Vec3& after = v_after[a];
-      const double cx = after.x() - before.x() + strain_step * before.y();
-      const double cy = after.y() - before.y(), cz = after.z() - before.z();
-      worst = std::max(worst, cx * cx + cy * cy + cz * cz);
-    }
-    return 0.5 * dt * std::sqrt(worst);
-  }
-
   IntegratorSpec spec_;
   double proposal_ = 1e300;
   OverdampedShear::Snapshot before_;  // the state a rejected step returns to
