@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <vector>
 
 int main(int argc, char** argv) {
@@ -53,7 +54,10 @@ int main(int argc, char** argv) {
       best = std::max(best, static_cast<double>((k + 1) * n * sizeof(double)) / seconds / 1e9);
     }
     // The checksum keeps the sums from being optimised away.
-    if (out[n / 2] != static_cast<double>(k)) return 1;
+    if (out[n / 2] != static_cast<double>(k)) {
+      fmt::print(stderr, "memory_streams: wrong sum {} for {} streams\n", out[n / 2], k);
+      return 1;
+    }
     fmt::print("stream_bandwidth_GBps {} {:.1f}\n", k, best);
   }
   return 0;

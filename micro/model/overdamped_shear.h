@@ -94,8 +94,8 @@ class OverdampedShear {
   /// Δγ v⁰_α,y e_x (its y moved by dt v⁰_y while the cell sheared by Δγ; the
   /// drive's own change of c moves every particle affinely, which a step
   /// integrates exactly). It is taken in the pass that sets the velocities: a
-  /// pass of its own read both velocity arrays again, 3 % of an explicit step
-  /// at N = 10⁵.
+  /// pass of its own read both velocity arrays again (4 % of an explicit
+  /// step's samples at N = 10⁵).
   double evaluate(const VelocityChange& change);
   /// After an implicit step to this configuration: takes `velocity` (the
   /// step's own u/h, which solve its equation of motion with the drag of the
