@@ -36,9 +36,8 @@ for spec in "${specs[@]}"; do
   read -r base tile steps <<< "$spec"
   for t in 1 "$threads_all"; do
     # The round with the fewest ns per particle-step, whole.
-    best=$(for f in "$work/$base.$tile.$t".*; do
-             awk -v f="$f" '$1=="ns_per_particle_step"{print $2, f}' "$f"
-           done | sort -g | head -1 | cut -d' ' -f2)
+    best=$(awk '$1=="ns_per_particle_step"{print $2, FILENAME}' "$work/$base.$tile.$t".* |
+           sort -g | head -1 | cut -d' ' -f2)
     get() { awk -v k="$1" '$1==k{print $2}' "$best"; }
     printf "%-9s %-8s %-17s %-18s %-18s %-18s\n" "$(get particles)" "$t" "$(get ns_per_particle_step)" \
       "$(get particle_steps_per_second)" "$(get engine_bytes_per_particle)" "$(get peak_rss_bytes_per_particle)"
