@@ -318,7 +318,10 @@ int compare(const CompareOptions& o) {
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0) return kExitOk;
 
   const Comparison comparison = compare_points(measured, std::move(results));
-  const std::vector<std::string> report = agreement_report(comparison);
+  std::vector<std::string> report = agreement_report(comparison);
+  const std::string extrapolation =
+      extrapolation_note(*scene, material, measured.angular_velocity);
+  if (!extrapolation.empty()) report.push_back(extrapolation);
   const UnitTable table = comparison_table(comparison, constants);
   const std::vector<std::string> header_lines =
       provenance(o, scene->description(), measured, describe_model(material, settings));

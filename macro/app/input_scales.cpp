@@ -107,24 +107,23 @@ std::vector<Scale> point_scales(const Scene& scene, const Material& m,
                                 const fe::SolverSettings& settings, double point, double volume) {
   const double rate = scene.characteristic_rate(point);
   const double epsilon = settings.relative_rate_scale * rate;
-  const double stress = m.shear.stress(rate);
+  const double stress = m.shear->stress(rate);
   const double power = stress * rate * volume;
   const Column output = scene.columns().front();
-  // K γ̇ⁿ as such: τ(γ̇_c) − τ_y would lose it entirely beyond Bi ~ 1e16.
-  const double tau_y = m.shear.yield_stress;
-  const double bingham =
-      tau_y == 0.0 ? 0.0 : tau_y / (m.shear.consistency * std::pow(rate, m.shear.flow_index));
+  // Δ(γ̇_c) as such: τ(γ̇_c) − τ_y would lose it entirely beyond Bi ~ 1e16.
+  const double tau_y = m.shear->yield_stress();
+  const double bingham = tau_y == 0.0 ? 0.0 : tau_y / m.shear->excess_stress(rate);
   return {
       {"characteristic shear rate gamma_c", "1/s", rate, geometry | drive},
       {"regularisation rate scale eps", "1/s", epsilon, geometry | drive},
       {"stress scale tau(gamma_c)", "Pa", stress, geometry | drive | material},
-      {"viscosity scale eta(eps)", "Pa s", m.shear.viscosity(epsilon), geometry | drive | material},
+      {"viscosity scale eta(eps)", "Pa s", m.shear->viscosity(epsilon), geometry | drive | material},
       {"power scale tau gamma_c V", "W", power, geometry | drive | material},
       {fmt::format("{} scale (power / {})", output.name, scene.drive().name), output.unit,
        power / point, geometry | drive | material},
       {"normal stress scale |N1| + |N2|", "Pa",
-       std::abs(m.first_normal_stress_difference(rate)) +
-           std::abs(m.second_normal_stress_difference(rate)),
+       std::abs(m.first_normal_stress_difference->value(rate)) +
+           std::abs(m.second_normal_stress_difference->value(rate)),
        geometry | drive | material, true},
       {"Bingham number tau_y/(K gamma_c^n)", "1", bingham, geometry | drive | material,
        true, kLargestBinghamNumber, 0.0},
@@ -155,8 +154,10 @@ void check_derived_scales(const Scene& scene, const Material& material,
   std::vector<Scale> scales{{"smallest mesh cell", "m", mesh.smallest_cell, geometry},
                             {"mesh extent", "m", mesh.largest_extent, geometry},
                             {"volume", "m^3", mesh.volume, geometry}};
-  scales.push_back({"flow index n", "1", material.shear.flow_index, flow_index, false,
-                    kLargestFlowIndex, kSmallestFlowIndex});
+  const auto [n_min, n_max] = material.shear->flow_index_range();
+  for (const double n : {n_min, n_max})
+    scales.push_back(
+        {"flow index n", "1", n, flow_index, false, kLargestFlowIndex, kSmallestFlowIndex});
   if (const auto instrument = scene.instrument()) {
     scales.push_back({"instrument strain constant", "1/rad", instrument->strain_constant, geometry});
     scales.push_back(

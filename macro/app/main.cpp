@@ -104,8 +104,8 @@ int main(int argc, char** argv) {
   prefer_lean_mpi_singleton();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   CLI::App app{
-      "softglass macro: steady creeping flow of a Herschel-Bulkley material in rheometers, "
-      "channels, pipes and ducts (deal.II finite elements)",
+      "softglass macro: steady creeping flow of a yield-stress material (Herschel-Bulkley or a "
+      "tabulated flow curve) in rheometers, channels, pipes and ducts (deal.II finite elements)",
       "macro"};
   app.set_version_flag("--version", fmt::format("softglass macro {} ({})", kVersion, kGitRevision));
   app.require_subcommand(1);

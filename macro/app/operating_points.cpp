@@ -14,12 +14,29 @@
 namespace softglass::macro::app {
 
 std::string describe_model(const Material& material, const fe::SolverSettings& settings) {
-  return fmt::format("material: tau_y = {} Pa, K = {} Pa s^n, n = {}; solver: preset {}, {}",
-                     material.shear.yield_stress, material.shear.consistency,
-                     material.shear.flow_index, settings.preset,
+  return fmt::format("material: {}; solver: preset {}, {}", material.shear->description(),
+                     settings.preset,
                      settings.method == fe::Method::regularised
                          ? settings.regularisation + " regularisation"
                          : std::string("augmented Lagrangian"));
+}
+
+std::string extrapolation_note(const Scene& scene, const Material& material,
+                               const std::vector<double>& points) {
+  const auto window = material.shear->rate_window();
+  if (!window) return {};
+  std::size_t below = 0, above = 0;
+  for (const double point : points) {
+    const double rate = scene.characteristic_rate(point);
+    below += rate < window->first;
+    above += rate > window->second;
+  }
+  if (below + above == 0) return {};
+  return fmt::format(
+      "note: at {} of {} operating points the characteristic shear rate lies outside the "
+      "tabulated law's window {:.4g} ... {:.4g} 1/s ({} below, {} above): there the law is its "
+      "power-law extrapolation, not data",
+      below + above, points.size(), window->first, window->second, below, above);
 }
 
 RankGroups::RankGroups(std::size_t points, unsigned ranks_per_point) {

@@ -18,6 +18,12 @@ namespace softglass::macro::app {
 /// One line: the material law and the solver ("material: tau_y = ... ; solver: ...").
 std::string describe_model(const Material& material, const fe::SolverSettings& settings);
 
+/// Empty, or one line saying at how many operating points the scene's
+/// characteristic shear rate lies outside the window of a tabulated law,
+/// where the law is its power-law extrapolation (tabulated_law.h).
+std::string extrapolation_note(const Scene& scene, const Material& material,
+                               const std::vector<double>& points);
+
 /// What to write besides the rows, and how to show progress.
 struct SweepDisplay {
   /// The points whose fields are written (VTU), and where: the temporary name

@@ -102,13 +102,14 @@ void warn_if_unresolved(const std::string& quantity, const Column& drive,
 // the full parameter set.
 void write_summary(const std::string& file, const std::filesystem::path& scene_file,
                    const Scene& scene, const ErrorEstimates& errors, const std::string& sweep,
-                   const std::string& parameters) {
+                   const std::string& extrapolation, const std::string& parameters) {
   write_file(file, "summary.txt", [&](std::ostream& summary) {
     summary << fmt::format("softglass macro {} ({})\n", kVersion, kGitRevision);
     summary << "scene file: " << scene_file.string() << "\n";
     summary << scene.description() << "\n";
     summary << sweep;
     summary << error_summary(scene.columns()[0].name, errors);
+    if (!extrapolation.empty()) summary << extrapolation << "\n";
     summary << "\nfull parameter set:\n" << parameters;
   });
 }
@@ -169,11 +170,12 @@ int run(const RunOptions& options) {
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
   const ErrorEstimates errors = largest_errors(points, results);
+  const std::string extrapolation = extrapolation_note(*scene, material, points);
   write_summary(folder.temporary("summary.txt"), options.scene_file, *scene, errors,
                 fmt::format("operating points: {} on {} MPI rank(s), {} per point's mesh; wall "
                             "time {:.3f} s\n",
                             points.size(), ranks, groups.ranks_per_point(), wall),
-                parameters.str());
+                extrapolation, parameters.str());
   write_results_h5(folder.temporary("results.h5"), table,
                    {.software = fmt::format("softglass macro {} ({})", kVersion, kGitRevision),
                     .scene_file = options.scene_file.string(),
@@ -185,6 +187,7 @@ int run(const RunOptions& options) {
                     .ranks_per_point = groups.ranks_per_point()});
   folder.commit();
   warn_if_unresolved(scene->columns()[0].name, scene->drive(), errors);
+  if (!extrapolation.empty()) std::cerr << "macro: " << extrapolation << "\n";
   if (!options.quiet) {
     std::cout << fmt::format("{} operating points in {:.2f} s; results in {}\n", points.size(),
                              wall, directory.string());

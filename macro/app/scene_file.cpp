@@ -67,7 +67,7 @@ Material read_scene_material(dealii::ParameterHandler& prm, const std::filesyste
                              std::vector<SetEntry>& entries) {
   if (override.empty()) return read_material(prm);
   MaterialFile fragment = read_material_file(override);
-  set_material(prm, fragment.material);
+  set_material(prm, fragment.entries);
   std::erase_if(entries, [](const SetEntry& e) {
     return !e.subsections.empty() && e.subsections.front() == "material";
   });

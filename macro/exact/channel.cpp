@@ -11,8 +11,8 @@ double wall_stress(const PlaneChannel& channel) {
   return channel.pressure_gradient * channel.half_height;
 }
 
-double plug_half_width(const HerschelBulkley& law, const PlaneChannel& channel) {
-  return std::min(law.yield_stress / channel.pressure_gradient, channel.half_height);
+double plug_half_width(LawRef law, const PlaneChannel& channel) {
+  return std::min(law->yield_stress() / channel.pressure_gradient, channel.half_height);
 }
 
 namespace {
@@ -24,19 +24,15 @@ double slip_velocity(const SlipLaw* wall, double wall_stress) {
 
 }  // namespace
 
-double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel, const SlipLaw* wall) {
-  const double tau_w = wall_stress(channel), phi = law.yield_stress / tau_w;
-  const double H = channel.half_height, slip = 2.0 * H * slip_velocity(wall, tau_w);
-  if (phi >= 1.0) return slip;
-  const double n = law.flow_index;
-  return slip + 2.0 * H * H * std::pow(tau_w / law.consistency, 1.0 / n) * n *
-         std::pow(1.0 - phi, (n + 1.0) / n) * ((1.0 - phi) / (2.0 * n + 1.0) + phi / (n + 1.0));
+double flow_rate(LawRef law, const PlaneChannel& channel, const SlipLaw* wall) {
+  const double G = channel.pressure_gradient, tau_w = wall_stress(channel);
+  return 2.0 * channel.half_height * slip_velocity(wall, tau_w) +
+         2.0 / (G * G) * rate_moment(*law, 1, 0.0, tau_w);
 }
 
-double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y,
-                const SlipLaw* wall) {
-  const double G = channel.pressure_gradient;
-  return slip_velocity(wall, wall_stress(channel)) + (law.rate_integral(wall_stress(channel)) - law.rate_integral(G * std::abs(y))) / G;
+double velocity(LawRef law, const PlaneChannel& channel, double y, const SlipLaw* wall) {
+  const double G = channel.pressure_gradient, tau_w = wall_stress(channel);
+  return slip_velocity(wall, tau_w) + rate_moment(*law, 0, G * std::abs(y), tau_w) / G;
 }
 
 double flow_rate(const RegularisedLaw& law, const PlaneChannel& channel) {

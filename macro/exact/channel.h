@@ -1,5 +1,5 @@
-// Plane Poiseuille flow: the exact solution for a Herschel–Bulkley material
-// and, by quadrature, for its regularisations.
+// Plane Poiseuille flow: the exact solution for any shear law and for its
+// regularisations, by quadrature of the inverse flow curve.
 //
 // Walls at y = ±H, driven by G = −dp/dx > 0. The x-momentum balance
 // dτ_xy/dy = −G with symmetry about the axis gives the shear stress
@@ -9,12 +9,13 @@
 //
 //     u(y) = ∫_{|y|}^{H} γ̇(G s) ds = [Φ(τ_w) − Φ(G|y|)] / G,    Φ(τ) = ∫₀^τ γ̇,
 //
-// (HerschelBulkley::rate_integral), flat in the plug. Integrating by parts, the
+// flat in the plug. Integrating by parts, the
 // flow rate per unit width through the whole channel is
 //
 //     Q = 2 ∫₀^H u dy = 2 ∫₀^H y γ̇(G y) dy = (2/G²) ∫₀^{τ_w} τ γ̇(τ) dτ,
 //
-// which for Herschel–Bulkley, with φ = τ_y/τ_w < 1, is (macro.md)
+// both evaluated by quadrature (rate_moment.h). For Herschel–Bulkley, with
+// φ = τ_y/τ_w < 1, that is (macro.md; the tests)
 //
 //     Q = 2H² (τ_w/K)^{1/n} n (1−φ)^{(n+1)/n} [(1−φ)/(2n+1) + φ/(n+1)],
 //
@@ -38,7 +39,7 @@
 // at its discretisation order, and that to the above as ε → 0 (at O(ε)).
 #pragma once
 
-#include "macro/material/herschel_bulkley.h"
+#include "macro/exact/law_ref.h"
 #include "macro/material/regularised_law.h"
 #include "macro/material/slip_law.h"
 
@@ -53,15 +54,15 @@ struct PlaneChannel {
 double wall_stress(const PlaneChannel& channel);
 
 /// y0 = min(τ_y/G, H) [m]: the plug is |y| ≤ y0.
-double plug_half_width(const HerschelBulkley& law, const PlaneChannel& channel);
+double plug_half_width(LawRef law, const PlaneChannel& channel);
 
-/// Q [m²/s], the flow rate per unit width (spanwise), closed form; both walls
-/// slip by `wall` (null: no slip).
-double flow_rate(const HerschelBulkley& law, const PlaneChannel& channel,
+/// Q [m²/s], the flow rate per unit width (spanwise); both walls slip by
+/// `wall` (null: no slip).
+double flow_rate(LawRef law, const PlaneChannel& channel,
                  const SlipLaw* wall = nullptr);
 
-/// u(y) [m/s] for |y| ≤ H, closed form; both walls slip by `wall` (null: no slip).
-double velocity(const HerschelBulkley& law, const PlaneChannel& channel, double y,
+/// u(y) [m/s] for |y| ≤ H; both walls slip by `wall` (null: no slip).
+double velocity(LawRef law, const PlaneChannel& channel, double y,
                 const SlipLaw* wall = nullptr);
 
 /// Q [m²/s] of the regularised problem (quadrature, numerics/quadrature.h).

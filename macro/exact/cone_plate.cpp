@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "macro/numerics/quadrature.h"
 #include "macro/numerics/root_finding.h"
@@ -20,34 +21,40 @@ double torque_at_plate_stress(const ConePlate& cone, double tau_p) {
 
 }  // namespace
 
-double yield_angle(const HerschelBulkley& law, const ConePlate& cone, double torque) {
+double yield_angle(LawRef law, const ConePlate& cone, double torque) {
   const double tau_p = plate_stress(cone, torque);
-  return tau_p >= law.yield_stress ? 0.0 : std::acos(std::sqrt(tau_p / law.yield_stress));
+  return tau_p >= law->yield_stress() ? 0.0 : std::acos(std::sqrt(tau_p / law->yield_stress()));
 }
 
-double angular_velocity(const HerschelBulkley& law, const ConePlate& cone, double torque,
+double angular_velocity(LawRef law, const ConePlate& cone, double torque,
                         double psi) {
   const double tau_p = plate_stress(cone, torque), psi_y = yield_angle(law, cone, torque);
   if (psi <= psi_y) return 0.0;
+  // τ = τ_p/cos²ψ passes the law's breakpoints τ_y + Δ_i at ψ_i = acos √(τ_p/τ_i).
+  std::vector<double> cuts;
+  for (const double excess : law->excess_breakpoints()) {
+    const double tau = law->yield_stress() + excess;
+    if (tau > tau_p) cuts.push_back(std::acos(std::sqrt(tau_p / tau)));
+  }
   return numerics::integrate(
       [&](double p) {
         const double c = std::cos(p);
-        return law.rate(tau_p / (c * c)) / c;
+        return law->rate(tau_p / (c * c)) / c;
       },
-      psi_y, psi);
+      psi_y, psi, cuts);
 }
 
-double rotation_rate(const HerschelBulkley& law, const ConePlate& cone, double torque) {
+double rotation_rate(LawRef law, const ConePlate& cone, double torque) {
   return angular_velocity(law, cone, torque, cone.angle);
 }
 
-double torque(const HerschelBulkley& law, const ConePlate& cone, double rotation_rate) {
+double torque(LawRef law, const ConePlate& cone, double rotation_rate) {
   const double beta = cone.angle, cos_beta = std::cos(beta);
   if (rotation_rate <= 0.0) {
-    return torque_at_plate_stress(cone, law.yield_stress * cos_beta * cos_beta);
+    return torque_at_plate_stress(cone, law->yield_stress() * cos_beta * cos_beta);
   }
-  const double lo = cos_beta * cos_beta * law.stress(rotation_rate * cos_beta / beta);
-  const double hi = law.stress(rotation_rate / beta);
+  const double lo = cos_beta * cos_beta * law->stress(rotation_rate * cos_beta / beta);
+  const double hi = law->stress(rotation_rate / beta);
   const double tau_p = numerics::solve_increasing(
       [&](double tau) {
         return exact::rotation_rate(law, cone, torque_at_plate_stress(cone, tau)) - rotation_rate;
@@ -56,13 +63,13 @@ double torque(const HerschelBulkley& law, const ConePlate& cone, double rotation
   return torque_at_plate_stress(cone, tau_p);
 }
 
-double small_angle_torque(const HerschelBulkley& law, const ConePlate& cone,
+double small_angle_torque(LawRef law, const ConePlate& cone,
                           double rotation_rate) {
-  return torque_at_plate_stress(cone, law.stress(rotation_rate / cone.angle));
+  return torque_at_plate_stress(cone, law->stress(rotation_rate / cone.angle));
 }
 
-double normal_force(const NormalStressLaw& n1, const ConePlate& cone, double rotation_rate) {
-  return 0.5 * std::numbers::pi * cone.radius * cone.radius * n1(rotation_rate / cone.angle);
+double normal_force(const NormalStressCurve& n1, const ConePlate& cone, double rotation_rate) {
+  return 0.5 * std::numbers::pi * cone.radius * cone.radius * n1.value(rotation_rate / cone.angle);
 }
 
 }  // namespace softglass::macro::exact

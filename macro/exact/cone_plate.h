@@ -33,8 +33,8 @@
 // so τ_p = cos²β τ(Ω cos β/β) gives Ω(τ_p) ≤ Ω and τ_p = τ(Ω/β) gives Ω(τ_p) ≥ Ω.
 #pragma once
 
-#include "macro/material/herschel_bulkley.h"
-#include "macro/material/material.h"
+#include "macro/exact/law_ref.h"
+#include "macro/material/normal_stress.h"
 
 namespace softglass::macro::exact {
 
@@ -45,24 +45,24 @@ struct ConePlate {
 
 /// ψ_y [rad]: the material rests on the plate for ψ < ψ_y (0 if τ_p ≥ τ_y); no
 /// flow at all if ψ_y ≥ β.
-double yield_angle(const HerschelBulkley& law, const ConePlate& cone, double torque);
+double yield_angle(LawRef law, const ConePlate& cone, double torque);
 
 /// ω(ψ) [rad/s] for 0 ≤ ψ ≤ β under torque T [N m], exact.
-double angular_velocity(const HerschelBulkley& law, const ConePlate& cone, double torque,
+double angular_velocity(LawRef law, const ConePlate& cone, double torque,
                         double psi);
 
 /// Ω = ω(β) [rad/s] under torque T [N m], exact.
-double rotation_rate(const HerschelBulkley& law, const ConePlate& cone, double torque);
+double rotation_rate(LawRef law, const ConePlate& cone, double torque);
 
 /// T [N m] at Ω ≥ 0 [rad/s], exact, the inverse of rotation_rate (~1e-13
 /// relative); at Ω = 0 the limit Ω → 0⁺, 2πR³τ_y cos²β/3.
-double torque(const HerschelBulkley& law, const ConePlate& cone, double rotation_rate);
+double torque(LawRef law, const ConePlate& cone, double rotation_rate);
 
 /// T = (2πR³/3) τ(Ω/β) [N m], the small-angle approximation.
-double small_angle_torque(const HerschelBulkley& law, const ConePlate& cone,
+double small_angle_torque(LawRef law, const ConePlate& cone,
                           double rotation_rate);
 
 /// F = πR² N1(Ω/β)/2 [N], the small-angle normal force on the plate.
-double normal_force(const NormalStressLaw& n1, const ConePlate& cone, double rotation_rate);
+double normal_force(const NormalStressCurve& n1, const ConePlate& cone, double rotation_rate);
 
 }  // namespace softglass::macro::exact

@@ -51,7 +51,7 @@
 // the slip terms being positive.
 #pragma once
 
-#include "macro/material/herschel_bulkley.h"
+#include "macro/exact/law_ref.h"
 #include "macro/material/slip_law.h"
 
 namespace softglass::macro::exact {
@@ -72,22 +72,22 @@ struct CouetteWalls {
 double shear_stress(const CouetteCell& cell, double torque, double r);
 
 /// R_c = √(T/(2π L τ_y)) [m], +inf for τ_y = 0. Compare with R1 and R2.
-double yield_radius(const HerschelBulkley& law, const CouetteCell& cell, double torque);
+double yield_radius(LawRef law, const CouetteCell& cell, double torque);
 
 /// ω(r) = v_θ/r [rad/s] of the material at R1 ≤ r ≤ R2 under torque T [N m].
-double angular_velocity(const HerschelBulkley& law, const CouetteCell& cell, double torque,
+double angular_velocity(LawRef law, const CouetteCell& cell, double torque,
                         double r, const CouetteWalls& walls = {});
 
 /// Ω [rad/s], the bob's, under torque T [N m]; without slip 0 below the static
 /// yield torque.
-double rotation_rate(const HerschelBulkley& law, const CouetteCell& cell, double torque,
+double rotation_rate(LawRef law, const CouetteCell& cell, double torque,
                      const CouetteWalls& walls = {});
 
 /// T [N m] at rotation rate Ω ≥ 0 [rad/s], the inverse of rotation_rate to
 /// ~1e-13 relative; at Ω = 0 the limit Ω → 0⁺: the static yield torque
 /// 2π L R1² τ_y without slip, the smaller of it and the torques at which
 /// the walls begin to slip (their slip yield stresses) with slip.
-double torque(const HerschelBulkley& law, const CouetteCell& cell, double rotation_rate,
+double torque(LawRef law, const CouetteCell& cell, double rotation_rate,
               const CouetteWalls& walls = {});
 
 }  // namespace softglass::macro::exact

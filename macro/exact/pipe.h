@@ -24,7 +24,7 @@
 // profile by the uniform V_s(τ_w): Q = Q_no-slip + πR² V_s(GR/2).
 #pragma once
 
-#include "macro/material/herschel_bulkley.h"
+#include "macro/exact/law_ref.h"
 #include "macro/material/regularised_law.h"
 #include "macro/material/slip_law.h"
 
@@ -39,13 +39,13 @@ struct Pipe {
 double wall_stress(const Pipe& pipe);
 
 /// r0 = min(2τ_y/G, R) [m]: the plug is r ≤ r0.
-double plug_radius(const HerschelBulkley& law, const Pipe& pipe);
+double plug_radius(LawRef law, const Pipe& pipe);
 
-/// Q [m³/s], closed form; the wall slips by `wall` (null: no slip).
-double flow_rate(const HerschelBulkley& law, const Pipe& pipe, const SlipLaw* wall = nullptr);
+/// Q [m³/s]; the wall slips by `wall` (null: no slip).
+double flow_rate(LawRef law, const Pipe& pipe, const SlipLaw* wall = nullptr);
 
-/// w(r) [m/s] for 0 ≤ r ≤ R, closed form.
-double velocity(const HerschelBulkley& law, const Pipe& pipe, double r);
+/// w(r) [m/s] for 0 ≤ r ≤ R.
+double velocity(LawRef law, const Pipe& pipe, double r);
 
 /// Q [m³/s] of the regularised problem (quadrature, numerics/quadrature.h).
 double flow_rate(const RegularisedLaw& law, const Pipe& pipe);

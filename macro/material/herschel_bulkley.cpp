@@ -26,13 +26,6 @@ double HerschelBulkley::viscosity(double rate) const {
   return plastic + consistency * std::pow(rate, flow_index - 1.0);
 }
 
-double HerschelBulkley::rate_integral(double stress) const {
-  if (stress <= yield_stress) return 0.0;
-  const double n = flow_index;
-  return n / (n + 1.0) * std::pow(consistency, -1.0 / n) *
-         std::pow(stress - yield_stress, (n + 1.0) / n);
-}
-
 double HerschelBulkley::proximal_rate(double trial_stress, double penalty) const {
   const double excess = trial_stress - yield_stress;
   if (excess <= 0.0) return 0.0;

@@ -51,11 +51,6 @@ struct HerschelBulkley {
   /// regularised law (regularised_law.h) or an augmented Lagrangian.
   double viscosity(double rate) const;
 
-  /// Φ(τ) = ∫₀^τ γ̇(s) ds = n/(n+1) K^{−1/n} (τ − τ_y)^{(n+1)/n} for τ > τ_y, 0
-  /// below: the complementary dissipation potential (dΦ/dτ = γ̇). Velocity
-  /// profiles of pressure-driven flows are differences of Φ (exact/channel.h).
-  double rate_integral(double stress) const;
-
   /// The local step of augmented-Lagrangian (ALG2-type) solvers: the rate s ≥ 0
   /// minimising φ(s) + ½ r s² − χ s, φ(s) = τ_y s + K s^{n+1}/(n+1) the
   /// dissipation potential, for a trial stress χ ≥ 0 and penalty r ≥ 0. That is

@@ -1,8 +1,7 @@
 // Herschel–Bulkley (herschel_bulkley.h) as the solvers' constitutive law
-// (shear_law.h). Its viscous part K γ̇^{n−1} is unbounded at rest for n < 1
-// (and vanishes there for n > 1, leaving the problem singular), so it is
-// regularised with the same ε as the yield term: K (γ̇² + ε²)^{(n−1)/2},
-// exactly K for n = 1.
+// (shear_law.h): Δ(γ̇) = K γ̇ⁿ, a local flow index n at every rate.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <memory>
 
@@ -17,20 +16,24 @@ class HerschelBulkleyLaw final : public ShearLaw {
   explicit HerschelBulkleyLaw(const HerschelBulkley& law) : law_(law) {}
 
   std::string name() const override { return "herschel-bulkley"; }
+  std::string description() const override {
+    return fmt::format("tau_y = {} Pa, K = {} Pa s^n, n = {}", law_.yield_stress,
+                       law_.consistency, law_.flow_index);
+  }
   double yield_stress() const override { return law_.yield_stress; }
   double stress(double rate) const override { return law_.stress(rate); }
+  double excess_stress(double rate) const override {
+    return law_.consistency * std::pow(rate, law_.flow_index);
+  }
+  double rate_at_excess(double excess) const override { return law_.rate_at_excess(excess); }
+  double local_flow_index(double) const override { return law_.flow_index; }
+  std::pair<double, double> flow_index_range() const override {
+    return {law_.flow_index, law_.flow_index};
+  }
   double viscosity(double rate) const override { return law_.viscosity(rate); }
   double rate(double stress) const override { return law_.rate(stress); }
   double proximal_rate(double trial_stress, double penalty) const override {
     return law_.proximal_rate(trial_stress, penalty);
-  }
-
-  // K s^{(n−1)/2}, s = γ̇² + ε², and its γ̇-derivative K (n−1) γ̇ s^{(n−3)/2}.
-  Viscosity regularised_flow_viscosity(double rate, double rate_scale) const override {
-    const double n = law_.flow_index;
-    const double s = rate * rate + rate_scale * rate_scale;
-    const double power = law_.consistency * std::pow(s, 0.5 * (n - 1.0));
-    return {.value = power, .derivative = (n - 1.0) * rate * power / s};
   }
 
  private:

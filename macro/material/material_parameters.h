@@ -5,10 +5,12 @@
 // declare_material() among its own declarations, parses, and calls
 // read_material(). Standalone fragments are read by read_material_file().
 //
-// `model`, `yield stress`, `consistency` and `flow index` must be set (also for
-// newtonian, where they read 0 and 1: a file states its law in full); the N1
-// and N2 entries default to zero (N_y = K_N = 0, n_N = 1). Every rule of
-// validate() (material.h) is then enforced. All problems raise InputError
+// `model`, `yield stress` and the entries the model requires must be set
+// (material_model.h; herschel-bulkley and its restrictions: `consistency` and
+// `flow index`, also for newtonian, where they read 0 and 1: a file states its
+// law in full; tabulated: `rates` and `stresses`); the N1 and N2 entries
+// default to zero. The model then enforces its rules (material.h,
+// tabulated_law.h). All problems raise InputError
 // (exit code 2) with one line naming the entry, its value and what is allowed.
 #pragma once
 
@@ -32,9 +34,10 @@ void declare_material(dealii::ParameterHandler& prm);
 /// The material parsed into `prm` (declared by declare_material), validated.
 Material read_material(dealii::ParameterHandler& prm);
 
-/// Writes every entry of `subsection material` from `material`, so that `prm`
-/// states the material actually used (a command line's --material).
-void set_material(dealii::ParameterHandler& prm, const Material& material);
+/// Sets the `subsection material` entries among `entries` (those of a
+/// fragment file) in `prm`, so that `prm` states the material actually used (a
+/// command line's --material).
+void set_material(dealii::ParameterHandler& prm, const std::vector<SetEntry>& entries);
 
 /// Parses fragment text; `source` names it in messages.
 Material parse_material(const std::string& text, const std::string& source);

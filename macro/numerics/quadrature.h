@@ -12,6 +12,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 namespace softglass::macro::numerics {
 
@@ -27,5 +28,11 @@ inline constexpr double kQuadratureTolerance = 1e-10;
 /// within 15 refinement levels (then f has a kink or a jump inside: split the
 /// interval there).
 double integrate(const std::function<double(double)>& f, double a, double b);
+
+/// The same, split at the `cuts` that lie inside (a, b) (any order): the points
+/// where f is only finitely smooth, such as the nodes of a tabulated law, so
+/// that each piece is analytic inside and keeps the exponential convergence.
+double integrate(const std::function<double(double)>& f, double a, double b,
+                 std::vector<double> cuts);
 
 }  // namespace softglass::macro::numerics

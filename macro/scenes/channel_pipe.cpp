@@ -59,7 +59,7 @@ std::unique_ptr<Scene> make_channel(ParameterHandler& prm, const Material& mater
   const fe::WallSlip slip = read_slip_walls(prm, "channel", kChannelWalls, H);
   dealii::Triangulation<1> mesh;
   meshes::interval(mesh, 0.0, H, cells);
-  const HerschelBulkley law = material.shear;
+  const std::shared_ptr<const ShearLaw> law = material.shear;
   ReducedSceneSpec<1> spec;
   spec.description = fmt::format(
       "plane channel, half height {} m: u_x(y) on [0, H], symmetry at y = 0, "
@@ -70,10 +70,10 @@ std::unique_ptr<Scene> make_channel(ParameterHandler& prm, const Material& mater
   spec.drive = [law, H](double G) {
     return fe::Drive{.source = G,
                      .boundary_values = {{1, 0.0}},
-                     .characteristic_rate = pressure_rate_scale(law, G * H)};
+                     .characteristic_rate = pressure_rate_scale(*law, G * H)};
   };
   spec.reference = [law, H, slip](double G) {
-    return exact::flow_rate(law, exact::PlaneChannel{.half_height = H, .pressure_gradient = G},
+    return exact::flow_rate(*law, exact::PlaneChannel{.half_height = H, .pressure_gradient = G},
                             slip.law.get());
   };
   spec.slip = slip;
@@ -89,7 +89,7 @@ std::unique_ptr<Scene> make_pipe(ParameterHandler& prm, const Material& material
   const fe::WallSlip slip = read_slip_walls(prm, "pipe", kPipeWall, R);
   dealii::Triangulation<1> mesh;
   meshes::interval(mesh, 0.0, R, cells);
-  const HerschelBulkley law = material.shear;
+  const std::shared_ptr<const ShearLaw> law = material.shear;
   ReducedSceneSpec<1> spec;
   spec.description =
       fmt::format("pipe, radius {} m: u_z(r) on [0, R] (axisymmetric), {} at r = R{}", R,
@@ -99,10 +99,10 @@ std::unique_ptr<Scene> make_pipe(ParameterHandler& prm, const Material& material
   spec.drive = [law, R](double G) {
     return fe::Drive{.source = G,
                      .boundary_values = {{1, 0.0}},
-                     .characteristic_rate = pressure_rate_scale(law, 0.5 * G * R)};
+                     .characteristic_rate = pressure_rate_scale(*law, 0.5 * G * R)};
   };
   spec.reference = [law, R, slip](double G) {
-    return exact::flow_rate(law, exact::Pipe{.radius = R, .pressure_gradient = G},
+    return exact::flow_rate(*law, exact::Pipe{.radius = R, .pressure_gradient = G},
                             slip.law.get());
   };
   spec.slip = slip;

@@ -96,8 +96,8 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
 
   dealii::Triangulation<2> mesh;
   meshes::cone_plate(mesh, R, beta, h_t, spherical, fill, radial, gap);
-  const HerschelBulkley law = material.shear;
-  const NormalStressLaw n1 = material.first_normal_stress_difference;
+  const std::shared_ptr<const ShearLaw> law = material.shear;
+  const auto n1 = material.first_normal_stress_difference;
   const exact::ConePlate cone{.radius = R, .angle = beta};
   ReducedSceneSpec<2> spec;
   const std::string sample =
@@ -118,10 +118,11 @@ std::unique_ptr<Scene> make_cone_plate(ParameterHandler& prm, const Material& ma
                      .boundary_values = {{3, omega}, {2, 0.0}},
                      .characteristic_rate = omega / std::tan(beta)};
   };
-  if (!n1.vanishes()) {
-    spec.normal_force = {.id = 2, .integrand = [n1](double rate) { return 0.5 * n1(rate); }};
+  if (!n1->vanishes()) {
+    spec.normal_force = {.id = 2,
+                         .integrand = [n1](double rate) { return 0.5 * n1->value(rate); }};
   }
-  spec.reference = [law, cone](double omega) { return exact::torque(law, cone, omega); };
+  spec.reference = [law, cone](double omega) { return exact::torque(*law, cone, omega); };
   spec.slip = slip;
   // The cone's uniform rate Ω/β and the stress 3M/(2πR³) of a small angle.
   spec.instrument =

@@ -64,7 +64,7 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   prm.leave_subsection();
   const fe::WallSlip slip = read_slip_walls(prm, "couette", kWalls, R2 - R1);
 
-  const HerschelBulkley law = material.shear;
+  const std::shared_ptr<const ShearLaw> law = material.shear;
   const exact::CouetteCell cell{.inner_radius = R1, .outer_radius = R2, .length = L};
   const auto slips = [&slip](dealii::types::boundary_id id) {
     return slip.walls.count(id) > 0 ? slip.law.get() : nullptr;
@@ -74,7 +74,7 @@ std::unique_ptr<Scene> make_couette(ParameterHandler& prm, const Material& mater
   const double rate_factor = 2.0 * R2 * R2 / (R2 * R2 - R1 * R1);
   // The closed form holds the slip law by pointer; the lambda keeps it alive.
   const auto reference = [law, cell, walls, keep = slip.law](double omega) {
-    return exact::torque(law, cell, omega, walls);
+    return exact::torque(*law, cell, omega, walls);
   };
   // ISO 3219: the representative rate and stress of a narrow gap, at the
   // radius whose square is the mean of R1² and R2² (no end correction).

@@ -41,7 +41,7 @@ std::unique_ptr<Scene> make_duct(ParameterHandler& prm, const Material& material
   const std::string section = prm.get("section");
   dealii::Triangulation<2> mesh;
   ReducedSceneSpec<2> spec;
-  const HerschelBulkley law = material.shear;
+  const std::shared_ptr<const ShearLaw> law = material.shear;
   if (section == "rectangle") {
     const double a = entries::positive(prm, "duct", "width", "m");
     const double b = entries::positive(prm, "duct", "height", "m");
@@ -56,7 +56,7 @@ std::unique_ptr<Scene> make_duct(ParameterHandler& prm, const Material& material
     spec.mapping_degree = 2;
     spec.description = fmt::format("duct, circular section of radius {} m (Mosolov problem)", R);
     spec.reference = [law, R](double G) {
-      return exact::flow_rate(law, exact::Pipe{.radius = R, .pressure_gradient = G});
+      return exact::flow_rate(*law, exact::Pipe{.radius = R, .pressure_gradient = G});
     };
   } else {
     std::filesystem::path file = prm.get("mesh file");
@@ -79,7 +79,7 @@ std::unique_ptr<Scene> make_duct(ParameterHandler& prm, const Material& material
   spec.drive = [law, hydraulic](double G) {
     return fe::Drive{.source = G,
                      .boundary_values = {{0, 0.0}},
-                     .characteristic_rate = pressure_rate_scale(law, G * hydraulic)};
+                     .characteristic_rate = pressure_rate_scale(*law, G * hydraulic)};
   };
   return make_reduced_scene(mesh, std::move(spec), law, settings);
 }

@@ -48,7 +48,7 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Materia
   const fe::WallSlip slip = read_slip_walls(prm, "parallel-plates", kWalls, h);
   dealii::Triangulation<2> mesh;
   meshes::rectangle(mesh, 0.0, R, 0.0, h, radial, gap);
-  const HerschelBulkley law = material.shear;
+  const std::shared_ptr<const ShearLaw> law = material.shear;
   const exact::ParallelPlates plates{.radius = R, .gap = h};
   ReducedSceneSpec<2> spec;
   spec.description = fmt::format(
@@ -63,14 +63,15 @@ std::unique_ptr<Scene> make_parallel_plates(ParameterHandler& prm, const Materia
                      .boundary_values = {{3, omega}, {2, 0.0}},
                      .characteristic_rate = omega * R / h};
   };
-  spec.reference = [law, plates](double omega) { return exact::torque(law, plates, omega); };
+  spec.reference = [law, plates](double omega) { return exact::torque(*law, plates, omega); };
   spec.slip = slip;
   // F = π ∫ (N1 − N2)(γ̇) r dr (exact/parallel_plates.h): ½(N1 − N2) over the plate.
-  const NormalStressLaw n1 = material.first_normal_stress_difference;
-  const NormalStressLaw n2 = material.second_normal_stress_difference;
-  if (!n1.vanishes() || !n2.vanishes()) {
-    spec.normal_force = {
-        .id = 2, .integrand = [n1, n2](double rate) { return 0.5 * (n1(rate) - n2(rate)); }};
+  const auto n1 = material.first_normal_stress_difference;
+  const auto n2 = material.second_normal_stress_difference;
+  if (!n1->vanishes() || !n2->vanishes()) {
+    spec.normal_force = {.id = 2, .integrand = [n1, n2](double rate) {
+                           return 0.5 * (n1->value(rate) - n2->value(rate));
+                         }};
   }
   // The rim rate ΩR/h and the Newtonian (apparent) rim stress 2M/(πR³).
   spec.instrument = InstrumentConstants{

@@ -22,10 +22,10 @@ template <int dim>
 class ReducedScene final : public Scene {
  public:
   ReducedScene(const dealii::Triangulation<dim>& mesh, ReducedSceneSpec<dim> spec,
-               const HerschelBulkley& law, const fe::SolverSettings& settings)
+               std::shared_ptr<const ShearLaw> law, const fe::SolverSettings& settings)
       : spec_(std::move(spec)),
         extent_(body_extent(mesh, spec_.weights)),
-        solver_(mesh, spec_.mapping_degree, spec_.weights, shear_law(law), spec_.slip, settings) {}
+        solver_(mesh, spec_.mapping_degree, spec_.weights, std::move(law), spec_.slip, settings) {}
 
   std::string description() const override { return spec_.description; }
 
@@ -101,21 +101,21 @@ class ReducedScene final : public Scene {
 
 template <int dim>
 std::unique_ptr<Scene> make_reduced_scene(const dealii::Triangulation<dim>& mesh,
-                                          ReducedSceneSpec<dim> spec, const HerschelBulkley& law,
+                                          ReducedSceneSpec<dim> spec, std::shared_ptr<const ShearLaw> law,
                                           const fe::SolverSettings& settings) {
-  return std::make_unique<ReducedScene<dim>>(mesh, std::move(spec), law, settings);
+  return std::make_unique<ReducedScene<dim>>(mesh, std::move(spec), std::move(law), settings);
 }
 
 template std::unique_ptr<Scene> make_reduced_scene(const dealii::Triangulation<1>&,
-                                                   ReducedSceneSpec<1>, const HerschelBulkley&,
+                                                   ReducedSceneSpec<1>, std::shared_ptr<const ShearLaw>,
                                                    const fe::SolverSettings&);
 template std::unique_ptr<Scene> make_reduced_scene(const dealii::Triangulation<2>&,
-                                                   ReducedSceneSpec<2>, const HerschelBulkley&,
+                                                   ReducedSceneSpec<2>, std::shared_ptr<const ShearLaw>,
                                                    const fe::SolverSettings&);
 
-double pressure_rate_scale(const HerschelBulkley& law, double wall_stress) {
+double pressure_rate_scale(const ShearLaw& law, double wall_stress) {
   const double rate = law.rate(wall_stress);
-  return rate > 0.0 ? rate : law.rate(law.yield_stress + 0.1 * wall_stress);
+  return rate > 0.0 ? rate : law.rate_at_excess(0.1 * wall_stress);
 }
 
 }  // namespace softglass::macro

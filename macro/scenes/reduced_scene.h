@@ -41,12 +41,12 @@ struct ReducedSceneSpec {
 /// Builds the scene; `mesh` is copied by the solver.
 template <int dim>
 std::unique_ptr<Scene> make_reduced_scene(const dealii::Triangulation<dim>& mesh,
-                                          ReducedSceneSpec<dim> spec, const HerschelBulkley& law,
+                                          ReducedSceneSpec<dim> spec, std::shared_ptr<const ShearLaw> law,
                                           const fe::SolverSettings& settings);
 
 /// The shear rate that sets ε in pressure-driven flow at characteristic wall
 /// stress τ_c: the law's rate at τ_c, or (below the yield stress, where the
 /// material may not flow at all) at τ_y + 0.1 τ_c.
-double pressure_rate_scale(const HerschelBulkley& law, double wall_stress);
+double pressure_rate_scale(const ShearLaw& law, double wall_stress);
 
 }  // namespace softglass::macro

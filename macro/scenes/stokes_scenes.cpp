@@ -99,9 +99,9 @@ double drag(const fe::StokesOutputs& o) {
 // with it (characteristic_rate is what the input check sees).
 class StokesScene : public Scene {
  public:
-  StokesScene(const dealii::Triangulation<2>& mesh, const HerschelBulkley& law,
+  StokesScene(const dealii::Triangulation<2>& mesh, std::shared_ptr<const ShearLaw> law,
               const fe::SolverSettings& settings)
-      : solver_(mesh, shear_law(law), settings), extent_(meshes::extent(mesh)) {
+      : solver_(mesh, std::move(law), settings), extent_(meshes::extent(mesh)) {
     extent_.relative_cost = kStokesRelativeCost;
   }
   MeshExtent mesh_extent() const override { return extent_; }
@@ -116,7 +116,7 @@ class StokesScene : public Scene {
 
 class Cavity final : public StokesScene {
  public:
-  Cavity(double side, unsigned cells, const HerschelBulkley& law,
+  Cavity(double side, unsigned cells, std::shared_ptr<const ShearLaw> law,
          const fe::SolverSettings& settings)
       : StokesScene(mesh(side, cells), law, settings), side_(side), centreline_(centreline(side)) {}
 
@@ -174,7 +174,7 @@ class Cavity final : public StokesScene {
 
 class Obstacle final : public StokesScene {
  public:
-  Obstacle(double diameter, const HerschelBulkley& law, const fe::SolverSettings& settings)
+  Obstacle(double diameter, std::shared_ptr<const ShearLaw> law, const fe::SolverSettings& settings)
       : StokesScene(mesh(diameter), law, settings), diameter_(diameter), height_(4.1 * diameter) {}
 
   std::string description() const override {
@@ -225,12 +225,12 @@ class Obstacle final : public StokesScene {
 
 class Cylinder final : public StokesScene {
  public:
-  Cylinder(double diameter, double box, const HerschelBulkley& law,
+  Cylinder(double diameter, double box, std::shared_ptr<const ShearLaw> law,
            const fe::SolverSettings& settings)
       : StokesScene(mesh(diameter, box), law, settings),
         diameter_(diameter),
         box_(box),
-        viscosity_(law.consistency) {}
+        viscosity_(law->excess_stress(1.0)) {}
 
   std::string description() const override {
     return fmt::format(
@@ -274,12 +274,13 @@ class Cylinder final : public StokesScene {
     return t;
   }
 
-  double diameter_, box_, viscosity_;
+  double diameter_, box_;
+  double viscosity_;  ///< K = Δ(1 1/s), the consistency of a Herschel–Bulkley law
 };
 
 class Contraction final : public StokesScene {
  public:
-  Contraction(double height, unsigned ratio, const HerschelBulkley& law,
+  Contraction(double height, unsigned ratio, std::shared_ptr<const ShearLaw> law,
               const fe::SolverSettings& settings)
       : StokesScene(mesh(height, ratio), law, settings), h_(height), ratio_(ratio) {}
 

@@ -91,7 +91,7 @@ TEST(Channel, BinghamPowerLawAndNewtonianLimits) {
 TEST(Channel, VanishingYieldStressGivesThePowerLaw) {
   const double power = flow_rate(power_law(5.0, 0.5), kChannel);
   for (double tau_y : {1e-3, 1e-6, 1e-9}) {
-    const double q = flow_rate({tau_y, 5.0, 0.5}, kChannel);
+    const double q = flow_rate(HerschelBulkley{tau_y, 5.0, 0.5}, kChannel);
     EXPECT_LT(relative_error(q, power), 10.0 * tau_y / wall_stress(kChannel)) << tau_y;
   }
 }

@@ -55,7 +55,7 @@ class MacroCompare : public ::testing::Test {
     for (double omega : {0.003, 0.03, 0.3, 1.0, 3.0, 10.0}) {
       data << fmt::format("{:.12g},{:.12g},{:.12g},25\n", omega * 60 / (2 * std::numbers::pi),
                           1e3 * exact::torque(kLaw, cone, omega),
-                          exact::normal_force(kN1, cone, omega) / 9.80665e-3);
+                          exact::normal_force(*normal_stress_curve(kN1), cone, omega) / 9.80665e-3);
     }
     write_text(dir_.path() / "measured.csv", data.str());
   }

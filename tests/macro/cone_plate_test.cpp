@@ -153,7 +153,7 @@ TEST(ConePlate, NormalForceFromN1) {
   const NormalStressLaw n1{.yield = 2.0, .consistency = 0.9, .flow_index = 0.5};
   const ConePlate c = cone(2.0);
   const double omega = 4.0 * c.angle;  // γ̇ = 4/s, N1 = 2 + 0.9·2 = 3.8 Pa
-  EXPECT_DOUBLE_EQ(normal_force(n1, c, omega), std::numbers::pi * 0.025 * 0.025 * 3.8 / 2.0);
+  EXPECT_DOUBLE_EQ(normal_force(*normal_stress_curve(n1), c, omega), std::numbers::pi * 0.025 * 0.025 * 3.8 / 2.0);
 }
 
 }  // namespace

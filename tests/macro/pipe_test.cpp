@@ -79,7 +79,7 @@ TEST(Pipe, BuckinghamReinerPowerLawAndHagenPoiseuille) {
 TEST(Pipe, VanishingYieldStressGivesThePowerLaw) {
   const double power = flow_rate(power_law(5.0, 0.5), kPipe);
   for (double tau_y : {1e-3, 1e-6, 1e-9}) {
-    EXPECT_LT(relative_error(flow_rate({tau_y, 5.0, 0.5}, kPipe), power),
+    EXPECT_LT(relative_error(flow_rate(HerschelBulkley{tau_y, 5.0, 0.5}, kPipe), power),
               10.0 * tau_y / wall_stress(kPipe))
         << tau_y;
   }
