@@ -13,6 +13,7 @@
 #include "bridge/law/crossover_estimate.h"
 #include "bridge/law/law.h"
 #include "bridge/material/material.h"
+#include "bridge/material/tabulated_material.h"
 #include "bridge/output/tables.h"
 #include "bridge/rescale/law_yield_strain.h"
 #include "bridge/sweep/analysis.h"
@@ -120,11 +121,28 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
   std::optional<AtomicOutput> out;
   if (!o.output.empty()) out.emplace(o.output, o.force);
   const Law law = read_law_file(o.law);
-  std::vector<std::string> lines = provenance(
-      "softglass bridge material: a Herschel-Bulkley material from a law file", command_line);
+  std::vector<std::string> lines =
+      provenance(o.tabulated
+                     ? "softglass bridge material: the simulated flow curve, tabulated, from a law "
+                       "file"
+                     : "softglass bridge material: a Herschel-Bulkley material from a law file",
+                 command_line);
   lines.push_back("law:      " + o.law.string());
   MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
   request.modulus = contact_modulus(o.source, law, o.phi, o.extrapolate, lines);
+  if (o.tabulated) {
+    const TabulatedMaterial table =
+        make_tabulated_material(law, read_simulated_curves(o.law, law), request);
+    const std::string text = tabulated_material_text(table, lines);
+    if (!out) {
+      fmt::print("{}", text);
+      return;
+    }
+    write(*out, text);
+    out->commit();
+    fmt::print("written  {}\n", out->final_path().string());
+    return;
+  }
   const Material material = make_material(law, request);
   std::optional<AmplitudeSweepPrediction> sweep;
   std::vector<std::string> frequency_lines;

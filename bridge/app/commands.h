@@ -50,6 +50,9 @@ struct MaterialOptions {
   /// against the one the law's holds at for this E* and η_s (ω̃ E*/η_s).
   std::optional<double> frequency;
   bool extrapolate = false, force = false;
+  /// The simulated flow curve itself (tabulated_material.h) instead of the
+  /// Herschel–Bulkley summary.
+  bool tabulated = false;
 };
 
 /// Writes the material fragment for (φ, E*, η_s) from a law file. With a

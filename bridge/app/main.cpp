@@ -154,6 +154,10 @@ int main(int argc, char** argv) {
   material_cmd->add_flag("--extrapolate", material.extrapolate,
                          "allow phi outside the simulated range (linear extrapolation)");
   material_cmd->add_flag("-f,--force", material.force, "overwrite an existing material file");
+  material_cmd->add_flag("--tabulated", material.tabulated,
+                         "the simulated flow curve point by point (model tabulated, from the "
+                         "LAW_points.csv and LAW_phi.csv `bridge fit` writes) instead of the "
+                         "Herschel-Bulkley summary");
 
   AmplitudeSweepOptions sweep;
   CLI::App* sweep_cmd = app.add_subcommand(

@@ -35,16 +35,6 @@ MaterialLaw dimensional(const Law& law, const HbLaw& hb, const MaterialRequest& 
           interpolate_value(law.phi, hb.exponent, request.phi)};
 }
 
-std::string describe_placement(const Law& law, double phi) {
-  const std::vector<double>& p = law.phi;
-  if (is_simulated(p, phi)) return fmt::format("at the simulated volume fraction {}", phi);
-  if (phi < p.front() || phi > p.back()) {
-    return fmt::format("EXTRAPOLATED from the simulated range {} ... {}", p.front(), p.back());
-  }
-  const auto above = std::upper_bound(p.begin(), p.end(), phi);
-  return fmt::format("interpolated between the simulated volume fractions {} and {}", *(above - 1),
-                     *above);
-}
 
 }  // namespace
 
@@ -92,12 +82,27 @@ MaterialValue contact_modulus_from_plateau(const Law& law, double phi, double pl
   return {e_star, e_star * g0.statistical / g0.value, e_star * g0.interpolation / g0.value};
 }
 
-Material make_material(const Law& law, const MaterialRequest& request) {
+std::string describe_placement(const Law& law, double phi) {
+  const std::vector<double>& p = law.phi;
+  if (is_simulated(p, phi)) return fmt::format("at the simulated volume fraction {}", phi);
+  if (phi < p.front() || phi > p.back()) {
+    return fmt::format("EXTRAPOLATED from the simulated range {} ... {}", p.front(), p.back());
+  }
+  const auto above = std::upper_bound(p.begin(), p.end(), phi);
+  return fmt::format("interpolated between the simulated volume fractions {} and {}", *(above - 1),
+                     *above);
+}
+
+void check_request(const Law& law, const MaterialRequest& request) {
   require(request.modulus > 0 && std::isfinite(request.modulus),
           fmt::format("contact modulus E* = {} Pa must be positive", request.modulus));
   require(request.viscosity > 0 && std::isfinite(request.viscosity),
           fmt::format("solvent viscosity eta_s = {} Pa s must be positive", request.viscosity));
   check_phi(law.phi, request.phi, request.extrapolate);
+}
+
+Material make_material(const Law& law, const MaterialRequest& request) {
+  check_request(law, request);
 
   Material m;
   m.request = request;
@@ -142,8 +147,6 @@ Material make_material(const Law& law, const MaterialRequest& request) {
   return m;
 }
 
-namespace {
-
 std::string error_comment(const std::string& name, const MaterialValue& v, const char* units) {
   const double scale = std::abs(v.value) > 0 ? 100.0 / std::abs(v.value) : 0.0;
   const std::string interpolation = std::isnan(v.interpolation)
@@ -153,8 +156,6 @@ std::string error_comment(const std::string& name, const MaterialValue& v, const
       "#   {:<12} = {:.6g}{}{} +- {:.2g} % (statistical {:.2g} %, interpolation {})\n", name,
       v.value, *units ? " " : "", units, scale * v.error(), scale * v.statistical, interpolation);
 }
-
-}  // namespace
 
 std::string material_text(const Material& m, const std::vector<std::string>& provenance) {
   std::string out;

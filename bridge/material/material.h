@@ -71,6 +71,18 @@ MaterialValue interpolate_value(const std::vector<double>& phi, const std::vecto
 /// lies within their range, or lies outside with `extrapolate`.
 void check_phi(const std::vector<double>& phi, double at, bool extrapolate);
 
+/// InputError for a request out of range: φ outside the simulated range
+/// without `extrapolate`, non-positive or non-finite E* or η_s.
+void check_request(const Law& law, const MaterialRequest& request);
+
+/// "at the simulated volume fraction 0.85", "interpolated between …",
+/// "EXTRAPOLATED from …": where φ lies among the law's.
+std::string describe_placement(const Law& law, double phi);
+
+/// "#   name = value units +- e % (statistical s %, interpolation i %)": a
+/// value's band as a comment line of a material file.
+std::string error_comment(const std::string& name, const MaterialValue& v, const char* units);
+
 /// E* from a measured linear shear modulus G′ (the plateau of an amplitude or
 /// frequency sweep): E* = G′ / (G0/E*)(φ), with the law's G0/E* interpolated
 /// in φ like the other per-φ values; its errors carry over relatively. The
