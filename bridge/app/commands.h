@@ -10,6 +10,10 @@
 #include "bridge/rescale/rescale.h"
 #include "common/measured_curves.h"
 
+namespace CLI {
+class App;
+}
+
 namespace softglass::bridge {
 
 struct FitOptions {
@@ -59,6 +63,26 @@ struct MaterialOptions {
 /// measured G′ plateau, E* = G′/(G0/E*)(φ) from the law's static G0, or
 /// G′/(G′ plateau/E*)(φ) from its amplitude sweep (plateau_source).
 void material_command(const MaterialOptions& options, const std::string& command_line);
+
+struct PredictOptions {
+  std::filesystem::path law, output;  // output empty: standard output
+  double phi = 0.0, viscosity = 0.0;
+  std::optional<double> modulus, interfacial_tension, radius, plateau_modulus, yield_stress;
+  std::filesystem::path fit_to;  // mode (d): the measured flow curve
+  std::string fit_curve;         // its label, when the file holds several
+  std::string rates;             // a list of numbers, or a measured file
+  std::string curve;             // the label of the rates' curve
+  FallbackUnits units;
+  std::string form = "tabulated";  // or herschel-bulkley: the summary
+  bool extrapolate = false, force = false;
+};
+
+/// Declares `bridge predict` and its options on `app`.
+CLI::App* add_predict_command(CLI::App& app, PredictOptions& options);
+
+/// Writes the predicted flow curve (bridge/material/prediction.h) at the
+/// requested rates.
+void predict_command(const PredictOptions& options, const std::string& command_line);
 
 struct AmplitudeSweepOptions {
   std::filesystem::path law, data;                   // data: a measured amplitude sweep (optional)

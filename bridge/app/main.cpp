@@ -4,6 +4,8 @@
 //                                                 Herschel-Bulkley and universal-law fits
 //   bridge material LAW.prm --phi … --modulus … --viscosity …
 //                                                 a material fragment for the continuum
+//   bridge predict LAW.prm --phi … --viscosity … (E* | G' | yield stress | a curve) --rates …
+//                                                 a predicted flow curve with bands, four modes
 //   bridge amplitude-sweep LAW.prm --phi … --plateau-modulus … --viscosity … [--data SWEEP.csv]
 //                                                 a material's amplitude sweep, against a measured
 //                                                 one
@@ -306,6 +308,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   rescale_cmd->add_flag("-f,--force", rescale.force, "overwrite existing results");
 
+  PredictOptions predict;
+  CLI::App* predict_cmd = add_predict_command(app, predict);
+
   try {
     app.parse(argc, argv);
     if (*fit_cmd && fit.table.empty() && fit.law.empty())
@@ -331,6 +336,7 @@ int main(int argc, char** argv) {
   return run_reporting_errors("bridge", [&] {
     if (*fit_cmd) fit_command(fit, command_line);
     if (*material_cmd) material_command(material, command_line);
+    if (*predict_cmd) predict_command(predict, command_line);
     if (*rescale_cmd) rescale_command(rescale, command_line);
     if (*sweep_cmd) amplitude_sweep_command(sweep, command_line);
     if (*slip_cmd) slip_law_command(slip, command_line);
