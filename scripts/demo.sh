@@ -6,11 +6,15 @@
 #   2. bridge fit     Herschel-Bulkley and universal-law fits -> a law file
 #   3. bridge material  the law at the paper's emulsion (phi 0.80, E* 40 kPa,
 #                     eta_s 1 mPa s) and at the castor-oil emulsion (phi 0.85,
-#                     water, E* from its measured G' plateau of 143 Pa)
+#                     water, E* from its measured G' plateau of 143 Pa), the
+#                     latter as the simulated flow curve itself (tabulated)
 #   4. macro run      the paper's cone and plate (cases/cone_plate.prm)
 #   5. macro compare  the castor-oil Couette measurement, when
 #                     ../shared/data/rheometry/ is present; otherwise the
 #                     Couette torques of the bundled law only
+#   5b. bridge predict  the castor-oil flow curve with its bands from the
+#                     bundled law of the paper sweep, E* from G' (mode b) and
+#                     from the measured yield stress (mode c)
 #   6. micro oscillate  the castor-oil emulsion's amplitude sweep at 1 rad/s
 #                     (cases/demo_oscillation.prm), added to the law
 #   7. bridge amplitude-sweep  predicted against its measured amplitude sweep
@@ -54,7 +58,7 @@ step "2. bridge fit"
 
 step "3. bridge material"
 paper_emulsion "$bridge" "$out/law.prm" "$out/material_paper_emulsion.prm"
-castoroil85 "$bridge" "$out/law.prm" "$out/material_castoroil85.prm"
+castoroil85 "$bridge" "$out/law.prm" "$out/material_castoroil85.prm" --tabulated
 
 step "4. macro run: the paper's cone and plate, 20 speeds"
 "$macro" run "$root/cases/cone_plate.prm" --material "$out/material_paper_emulsion.prm" \
@@ -71,6 +75,23 @@ else
   "$macro" run "$root/cases/castoroil_couette.prm" -o "$out/couette" -f -q
   grep -v '^#' "$out/couette/results.csv" | cut -d, -f1,2 | column -t -s,
   compared=""
+fi
+
+# The castor-oil flow curve from the bundled law (the paper sweep: 5 phi,
+# 11 rates, 2 packings), with the band of each stress.
+predict_castoroil() {
+  "$bridge" predict "$root/cases/bridge_law_paper_sweep.prm" --phi 0.85 --viscosity 0.89e-3 \
+    --rates 0.01,0.1,1,10,100,1000 "$@" -o "$out/predicted.csv" -f > /dev/null
+  # shear rate, stress and its band, extrapolated (1: outside the simulated rates)
+  grep -v '^#' "$out/predicted.csv" | cut -d, -f1,2,5,8 | column -t -s,
+}
+step "5b. bridge predict: the castor-oil flow curve, (b) E* from G' = 143 Pa"
+predict_castoroil --plateau-modulus 143
+if [ -f "$data" ]; then
+  # The measured yield stress: the flow sweep's low-rate plateau, its smallest stress.
+  yield=$(awk -F, 'NR > 1 && (min == "" || $1 < min) { min = $1 } END { print min }' "$data")
+  step "5b. bridge predict: (c) the measured yield stress ($yield Pa) and G' = 143 Pa"
+  predict_castoroil --plateau-modulus 143 --yield-stress "$yield"
 fi
 
 step "6. micro oscillate: the castor-oil emulsion's amplitude sweep, 6 amplitudes, N = 200"

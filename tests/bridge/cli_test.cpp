@@ -220,6 +220,44 @@ TEST_F(BridgeCli, MaterialForThePapersEmulsion) {
   EXPECT_EQ(bridge("material missing.prm --phi 0.8 --modulus 40e3 --viscosity 1e-3").code, 2);
 }
 
+// `bridge predict` on the bundled law: shear rate and stress first, the mode
+// named, bad inputs refused with exit code 2 and no file; `material
+// --tabulated` from the same law reads as a tabulated fragment.
+TEST_F(BridgeCli, PredictWritesTheFlowCurveAndRefusesWhatFitsNoMode) {
+  const std::string law = std::string(SOFTGLASS_SOURCE_DIR) + "/cases/bridge_law_paper_sweep.prm";
+  const std::string base = "predict " + law + " --phi 0.85 --viscosity 0.89e-3 --rates 0.01,1,100";
+  const Outcome b = bridge(base + " --plateau-modulus 143 -o predicted.csv");
+  ASSERT_EQ(b.code, 0) << b.err;
+  expect_contains(b.out, {"mode     (b) E* from the measured G'", "written  predicted.csv"});
+  const std::string table = testing::read_text(work() / "predicted.csv");
+  expect_contains(table, {"# mode: (b) E* from the measured G'",
+                          "\nshear_rate [1/s],shear_stress [Pa],N1 [Pa],N2 [Pa],"
+                          "shear_stress_band [Pa],N1_band [Pa],N2_band [Pa],extrapolated [1]\n",
+                          "\n0.01,", "\n100,"});
+  const Outcome c = bridge(base + " --plateau-modulus 143 --yield-stress 15");
+  ASSERT_EQ(c.code, 0) << c.err;
+  expect_contains(c.out, {"# mode: (c) measured yield stress", "rates rescaled by the yield strains"});
+  for (const auto& [arguments, words] : std::vector<std::pair<std::string, std::string>>{
+           {base + " -o x.csv", "no E*"},
+           {base + " --yield-stress 15 -o x.csv", "mode (c) needs"},
+           {base + " --modulus 3000 --fit-to missing.csv -o x.csv", "excludes"},
+           {"predict " + law + " --phi 0.95 --viscosity 1e-3 --modulus 3e3 --rates 1 -o x.csv",
+            "outside the simulated range"},
+           {"predict " + law + " --phi 0.85 --viscosity 1e-3 --modulus 3e3 --rates nope -o x.csv",
+            "neither a list of numbers nor a file"}}) {
+    const Outcome refused = bridge(arguments);
+    EXPECT_EQ(refused.code, 2) << arguments;
+    expect_contains(refused.err, {words});
+    EXPECT_FALSE(fs::exists(work() / "x.csv")) << arguments;
+  }
+  const Outcome tabulated = bridge("material " + law +
+                                   " --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 "
+                                   "--tabulated -o tabulated.prm");
+  ASSERT_EQ(tabulated.code, 0) << tabulated.err;
+  expect_contains(testing::read_text(work() / "tabulated.prm"),
+                  {"set model        = tabulated", "set rates        = ", "set N2 values"});
+}
+
 TEST_F(BridgeCli, RescaleWritesPointsAndCurves) {
   testing::write_text(
       work() / "data.csv",
