@@ -150,7 +150,8 @@ def main():
                     total = score(errors["all"])
                     rows.append((name, mode, form, total, score(errors["plateau"]),
                                  score(errors["flowing"]), extrapolated / total[2],
-                                 "E* from G'" if plateau else f"E* = {e_star:.4g} Pa (fitted, d)",
+                                 "E* from G'" if plateau and not mode.startswith("(d)")
+                                 else f"E* = {e_star:.4g} Pa (fitted, d)",
                                  ", ".join(f"{x:g}" for x in sorted(scored[k][0] for k in inputs)),
                                  ", ".join(f"{x:g}" for x in skipped)))
 
