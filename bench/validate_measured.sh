@@ -3,7 +3,7 @@
 # in ../shared/data/rheometry, in every prediction mode each supports, with the
 # tabulated law and its Herschel-Bulkley summary side by side
 # (scripts/validate_measured.py; the castor-oil cell's torques by macro compare
-# in mode (b)). A few minutes on 2 cores.
+# in modes (b), (c), (d)). About five minutes on 2 cores.
 #   bench/validate_measured.sh BUILD_DIR [LAW]
 # Writes bench/results/validate_measured-DATE.md (the whole table, per phi
 # too) and replaces the scoreboard block of docs/validation.md with it.
@@ -17,21 +17,33 @@ bridge="$build/bridge/bridge" macro="$build/macro/macro"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-# The castor-oil cell's torques, mode (b): E* from G' = 143 Pa, both law forms.
+# The castor-oil cell's torques by macro compare: mode (b) (E* from G' = 143 Pa)
+# with both law forms, and with the tabulated law modes (c) (the flow sweep's
+# smallest stress as the measured yield stress, as in the flow-curve rows) and
+# (d) (E* fitted to the flow sweep, in sample).
+sweep="$data/castoroil85_couette_flow_sweep.csv"
+yield=$(awk -F, 'NR > 1 && (min == "" || $1 < min) { min = $1 } END { print min }' "$sweep")
 torques=()
-for form in tabulated herschel-bulkley; do
-  flag=(); [ "$form" = tabulated ] && flag=(--tabulated)
-  "$bridge" material "$law" --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 "${flag[@]}" \
-    -o "$scratch/castoroil_$form.prm" -f > /dev/null
-  "$macro" compare "$root/cases/castoroil_couette.prm" "$data/castoroil85_couette_flow_sweep.csv" \
-    --material "$scratch/castoroil_$form.prm" -o "$scratch/compare_$form" -f -q
-  line=$(grep '^torque:' "$scratch/compare_$form/summary.txt")
+score_torques() {  # name, mode label, law form, then bridge material's mode arguments
+  local name=$1 mode=$2 form=$3
+  shift 3
+  "$bridge" material "$law" --phi 0.85 --viscosity 0.89e-3 "$@" -o "$scratch/$name.prm" -f \
+    > /dev/null
+  "$macro" compare "$root/cases/castoroil_couette.prm" "$sweep" --material "$scratch/$name.prm" \
+    -o "$scratch/compare_$name" -f -q
+  local line points bias median
+  line=$(grep '^torque:' "$scratch/compare_$name/summary.txt")
   # "torque: 71 points, predicted/measured - 1: mean +2.7 %, rms 51.6 %, median |.| 40.4 %, ..."
   points=$(sed -E 's/^torque: ([0-9]+) points.*/\1/' <<< "$line")
   bias=$(sed -E 's/.*mean ([-+0-9.]+) %.*/\1/' <<< "$line")
   median=$(sed -E 's/.*median \|\.\| ([0-9.]+) %.*/\1/' <<< "$line")
-  torques+=(--torques "(b) E* from G'|$form|$median|$bias|$points")
-done
+  torques+=(--torques "$mode|$form|$median|$bias|$points")
+}
+score_torques b_tabulated "(b) E* from G'" tabulated --plateau-modulus 143 --tabulated
+score_torques b_hb "(b) E* from G'" herschel-bulkley --plateau-modulus 143
+score_torques c_tabulated "(c) measured yield stress" tabulated --plateau-modulus 143 \
+  --yield-stress "$yield" --tabulated
+score_torques d_tabulated "(d) E* fitted, in sample" tabulated --fit-to "$sweep" --tabulated
 
 date=$(date -u +%Y-%m-%d)
 commit=$(git -C "$root" rev-parse --short HEAD)

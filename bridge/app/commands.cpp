@@ -13,6 +13,7 @@
 #include "bridge/law/crossover_estimate.h"
 #include "bridge/law/law.h"
 #include "bridge/material/material.h"
+#include "bridge/material/prediction.h"
 #include "bridge/material/tabulated_material.h"
 #include "bridge/output/tables.h"
 #include "bridge/rescale/law_yield_strain.h"
@@ -117,6 +118,49 @@ void fit_command(const FitOptions& o, const std::string& command_line) {
     fmt::print("written  {}\n", out->final_path().string());
 }
 
+namespace {
+
+// `bridge material --tabulated`: the simulated flow curve in the mode the
+// inputs call for (bridge/material/prediction.h), its mode and notes in the
+// provenance.
+void write_tabulated_material(const MaterialOptions& o, const Law& law,
+                              std::vector<std::string> lines, std::optional<AtomicOutput>& out) {
+  require(o.source.plateau_source == "static",
+          "--tabulated takes E* from the law's static G0 (mode b); --plateau-source "
+          "amplitude-sweep is for the Herschel-Bulkley material");
+  PredictionInputs in{.phi = o.phi,
+                      .viscosity = o.viscosity,
+                      .modulus = o.source.modulus,
+                      .plateau_modulus = o.source.plateau_modulus,
+                      .yield_stress = o.yield_stress,
+                      .measured_curve = std::nullopt,
+                      .extrapolate = o.extrapolate};
+  if (o.source.interfacial_tension) {
+    in.modulus = 9.92 * *o.source.interfacial_tension / *o.source.radius;
+    lines.push_back(fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m = {:.6g} Pa "
+                                "(Seth et al. 2006, emulsions)",
+                                *o.source.interfacial_tension, *o.source.radius, *in.modulus));
+  }
+  if (!o.fit_to.empty()) in.measured_curve = measured_curve(o.fit_to, o.fit_curve, o.units);
+  const SimulatedCurves curves = read_simulated_curves(o.law, law);
+  const PredictionScales scales = prediction_scales(law, curves, in);
+  lines.push_back("mode:     " + mode_name(scales.mode));
+  for (const std::string& note : scales.notes) lines.push_back("          " + note);
+  const std::string text =
+      tabulated_material_text(tabulated_material_in_mode(law, curves, in, scales), lines);
+  if (!out) {
+    fmt::print("{}", text);
+    return;
+  }
+  fmt::print("mode     {}\n", mode_name(scales.mode));
+  for (const std::string& note : scales.notes) fmt::print("         {}\n", note);
+  write(*out, text);
+  out->commit();
+  fmt::print("written  {}\n", out->final_path().string());
+}
+
+}  // namespace
+
 void material_command(const MaterialOptions& o, const std::string& command_line) {
   std::optional<AtomicOutput> out;
   if (!o.output.empty()) out.emplace(o.output, o.force);
@@ -128,22 +172,20 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
                      : "softglass bridge material: a Herschel-Bulkley material from a law file",
                  command_line);
   lines.push_back("law:      " + o.law.string());
-  MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
-  request.modulus = contact_modulus(o.source, law, o.phi, o.extrapolate, lines);
   if (o.tabulated) {
-    const TabulatedMaterial table =
-        make_tabulated_material(law, read_simulated_curves(o.law, law), request);
-    const std::string text = tabulated_material_text(table, lines);
-    if (!out) {
-      fmt::print("{}", text);
-      return;
-    }
-    write(*out, text);
-    out->commit();
-    fmt::print("written  {}\n", out->final_path().string());
+    write_tabulated_material(o, law, lines, out);
     return;
   }
-  const Material material = make_material(law, request);
+  require(!o.yield_stress && o.fit_to.empty(),
+          "modes (c) and (d) (--yield-stress, --fit-to) write the simulated flow curve itself: "
+          "add --tabulated");
+  MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
+  request.modulus = contact_modulus(o.source, law, o.phi, o.extrapolate, lines);
+  const std::string mode = mode_name(o.source.plateau_modulus ? PredictionMode::plateau_modulus
+                                                             : PredictionMode::nothing_fitted);
+  lines.push_back("mode:     " + mode);
+  Material material = make_material(law, request);
+  material.source = mode;
   std::optional<AmplitudeSweepPrediction> sweep;
   std::vector<std::string> frequency_lines;
   if (sweep_covers(law, o.phi)) {

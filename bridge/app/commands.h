@@ -55,8 +55,12 @@ struct MaterialOptions {
   std::optional<double> frequency;
   bool extrapolate = false, force = false;
   /// The simulated flow curve itself (tabulated_material.h) instead of the
-  /// Herschel–Bulkley summary.
+  /// Herschel–Bulkley summary; then also modes (c) and (d) of prediction.h.
   bool tabulated = false;
+  std::optional<double> yield_stress;  // mode (c): a measured yield stress [Pa]
+  std::filesystem::path fit_to;        // mode (d): the measured curve E* is fitted to
+  std::string fit_curve;               // its label, when the file holds several
+  FallbackUnits units;
 };
 
 /// Writes the material fragment for (φ, E*, η_s) from a law file. With a
@@ -76,6 +80,11 @@ struct PredictOptions {
   std::string form = "tabulated";  // or herschel-bulkley: the summary
   bool extrapolate = false, force = false;
 };
+
+/// The curve called `label` of a measured flow-curve file, or its only one;
+/// InputError naming the labels otherwise.
+MeasuredCurve measured_curve(const std::filesystem::path& file, const std::string& label,
+                             const FallbackUnits& units);
 
 /// Declares `bridge predict` and its options on `app`.
 CLI::App* add_predict_command(CLI::App& app, PredictOptions& options);

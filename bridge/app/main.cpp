@@ -160,6 +160,19 @@ int main(int argc, char** argv) {
                          "the simulated flow curve point by point (model tabulated, from the "
                          "LAW_points.csv and LAW_phi.csv `bridge fit` writes) instead of the "
                          "Herschel-Bulkley summary");
+  material_cmd
+      ->add_option("--yield-stress", material.yield_stress,
+                   "with --tabulated: a measured yield stress [Pa] (mode c, docs/bridge.md)")
+      ->check(positive);
+  auto* fit_to = material_cmd->add_option(
+      "--fit-to", material.fit_to,
+      "with --tabulated: a measured flow curve (CSV) to fit E* to (mode d)");
+  material_cmd->add_option("--fit-curve", material.fit_curve, "the curve of --fit-to, by label");
+  material_cmd->add_option("--rate-unit", material.units.rate, "units of --fit-to's rates");
+  material_cmd->add_option("--stress-unit", material.units.stress, "units of --fit-to's stresses");
+  fit_to->excludes(modulus);
+  fit_to->excludes(plateau);
+  fit_to->excludes(tension);
 
   AmplitudeSweepOptions sweep;
   CLI::App* sweep_cmd = app.add_subcommand(
@@ -323,7 +336,8 @@ int main(int argc, char** argv) {
     for (const auto& [cmd, source, name] :
          {std::tuple(material_cmd, &material.source, "material"),
           std::tuple(sweep_cmd, &sweep.source, "amplitude-sweep")}) {
-      if (*cmd && !source->modulus && !source->interfacial_tension && !source->plateau_modulus)
+      if (*cmd && !source->modulus && !source->interfacial_tension && !source->plateau_modulus &&
+          material.fit_to.empty())
         throw CLI::ValidationError(fmt::format(
             "{}: give --modulus, --plateau-modulus, or --interfacial-tension and --radius", name));
     }

@@ -20,23 +20,6 @@ namespace softglass::bridge {
 
 namespace {
 
-// The curve called `label` of a measured file, or its only one.
-MeasuredCurve measured_curve(const std::filesystem::path& file, const std::string& label,
-                             const FallbackUnits& units) {
-  const std::vector<MeasuredCurve> curves = read_measured_curves(CsvTable::read(file), units);
-  if (label.empty()) {
-    require(curves.size() == 1,
-            fmt::format("{} holds {} curves: name one with --curve", file.string(), curves.size()));
-    return curves.front();
-  }
-  for (const MeasuredCurve& c : curves)
-    if (c.label == label) return c;
-  std::vector<std::string> labels;
-  for (const MeasuredCurve& c : curves) labels.push_back(c.label);
-  throw InputError(fmt::format("{} has no curve '{}'; it has: {}", file.string(), label,
-                               fmt::join(labels, ", ")));
-}
-
 // --rates: a comma-separated list of numbers, or a measured file's rates.
 std::vector<double> requested_rates(const PredictOptions& o) {
   std::vector<double> rates;
@@ -59,6 +42,22 @@ std::vector<double> requested_rates(const PredictOptions& o) {
 }
 
 }  // namespace
+
+MeasuredCurve measured_curve(const std::filesystem::path& file, const std::string& label,
+                             const FallbackUnits& units) {
+  const std::vector<MeasuredCurve> curves = read_measured_curves(CsvTable::read(file), units);
+  if (label.empty()) {
+    require(curves.size() == 1,
+            fmt::format("{} holds {} curves: name one with --curve", file.string(), curves.size()));
+    return curves.front();
+  }
+  for (const MeasuredCurve& c : curves)
+    if (c.label == label) return c;
+  std::vector<std::string> labels;
+  for (const MeasuredCurve& c : curves) labels.push_back(c.label);
+  throw InputError(fmt::format("{} has no curve '{}'; it has: {}", file.string(), label,
+                               fmt::join(labels, ", ")));
+}
 
 CLI::App* add_predict_command(CLI::App& app, PredictOptions& o) {
   CLI::App* cmd = app.add_subcommand(

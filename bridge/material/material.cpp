@@ -186,6 +186,7 @@ std::string material_text(const Material& m, const std::vector<std::string>& pro
       "subsection material\n"
       "  # Shear stress: tau = tau_y + K gamma_dot^n above the yield stress.\n";
   line("model", "herschel-bulkley", "herschel-bulkley | bingham | power-law | newtonian");
+  if (!m.source.empty()) line("source", m.source, "how E* was set (docs/bridge.md)");
   line("yield stress", number(shear.yield), "tau_y [Pa]");
   line("consistency", number(shear.consistency), "K [Pa s^n]");
   line("flow index", number(shear.index), "n [1]");

@@ -55,6 +55,7 @@ struct Material {
   PerQuantity<MaterialLaw> laws;          // sigma always, N1 and N2 when the law has them
   double rate_min = 0.0, rate_max = 0.0;  // [1/s]: the simulated γ̃ range
   std::string placement;                  // where φ lies among the simulated ones
+  std::string source;                     // the prediction mode, written as `source`
 };
 
 /// InputError for a request out of range (φ outside the simulated range

@@ -186,24 +186,21 @@ PredictionMode prediction_mode(const PredictionInputs& in) {
   return PredictionMode::nothing_fitted;
 }
 
-Prediction predict(const Law& law, const SimulatedCurves& curves, const PredictionInputs& in,
-                   const std::vector<double>& rates) {
-  Prediction p;
+namespace {
+
+// The mode's scales: E* (the one that sets the rates), the stress scale (E*,
+// or τ_y,m/σ̃_y in mode c) with its relative error, and the factor s on γ̃.
+PredictionScales resolve_scales(const Law& law, const ReducedCurve& curve,
+                                const PredictionInputs& in) {
+  PredictionScales p;
   p.mode = prediction_mode(in);
   require(in.viscosity > 0 && std::isfinite(in.viscosity),
           fmt::format("solvent viscosity eta_s = {} Pa s must be positive", in.viscosity));
-  for (const double r : rates)
-    require(r > 0 && std::isfinite(r), fmt::format("shear rate {} 1/s must be positive", r));
-  const ReducedCurve curve(law, curves, in.phi, in.extrapolate, in.form);
   p.notes.push_back(in.form == LawForm::tabulated
                         ? "law: the simulated flow curve itself (tabulated, monotone cubic in "
                           "log-log between the simulated rates)"
                         : "law: the Herschel-Bulkley summary of the simulated flow curve (bridge "
                           "fit's per-phi tau_y, K, n)");
-
-  // The stress scale (E*, or τ_y,m/σ̃_y in mode c), its relative error, and
-  // the factor s on γ̃.
-  double scale = 0.0, scale_error = 0.0, rate_factor = 1.0;
   switch (p.mode) {
     case PredictionMode::nothing_fitted:
       p.modulus = {*in.modulus, 0.0, 0.0};
@@ -221,23 +218,23 @@ Prediction predict(const Law& law, const SimulatedCurves& curves, const Predicti
                                                                     *in.plateau_modulus,
                                                                     in.extrapolate)
                                      : MaterialValue{*in.modulus, 0.0, 0.0};
-      scale = *in.yield_stress / curve.yield();
-      scale_error = curve.yield_error() / curve.yield();
+      p.stress_scale = *in.yield_stress / curve.yield();
+      p.stress_scale_error = curve.yield_error() / curve.yield();
       std::string rates_note = "rates at the simulated yield strain (no G' given)";
       if (in.plateau_modulus) {
         const double g0 = interpolate_value(law.phi, law.modulus, in.phi).value;
         const double simulated = curve.yield() / g0, measured = *in.yield_stress / *in.plateau_modulus;
-        rate_factor = (simulated / measured) * (simulated / measured);
+        p.rate_factor = (simulated / measured) * (simulated / measured);
         rates_note = fmt::format(
             "rates rescaled by the yield strains, gamma~ x (gamma_y/gamma_y,m)^2 = x {:.4g} "
             "(simulated gamma_y = {:.4g}, measured tau_y/G' = {:.4g})",
-            rate_factor, simulated, measured);
+            p.rate_factor, simulated, measured);
       }
       p.notes.push_back(fmt::format(
           "stresses scaled by the measured yield stress: tau_y,m / sigma~_y = {:.6g} Pa / {:.6g} "
           "= {:.6g} Pa (+- {:.2g} % from sigma~_y); {}; E* = {:.6g} Pa",
-          *in.yield_stress, curve.yield(), scale, 100.0 * scale_error, rates_note,
-          p.modulus.value));
+          *in.yield_stress, curve.yield(), p.stress_scale, 100.0 * p.stress_scale_error,
+          rates_note, p.modulus.value));
       break;
     }
   }
@@ -245,9 +242,28 @@ Prediction predict(const Law& law, const SimulatedCurves& curves, const Predicti
   require(e_star > 0 && std::isfinite(e_star),
           fmt::format("contact modulus E* = {} Pa must be positive", e_star));
   if (p.mode != PredictionMode::yield_stress) {
-    scale = e_star;
-    scale_error = p.modulus.error() / e_star;
+    p.stress_scale = e_star;
+    p.stress_scale_error = p.modulus.error() / e_star;
   }
+  return p;
+}
+
+}  // namespace
+
+PredictionScales prediction_scales(const Law& law, const SimulatedCurves& curves,
+                                   const PredictionInputs& in) {
+  return resolve_scales(law, ReducedCurve(law, curves, in.phi, in.extrapolate, in.form), in);
+}
+
+Prediction predict(const Law& law, const SimulatedCurves& curves, const PredictionInputs& in,
+                   const std::vector<double>& rates) {
+  for (const double r : rates)
+    require(r > 0 && std::isfinite(r), fmt::format("shear rate {} 1/s must be positive", r));
+  const ReducedCurve curve(law, curves, in.phi, in.extrapolate, in.form);
+  const PredictionScales scales = resolve_scales(law, curve, in);
+  Prediction p{.mode = scales.mode, .modulus = scales.modulus, .notes = scales.notes, .points = {}};
+  const double e_star = p.modulus.value, scale = scales.stress_scale,
+               scale_error = scales.stress_scale_error, rate_factor = scales.rate_factor;
   const double modulus_error = std::isnan(p.modulus.error()) ? 0.0 : p.modulus.error() / e_star;
   for (const double rate : rates) {
     const double gamma = rate * in.viscosity / e_star * rate_factor;
@@ -271,6 +287,31 @@ Prediction predict(const Law& law, const SimulatedCurves& curves, const Predicti
       "error above; not included: the model's own systematic error for this mode (the "
       "scoreboard against measured data, docs/validation.md)");
   return p;
+}
+
+TabulatedMaterial tabulated_material_in_mode(const Law& law, const SimulatedCurves& curves,
+                                             const PredictionInputs& in,
+                                             const PredictionScales& scales) {
+  const double e_star = scales.modulus.value;
+  TabulatedMaterial m =
+      make_tabulated_material(law, curves, {in.phi, e_star, in.viscosity, in.extrapolate});
+  // The E* table has τ_i = E* σ̃_i at γ̇_i = γ̃_i E*/η_s; mode (c) wants
+  // scale × σ̃_i at γ̇_i/s.
+  m.source = mode_name(scales.mode);
+  const double factor = scales.stress_scale / e_star;
+  const auto scaled = [factor](MaterialValue& v) {
+    v = {factor * v.value, factor * v.statistical, factor * v.interpolation};
+  };
+  scaled(m.yield);
+  for (auto& rest : m.rest)
+    if (rest) scaled(*rest);
+  for (auto* rows : {&m.rows, &m.plateau_rows})
+    for (TabulatedRow& row : *rows) {
+      row.rate /= scales.rate_factor;
+      for (auto& v : row.value)
+        if (v) scaled(*v);
+    }
+  return m;
 }
 
 std::string prediction_table(const Prediction& p, const std::vector<std::string>& provenance) {

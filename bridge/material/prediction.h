@@ -68,6 +68,19 @@ struct PredictionInputs {
 /// does not belong (E* given beside a curve to fit it to, …).
 PredictionMode prediction_mode(const PredictionInputs& inputs);
 
+/// What a mode makes of its inputs: the E* that sets the rates, the stress
+/// scale (E*, or τ_y,m/σ̃_y in mode c) with its relative error, the factor s
+/// on γ̃ (mode c with G′), and the notes stating them.
+struct PredictionScales {
+  PredictionMode mode = PredictionMode::nothing_fitted;
+  MaterialValue modulus;  // E* [Pa]
+  double stress_scale = 0.0, stress_scale_error = 0.0, rate_factor = 1.0;
+  std::vector<std::string> notes;
+};
+
+PredictionScales prediction_scales(const Law& law, const SimulatedCurves& curves,
+                                   const PredictionInputs& inputs);
+
 struct Band {
   double value = 0.0, band = 0.0;  // [Pa]
 };
@@ -88,6 +101,13 @@ struct Prediction {
 /// The prediction at `rates` (> 0); InputError for inputs out of range.
 Prediction predict(const Law& law, const SimulatedCurves& curves, const PredictionInputs& inputs,
                    const std::vector<double>& rates);
+
+/// The tabulated material of the mode (tabulated_material.h): the simulated
+/// rows at γ̇_i = γ̃_i E*/(η_s s) with stresses scale × σ̃_i, each band scaled
+/// alike; in mode (c) the yield stress is the measured one.
+TabulatedMaterial tabulated_material_in_mode(const Law& law, const SimulatedCurves& curves,
+                                             const PredictionInputs& inputs,
+                                             const PredictionScales& scales);
 
 /// The CSV: shear rate [1/s] and shear stress [Pa] first, then N1, N2, each
 /// quantity's band and the extrapolation flag; `provenance` and the notes as

@@ -186,6 +186,7 @@ std::string tabulated_material_text(const TabulatedMaterial& m,
   out += "subsection material\n";
   out += "  # The simulated flow curve point by point (monotone cubic in log-log between rates).\n";
   out += "  set model        = tabulated\n";
+  if (!m.source.empty()) out += fmt::format("  set source       = {}\n", m.source);
   out += fmt::format("  set yield stress = {:.6g}   # tau_y [Pa], the quasi-static limit\n",
                      m.yield.value);
   out += fmt::format("  set rates        = {}   # [1/s]\n", list([](const TabulatedRow& row) { return row.rate; }));

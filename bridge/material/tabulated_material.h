@@ -58,6 +58,7 @@ struct TabulatedMaterial {
   std::vector<TabulatedRow> rows;        // increasing rates
   std::vector<TabulatedRow> plateau_rows;  // lowest rates left out: stress not above τ_y
   std::string placement;                 // where φ lies among the simulated ones
+  std::string source;                    // the prediction mode, written as `source`
 };
 
 /// The table at the request's φ, E*, η_s. The lowest rates whose stress does

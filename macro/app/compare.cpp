@@ -322,6 +322,7 @@ int compare(const CompareOptions& o) {
   const std::string extrapolation =
       extrapolation_note(*scene, material, measured.angular_velocity);
   if (!extrapolation.empty()) report.push_back(extrapolation);
+  if (!material.source.empty()) report.insert(report.begin(), "material: " + material.source);
   const UnitTable table = comparison_table(comparison, constants);
   const std::vector<std::string> header_lines =
       provenance(o, scene->description(), measured, describe_model(material, settings));

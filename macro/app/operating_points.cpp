@@ -14,8 +14,9 @@
 namespace softglass::macro::app {
 
 std::string describe_model(const Material& material, const fe::SolverSettings& settings) {
-  return fmt::format("material: {}; solver: preset {}, {}", material.shear->description(),
-                     settings.preset,
+  const std::string source = material.source.empty() ? "" : " [" + material.source + "]";
+  return fmt::format("material{}: {}; solver: preset {}, {}", source,
+                     material.shear->description(), settings.preset,
                      settings.method == fe::Method::regularised
                          ? settings.regularisation + " regularisation"
                          : std::string("augmented Lagrangian"));

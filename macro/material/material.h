@@ -20,7 +20,8 @@
 namespace softglass::macro {
 
 struct Material {
-  std::string model;  ///< the file's `model`: herschel-bulkley, tabulated, …
+  std::string model;   ///< the file's `model`: herschel-bulkley, tabulated, …
+  std::string source;  ///< the file's `source`: where it comes from (may be empty)
   std::shared_ptr<const ShearLaw> shear;
   std::shared_ptr<const NormalStressCurve> first_normal_stress_difference;   ///< N1
   std::shared_ptr<const NormalStressCurve> second_normal_stress_difference;  ///< N2

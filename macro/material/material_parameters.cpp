@@ -49,6 +49,9 @@ void declare_material(dealii::ParameterHandler& prm) {
                     "tau_y [Pa]; >= 0, and 0 for power-law and newtonian (tabulated: the limit "
                     "of the flow curve at rest). Required.",
                     true);
+  prm.declare_entry("source", "", Patterns::Anything(),
+                    "Where the material comes from, e.g. the prediction mode `bridge material` "
+                    "states; printed with every result. Optional.");
   for (const std::string name : {"N1", "N2"})
     prm.declare_entry(name + " yield", "0", Patterns::Double(),
                       "N_y, the value of " + name + " at rest [Pa]; any finite value.");
@@ -91,6 +94,7 @@ Material read_material(dealii::ParameterHandler& prm) {
     prm.leave_subsection();
     throw;
   }
+  material->source = prm.get("source");
   prm.leave_subsection();
   return std::move(*material);
 }

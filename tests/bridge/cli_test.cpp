@@ -255,7 +255,20 @@ TEST_F(BridgeCli, PredictWritesTheFlowCurveAndRefusesWhatFitsNoMode) {
                                    "--tabulated -o tabulated.prm");
   ASSERT_EQ(tabulated.code, 0) << tabulated.err;
   expect_contains(testing::read_text(work() / "tabulated.prm"),
-                  {"set model        = tabulated", "set rates        = ", "set N2 values"});
+                  {"set model        = tabulated", "set source       = (b) E* from the measured G'",
+                   "set rates        = ", "set N2 values"});
+  const Outcome c_mode = bridge("material " + law +
+                                " --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 "
+                                "--yield-stress 15 --tabulated -o c.prm");
+  ASSERT_EQ(c_mode.code, 0) << c_mode.err;
+  expect_contains(testing::read_text(work() / "c.prm"),
+                  {"set source       = (c) measured yield stress", "set yield stress = 15 "});
+  const Outcome not_tabulated = bridge("material " + law +
+                                       " --phi 0.85 --plateau-modulus 143 --viscosity 0.89e-3 "
+                                       "--yield-stress 15 -o nc.prm");
+  EXPECT_EQ(not_tabulated.code, 2);
+  expect_contains(not_tabulated.err, {"add --tabulated"});
+  EXPECT_FALSE(fs::exists(work() / "nc.prm"));
 }
 
 TEST_F(BridgeCli, RescaleWritesPointsAndCurves) {

@@ -119,6 +119,28 @@ TEST(Prediction, ModeDRecoversTheModulusOfACurveModeAMade) {
   EXPECT_LT(d.modulus.error() / e_star, 1e-6);  // a perfect fit leaves no error
 }
 
+// The material a mode writes (bridge material --tabulated) and the curve it
+// predicts are one: predict at the material's rates gives its stresses, and
+// in mode (c) its yield stress is the measured one.
+TEST(Prediction, TheModesMaterialIsItsPrediction) {
+  const Fixture f;
+  for (const PredictionInputs& in :
+       {PredictionInputs{.phi = 0.8, .viscosity = kViscosity, .modulus = 2500.0},
+        PredictionInputs{.phi = 0.82, .viscosity = kViscosity, .plateau_modulus = 150.0,
+                         .yield_stress = 12.0}}) {
+    const PredictionScales scales = prediction_scales(f.law, f.curves, in);
+    const TabulatedMaterial m = tabulated_material_in_mode(f.law, f.curves, in, scales);
+    std::vector<double> rates;
+    for (const TabulatedRow& row : m.rows) rates.push_back(row.rate);
+    const Prediction p = predict(f.law, f.curves, in, rates);
+    for (std::size_t i = 0; i < rates.size(); ++i)
+      EXPECT_NEAR(stress(p, i) / m.rows[i].value[index(Quantity::sigma)]->value, 1.0, 1e-12)
+          << mode_name(scales.mode) << " " << i;
+    EXPECT_EQ(m.source, mode_name(scales.mode));
+    if (in.yield_stress) EXPECT_NEAR(m.yield.value / *in.yield_stress, 1.0, 1e-14);
+  }
+}
+
 TEST(Prediction, RefusesInputsThatFitNoMode) {
   const Fixture f;
   MeasuredCurve curve{.label = "c", .shear_rate = {1, 2, 3, 4}, .stress = {5, 6, 7, 8}};

@@ -232,9 +232,10 @@ TEST(TabulatedLaw, ReadFromAMaterialFragment) {
   const Material m = parse_material(
       "subsection material\n set model = tabulated\n set yield stress = 2\n"
       " set rates = 0.1, 1, 10\n set stresses = 3, 5, 9\n set N1 values = 0.5, 1, 3\n"
-      " set N1 yield = 0.2\nend\n",
+      " set N1 yield = 0.2\n set source = (c) measured yield stress\nend\n",
       "tabulated.prm");
   EXPECT_EQ(m.model, "tabulated");
+  EXPECT_EQ(m.source, "(c) measured yield stress");
   EXPECT_EQ(m.shear->yield_stress(), 2.0);
   EXPECT_NEAR(m.shear->stress(1.0), 5.0, 1e-14);
   EXPECT_NEAR(m.first_normal_stress_difference->value(10.0), 3.0, 1e-14);
