@@ -6,7 +6,9 @@
 # in modes (b), (c), (d)). About five minutes on 2 cores.
 #   bench/validate_measured.sh BUILD_DIR [LAW]
 # Writes bench/results/validate_measured-DATE.md (the whole table, per phi
-# too) and replaces the scoreboard block of docs/validation.md with it.
+# too), replaces the scoreboard block of docs/validation.md with it, and
+# writes LAW_model_error.csv beside the law: the pooled error per mode, which
+# `bridge predict` states as the model's systematic error.
 set -euo pipefail
 build=${1:?usage: bench/validate_measured.sh BUILD_DIR [LAW]}
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -52,7 +54,8 @@ mkdir -p "$(dirname "$log")"
 {
   echo "Scoreboard of $date, commit $commit, law $(basename "$law") (bench/validate_measured.sh)."
   echo
-  /usr/bin/python3 "$root/scripts/validate_measured.py" "$bridge" "$law" "$data" "${torques[@]}"
+  /usr/bin/python3 "$root/scripts/validate_measured.py" "$bridge" "$law" "$data" "${torques[@]}" \
+    --model-error "${law%.prm}_model_error.csv"
 } > "$scratch/table.md"
 cp "$scratch/table.md" "$log"
 

@@ -93,6 +93,9 @@ def main():
     p.add_argument("bridge", help="the bridge executable")
     p.add_argument("law", help="the law file (its _points.csv and _phi.csv beside it)")
     p.add_argument("data", help="the folder of the measured files")
+    p.add_argument("--model-error",
+                   help="write the pooled error per mode, law form and branch (CSV) here: the "
+                        "model's systematic error that `bridge predict` states beside its band")
     p.add_argument("--torques", action="append", default=[],
                    help="a row of macro compare's torques: 'mode|law|median|bias|points'")
     p.add_argument("--castoroil-plateau-modulus", type=float, default=143.0)
@@ -105,6 +108,7 @@ def main():
         ("Dinkgreve 2015", "dinkgreve2015_emulsion_flow_curves_digitized.csv", "phi_0.8", None),
     ]
     rows, details = [], []
+    pooled = {}  # (mode letter, form, branch) -> ([errors], {data sets})
     with tempfile.TemporaryDirectory() as scratch:
         bridge = Bridge(args.bridge, args.law, scratch)
         for name, filename, calibration, plateau in sets:
@@ -147,6 +151,11 @@ def main():
                         s = score(curve_errors)
                         details.append(f"| {name} | {mode} | {form} | {phi:g} | {s[0]:.1%} | "
                                        f"{s[1]:+.1%} | {s[2]} |")
+                    if "in sample" not in mode:  # a calibration says nothing of the model
+                        for branch in ("all", "plateau", "flowing"):
+                            entry = pooled.setdefault((mode[1], form, branch), ([], set()))
+                            entry[0].extend(errors[branch])
+                            entry[1].add(name)
                     total = score(errors["all"])
                     rows.append((name, mode, form, total, score(errors["plateau"]),
                                  score(errors["flowing"]), extrapolated / total[2],
@@ -154,6 +163,19 @@ def main():
                                  else f"E* = {e_star:.4g} Pa (fitted, d)",
                                  ", ".join(f"{x:g}" for x in sorted(scored[k][0] for k in inputs)),
                                  ", ".join(f"{x:g}" for x in skipped)))
+
+    if args.model_error:
+        with open(args.model_error, "w") as f:
+            f.write("# The model's systematic error per prediction mode: predicted/measured - 1 "
+                    "pooled over the\n# public flow curves of ../shared/data/rheometry "
+                    "(scripts/validate_measured.py). Written by\n# bench/validate_measured.sh; "
+                    "read by `bridge predict` beside its law file.\n")
+            f.write("mode,law_form,branch,median_abs_error [1],bias [1],points [1],data_sets\n")
+            for (mode, form, branch), (errs, names) in sorted(pooled.items()):
+                if errs:
+                    s = score(errs)
+                    f.write(f"{mode},{form},{branch},{s[0]:.4f},{s[1]:+.4f},{s[2]},"
+                            f"\"{'; '.join(sorted(names))}\"\n")
 
     def cell(s):
         return "–" if s is None else f"{s[0]:.0%} / {s[1]:+.0%}"

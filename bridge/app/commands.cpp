@@ -134,7 +134,9 @@ void write_tabulated_material(const MaterialOptions& o, const Law& law,
                       .plateau_modulus = o.source.plateau_modulus,
                       .yield_stress = o.yield_stress,
                       .measured_curve = std::nullopt,
-                      .extrapolate = o.extrapolate};
+                      .extrapolate = o.extrapolate,
+                      .form = LawForm::tabulated,
+                      .model_error = std::nullopt};
   if (o.source.interfacial_tension) {
     in.modulus = 9.92 * *o.source.interfacial_tension / *o.source.radius;
     lines.push_back(fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m = {:.6g} Pa "

@@ -126,7 +126,8 @@ void predict_command(const PredictOptions& o, const std::string& command_line) {
                       .measured_curve = std::nullopt,
                       .extrapolate = o.extrapolate,
                       .form = o.form == "tabulated" ? LawForm::tabulated
-                                                    : LawForm::herschel_bulkley};
+                                                    : LawForm::herschel_bulkley,
+                      .model_error = read_model_error(o.law)};
   std::vector<std::string> lines =
       provenance("softglass bridge predict: a flow curve from a law file", command_line);
   lines.push_back("law:      " + o.law.string());

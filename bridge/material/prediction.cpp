@@ -188,6 +188,40 @@ PredictionMode prediction_mode(const PredictionInputs& in) {
 
 namespace {
 
+// The model's systematic error of the mode (model_error.h), per point by its
+// branch (plateau: the predicted stress below 1.5× the predicted yield
+// stress, as the scoreboard splits the measured points), and a note naming
+// the data sets; or a note that it has not been measured.
+void state_model_error(Prediction& p, const PredictionInputs& in, double yield_stress) {
+  const char letter = "abcd"[static_cast<int>(p.mode)];
+  const std::string form = in.form == LawForm::tabulated ? "tabulated" : "herschel-bulkley";
+  const auto entry = [&](const char* branch) -> const ModelErrorEntry* {
+    if (!in.model_error) return nullptr;
+    const auto it = in.model_error->find({letter, form, branch});
+    return it == in.model_error->end() ? nullptr : &it->second;
+  };
+  const ModelErrorEntry *plateau = entry("plateau"), *flowing = entry("flowing");
+  if (!plateau || !flowing) {
+    p.notes.push_back(fmt::format(
+        "the model's systematic error in mode {} ({}): not measured{} (bench/validate_measured.sh "
+        "scores it against public data sets; mode (a) needs an interfacial tension none gives)",
+        letter, form, in.model_error ? "" : ", no LAW_model_error.csv beside the law"));
+    return;
+  }
+  for (PredictedPoint& point : p.points) {
+    const double tau = point.value[index(Quantity::sigma)]->value;
+    point.model_error = (tau < 1.5 * yield_stress ? plateau : flowing)->median_abs_error * tau;
+  }
+  p.notes.push_back(fmt::format(
+      "the model's systematic error in mode {} ({}), the column shear_stress_model_error: the "
+      "median |predicted/measured - 1| of the scoreboard, {:.1f} % on the yield plateau (bias "
+      "{:+.1f} %) and {:.1f} % on the flowing branch (bias {:+.1f} %), over {} ({} points; "
+      "N1, N2: no measured data)",
+      letter, form, 100 * plateau->median_abs_error, 100 * plateau->bias,
+      100 * flowing->median_abs_error, 100 * flowing->bias, flowing->data_sets,
+      plateau->points + flowing->points));
+}
+
 // The mode's scales: E* (the one that sets the rates), the stress scale (E*,
 // or τ_y,m/σ̃_y in mode c) with its relative error, and the factor s on γ̃.
 PredictionScales resolve_scales(const Law& law, const ReducedCurve& curve,
@@ -267,7 +301,8 @@ Prediction predict(const Law& law, const SimulatedCurves& curves, const Predicti
   const double modulus_error = std::isnan(p.modulus.error()) ? 0.0 : p.modulus.error() / e_star;
   for (const double rate : rates) {
     const double gamma = rate * in.viscosity / e_star * rate_factor;
-    PredictedPoint point{.rate = rate, .value = {}, .extrapolated = curve.outside(gamma)};
+    PredictedPoint point{
+        .rate = rate, .value = {}, .extrapolated = curve.outside(gamma), .model_error = {}};
     for (const Quantity q : kQuantities3) {
       if (!curve.has(q)) continue;
       const double value = scale * curve.value(q, gamma);
@@ -284,8 +319,8 @@ Prediction predict(const Law& law, const SimulatedCurves& curves, const Predicti
   p.notes.push_back(
       "band (one standard deviation): the packings' statistical error of the simulated points "
       "and the interpolation between simulated phi, propagated, in quadrature with the scale's "
-      "error above; not included: the model's own systematic error for this mode (the "
-      "scoreboard against measured data, docs/validation.md)");
+      "error above");
+  state_model_error(p, in, scale * curve.yield());
   return p;
 }
 
@@ -316,9 +351,9 @@ TabulatedMaterial tabulated_material_in_mode(const Law& law, const SimulatedCurv
 
 std::string prediction_table(const Prediction& p, const std::vector<std::string>& provenance) {
   std::string out;
-  for (const std::string& line : provenance) out += "# " + line + "\n";
-  out += "# mode: " + mode_name(p.mode) + "\n";
-  for (const std::string& line : p.notes) out += "# " + line + "\n";
+  for (const std::string& line : provenance) out += fmt::format("# {}\n", line);
+  out += fmt::format("# mode: {}\n", mode_name(p.mode));
+  for (const std::string& line : p.notes) out += fmt::format("# {}\n", line);
   const PredictedPoint& first = p.points.front();
   std::vector<Quantity> present;
   for (const Quantity q : kQuantities3)
@@ -327,13 +362,16 @@ std::string prediction_table(const Prediction& p, const std::vector<std::string>
     return q == Quantity::sigma ? std::string("shear_stress") : std::string(column_name(q));
   };
   out += "shear_rate [1/s]";
-  for (const Quantity q : present) out += "," + name(q) + " [Pa]";
-  for (const Quantity q : present) out += "," + name(q) + "_band [Pa]";
+  for (const Quantity q : present) out += fmt::format(",{} [Pa]", name(q));
+  for (const Quantity q : present) out += fmt::format(",{}_band [Pa]", name(q));
+  const bool model_error = first.model_error.has_value();
+  if (model_error) out += ",shear_stress_model_error [Pa]";
   out += ",extrapolated [1]\n";
   for (const PredictedPoint& point : p.points) {
     out += fmt::format("{:.10g}", point.rate);
     for (const Quantity q : present) out += fmt::format(",{:.10g}", point.value[index(q)]->value);
     for (const Quantity q : present) out += fmt::format(",{:.4g}", point.value[index(q)]->band);
+    if (model_error) out += fmt::format(",{:.4g}", *point.model_error);
     out += point.extrapolated ? ",1\n" : ",0\n";
   }
   return out;

@@ -30,8 +30,9 @@
 // Between rates the bands are interpolated linearly in ln γ̇; outside the
 // simulated window the law is extrapolated (flagged per point) and the band is
 // that of the nearest end. The model's own systematic error for each mode is
-// not part of the band: it is what the scoreboard against measured data
-// measures.
+// not part of the band: the scoreboard measures it against public data
+// (model_error.h), and the prediction states it beside the band, in its own
+// column, with the data sets it comes from.
 #pragma once
 
 #include <optional>
@@ -39,6 +40,7 @@
 #include <vector>
 
 #include "bridge/law/law.h"
+#include "bridge/material/model_error.h"
 #include "bridge/material/tabulated_material.h"
 #include "common/measured_curves.h"
 
@@ -62,6 +64,7 @@ struct PredictionInputs {
   std::optional<MeasuredCurve> measured_curve;  // the curve E* is fitted to (d)
   bool extrapolate = false;                    // φ outside the simulated range
   LawForm form = LawForm::tabulated;
+  std::optional<ModelError> model_error;       // the scoreboard's, beside the law (model_error.h)
 };
 
 /// The mode the inputs call for; InputError naming what is missing or what
@@ -89,6 +92,9 @@ struct PredictedPoint {
   double rate = 0.0;         // γ̇ [1/s]
   PerQuantity<Band> value;   // sigma always, N1 and N2 when the law has them
   bool extrapolated = false;  // outside the simulated rates
+  /// The shear stress's systematic error for the mode [Pa] (model_error.h),
+  /// when the scoreboard has measured it.
+  std::optional<double> model_error;
 };
 
 struct Prediction {
@@ -110,7 +116,8 @@ TabulatedMaterial tabulated_material_in_mode(const Law& law, const SimulatedCurv
                                              const PredictionScales& scales);
 
 /// The CSV: shear rate [1/s] and shear stress [Pa] first, then N1, N2, each
-/// quantity's band and the extrapolation flag; `provenance` and the notes as
+/// quantity's band, the shear stress's model error (when measured) and the
+/// extrapolation flag; `provenance` and the notes as
 /// `#` lines before the header.
 std::string prediction_table(const Prediction& prediction,
                              const std::vector<std::string>& provenance);

@@ -232,7 +232,9 @@ TEST_F(BridgeCli, PredictWritesTheFlowCurveAndRefusesWhatFitsNoMode) {
   const std::string table = testing::read_text(work() / "predicted.csv");
   expect_contains(table, {"# mode: (b) E* from the measured G'",
                           "\nshear_rate [1/s],shear_stress [Pa],N1 [Pa],N2 [Pa],"
-                          "shear_stress_band [Pa],N1_band [Pa],N2_band [Pa],extrapolated [1]\n",
+                          "shear_stress_band [Pa],N1_band [Pa],N2_band [Pa],"
+                          "shear_stress_model_error [Pa],extrapolated [1]\n",
+                          "the model's systematic error in mode b (tabulated)",
                           "\n0.01,", "\n100,"});
   const Outcome c = bridge(base + " --plateau-modulus 143 --yield-stress 15");
   ASSERT_EQ(c.code, 0) << c.err;

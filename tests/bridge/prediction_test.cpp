@@ -27,8 +27,18 @@ struct Fixture {
 
 constexpr double kViscosity = 1e-3;
 
+// Inputs at φ and the water-like η_s; each test sets what its mode takes.
+PredictionInputs at(double phi) {
+  PredictionInputs in;
+  in.phi = phi;
+  in.viscosity = kViscosity;
+  return in;
+}
+
 PredictionInputs with_modulus(double e_star) {
-  return {.phi = 0.8, .viscosity = kViscosity, .modulus = e_star};
+  PredictionInputs in = at(0.8);
+  in.modulus = e_star;
+  return in;
 }
 
 double stress(const Prediction& p, std::size_t i) {
@@ -64,9 +74,9 @@ TEST(Prediction, ModeBIsModeAAtTheModulusOfGPrimeWithItsError) {
   const double g_prime = 150.0;
   const MaterialValue e_star = contact_modulus_from_plateau(f.law, 0.8, g_prime, false);
   const std::vector<double> rates{0.01, 1.0, 100.0};
-  const Prediction b = predict(f.law, f.curves,
-                               {.phi = 0.8, .viscosity = kViscosity, .plateau_modulus = g_prime},
-                               rates);
+  PredictionInputs in = at(0.8);
+  in.plateau_modulus = g_prime;
+  const Prediction b = predict(f.law, f.curves, in, rates);
   const Prediction a = predict(f.law, f.curves, with_modulus(e_star.value), rates);
   EXPECT_EQ(b.mode, PredictionMode::plateau_modulus);
   EXPECT_NEAR(b.modulus.value / e_star.value, 1.0, 1e-14);
@@ -79,10 +89,9 @@ TEST(Prediction, ModeBIsModeAAtTheModulusOfGPrimeWithItsError) {
 TEST(Prediction, ModeCStartsAtTheMeasuredYieldStress) {
   const Fixture f;
   const double tau_y = 20.0, e_star = 2000.0;
-  const Prediction c = predict(
-      f.law, f.curves,
-      {.phi = 0.8, .viscosity = kViscosity, .modulus = e_star, .yield_stress = tau_y},
-      {1e-12, 1.0});
+  PredictionInputs in = with_modulus(e_star);
+  in.yield_stress = tau_y;
+  const Prediction c = predict(f.law, f.curves, in, {1e-12, 1.0});
   EXPECT_EQ(c.mode, PredictionMode::yield_stress);
   EXPECT_NEAR(stress(c, 0) / tau_y, 1.0, 1e-4);
   // Shape from the simulations: τ/τ_y,m = σ̃/σ̃_y at the same γ̃ when no G' rescales it.
@@ -93,14 +102,13 @@ TEST(Prediction, ModeCStartsAtTheMeasuredYieldStress) {
   const MaterialValue g0 = interpolate_value(f.law.phi, f.law.modulus, 0.8);
   const double sigma_y = stress(a, 0) / e_star;  // σ̃_y: (a) at rest, in units of E*
   const double g_prime = tau_y * g0.value / sigma_y;
-  const Prediction cg = predict(
-      f.law, f.curves,
-      {.phi = 0.8, .viscosity = kViscosity, .plateau_modulus = g_prime, .yield_stress = tau_y},
-      {1.0});
-  const Prediction same_e = predict(
-      f.law, f.curves,
-      {.phi = 0.8, .viscosity = kViscosity, .modulus = cg.modulus.value, .yield_stress = tau_y},
-      {1.0});
+  PredictionInputs with_g = at(0.8);
+  with_g.plateau_modulus = g_prime;
+  with_g.yield_stress = tau_y;
+  const Prediction cg = predict(f.law, f.curves, with_g, {1.0});
+  PredictionInputs same = with_modulus(cg.modulus.value);
+  same.yield_stress = tau_y;
+  const Prediction same_e = predict(f.law, f.curves, same, {1.0});
   EXPECT_NEAR(stress(cg, 0) / stress(same_e, 0), 1.0, 1e-4);
 }
 
@@ -111,9 +119,9 @@ TEST(Prediction, ModeDRecoversTheModulusOfACurveModeAMade) {
   for (int i = 0; i < 12; ++i) curve.shear_rate.push_back(1e-2 * std::pow(10.0, i / 3.0));
   const Prediction a = predict(f.law, f.curves, with_modulus(e_star), curve.shear_rate);
   for (std::size_t i = 0; i < curve.shear_rate.size(); ++i) curve.stress.push_back(stress(a, i));
-  const Prediction d =
-      predict(f.law, f.curves, {.phi = 0.8, .viscosity = kViscosity, .measured_curve = curve},
-              {1.0});
+  PredictionInputs fit = at(0.8);
+  fit.measured_curve = curve;
+  const Prediction d = predict(f.law, f.curves, fit, {1.0});
   EXPECT_EQ(d.mode, PredictionMode::fitted_modulus);
   EXPECT_NEAR(d.modulus.value / e_star, 1.0, 1e-7);
   EXPECT_LT(d.modulus.error() / e_star, 1e-6);  // a perfect fit leaves no error
@@ -124,10 +132,10 @@ TEST(Prediction, ModeDRecoversTheModulusOfACurveModeAMade) {
 // in mode (c) its yield stress is the measured one.
 TEST(Prediction, TheModesMaterialIsItsPrediction) {
   const Fixture f;
-  for (const PredictionInputs& in :
-       {PredictionInputs{.phi = 0.8, .viscosity = kViscosity, .modulus = 2500.0},
-        PredictionInputs{.phi = 0.82, .viscosity = kViscosity, .plateau_modulus = 150.0,
-                         .yield_stress = 12.0}}) {
+  PredictionInputs c = at(0.82);
+  c.plateau_modulus = 150.0;
+  c.yield_stress = 12.0;
+  for (const PredictionInputs& in : {with_modulus(2500.0), c}) {
     const PredictionScales scales = prediction_scales(f.law, f.curves, in);
     const TabulatedMaterial m = tabulated_material_in_mode(f.law, f.curves, in, scales);
     std::vector<double> rates;
@@ -137,13 +145,35 @@ TEST(Prediction, TheModesMaterialIsItsPrediction) {
       EXPECT_NEAR(stress(p, i) / m.rows[i].value[index(Quantity::sigma)]->value, 1.0, 1e-12)
           << mode_name(scales.mode) << " " << i;
     EXPECT_EQ(m.source, mode_name(scales.mode));
-    if (in.yield_stress) EXPECT_NEAR(m.yield.value / *in.yield_stress, 1.0, 1e-14);
+    if (in.yield_stress) {
+      EXPECT_NEAR(m.yield.value / *in.yield_stress, 1.0, 1e-14);
+    }
   }
+}
+
+// The scoreboard's error beside the law (bridge_law_paper_sweep_model_error.csv)
+// is stated per point by its branch: the plateau's median below 1.5 τ_y, the
+// flowing branch's above; a mode the scoreboard has not measured gets none.
+TEST(Prediction, StatesTheModelErrorOfItsModeByBranch) {
+  const Fixture f;
+  const std::optional<ModelError> error = read_model_error(kLawFile);
+  ASSERT_TRUE(error.has_value());
+  PredictionInputs in = with_modulus(2000.0);
+  in.yield_stress = 10.0;
+  in.model_error = error;
+  const Prediction c = predict(f.law, f.curves, in, {1e-6, 1e3});
+  const ModelErrorEntry& plateau = error->at({'c', "tabulated", "plateau"});
+  const ModelErrorEntry& flowing = error->at({'c', "tabulated", "flowing"});
+  EXPECT_NEAR(*c.points[0].model_error, plateau.median_abs_error * stress(c, 0), 1e-12);
+  EXPECT_NEAR(*c.points[1].model_error, flowing.median_abs_error * stress(c, 1), 1e-12);
+  PredictionInputs a = with_modulus(2000.0);
+  a.model_error = error;
+  EXPECT_FALSE(predict(f.law, f.curves, a, {1.0}).points[0].model_error.has_value());
 }
 
 TEST(Prediction, RefusesInputsThatFitNoMode) {
   const Fixture f;
-  MeasuredCurve curve{.label = "c", .shear_rate = {1, 2, 3, 4}, .stress = {5, 6, 7, 8}};
+  MeasuredCurve curve{.label = "c", .shear_rate = {1, 2, 3, 4}, .stress = {5, 6, 7, 8}, .N1 = {}};
   const auto refused = [&](const PredictionInputs& in, const std::string& words) {
     try {
       predict(f.law, f.curves, in, {1.0});
@@ -152,13 +182,19 @@ TEST(Prediction, RefusesInputsThatFitNoMode) {
       EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
     }
   };
-  refused({.phi = 0.8, .viscosity = kViscosity}, "no E*");
-  refused({.phi = 0.8, .viscosity = kViscosity, .yield_stress = 10.0}, "mode (c) needs");
-  refused({.phi = 0.8, .viscosity = kViscosity, .modulus = 1e3, .measured_curve = curve},
-          "mode (d) fits E*");
-  refused({.phi = 0.8, .viscosity = kViscosity, .modulus = 1e3, .plateau_modulus = 100.0},
-          "not both");
-  refused({.phi = 0.95, .viscosity = kViscosity, .modulus = 1e3}, "outside the simulated range");
+  refused(at(0.8), "no E*");
+  PredictionInputs yield_only = at(0.8);
+  yield_only.yield_stress = 10.0;
+  refused(yield_only, "mode (c) needs");
+  PredictionInputs fit_and_modulus = with_modulus(1e3);
+  fit_and_modulus.measured_curve = curve;
+  refused(fit_and_modulus, "mode (d) fits E*");
+  PredictionInputs twice = with_modulus(1e3);
+  twice.plateau_modulus = 100.0;
+  refused(twice, "not both");
+  PredictionInputs outside = with_modulus(1e3);
+  outside.phi = 0.95;
+  refused(outside, "outside the simulated range");
 }
 
 }  // namespace
