@@ -9,21 +9,16 @@
 #include <cmath>
 #include <filesystem>
 
-#include "bridge/app/law_file.h"
 #include "bridge/material/prediction.h"
 #include "bridge_test_support.h"
+#include "bundled_law.h"
 #include "common/errors.h"
 
 namespace softglass::bridge {
 namespace {
 
-const std::filesystem::path kLawFile =
-    std::filesystem::path(SOFTGLASS_SOURCE_DIR) / "cases" / "bridge_law_paper_sweep.prm";
-
-struct Fixture {
-  Law law = read_law_file(kLawFile);
-  SimulatedCurves curves = read_simulated_curves(kLawFile, law);
-};
+using Fixture = testing::BundledLaw;
+const std::filesystem::path& kLawFile = testing::kBundledLaw;
 
 constexpr double kViscosity = 1e-3;
 

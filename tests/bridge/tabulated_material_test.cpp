@@ -9,9 +9,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "bridge/app/law_file.h"
 #include "bridge/material/tabulated_material.h"
 #include "bridge_test_support.h"
+#include "bundled_law.h"
 #include "common/csv_table.h"
 #include "common/errors.h"
 #include "tests/common/test_files.h"
@@ -19,13 +19,8 @@
 namespace softglass::bridge {
 namespace {
 
-const std::filesystem::path kLawFile =
-    std::filesystem::path(SOFTGLASS_SOURCE_DIR) / "cases" / "bridge_law_paper_sweep.prm";
-
-struct Fixture {
-  Law law = read_law_file(kLawFile);
-  SimulatedCurves curves = read_simulated_curves(kLawFile, law);
-};
+using Fixture = testing::BundledLaw;
+const std::filesystem::path& kLawFile = testing::kBundledLaw;
 
 // σ̃ at (φ, γ̃) straight from the points file.
 double point(double phi, double gamma_tilde) {
