@@ -3,7 +3,7 @@
 # in ../shared/data/rheometry, in every prediction mode each supports, with the
 # tabulated law and its Herschel-Bulkley summary side by side
 # (scripts/validate_measured.py; the castor-oil cell's torques by macro compare
-# in modes (b), (c), (d)). About five minutes on 2 cores.
+# in modes (b), (c), (d)). Not in CI.
 #   bench/validate_measured.sh BUILD_DIR [LAW]
 # Writes bench/results/validate_measured-DATE.md (the whole table, per phi
 # too), replaces the scoreboard block of docs/validation.md with it, and

@@ -18,10 +18,6 @@ std::vector<std::string> provenance(const std::string& title, const std::string&
                       kGitRevision, fmt::gmtime(std::time(nullptr)))};
 }
 
-std::filesystem::path beside(const std::filesystem::path& main, const std::string& suffix) {
-  return main.parent_path() / (main.stem().string() + suffix);
-}
-
 void write(AtomicOutput& out, const std::string& text) {
   write_file(out.temporary_path(), out.final_path().string(), [&](std::ostream& f) { f << text; });
 }
@@ -56,13 +52,35 @@ double contact_modulus(const ModulusSource& s, const Law& law, double phi, bool 
         100.0 * e_star.error() / e_star.value));
     return e_star.value;
   }
+  return emulsion_modulus(s, lines);
+}
+
+double emulsion_modulus(const ModulusSource& s, std::vector<std::string>& lines) {
   require(*s.interfacial_tension > 0 && *s.radius > 0,
           "the interfacial tension and the radius must be positive");
-  lines.push_back(
-      fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m (Seth et al. "
-                  "2006, emulsions)",
-                  *s.interfacial_tension, *s.radius));
-  return 9.92 * *s.interfacial_tension / *s.radius;
+  const double e_star = 9.92 * *s.interfacial_tension / *s.radius;
+  lines.push_back(fmt::format(
+      "E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m = {:.6g} Pa (Seth et al. 2006, "
+      "emulsions)",
+      *s.interfacial_tension, *s.radius, e_star));
+  return e_star;
+}
+
+PredictionInputs prediction_inputs(const ModulusSource& source, const ModeInputs& mode,
+                                   double phi, double viscosity, bool extrapolate,
+                                   std::vector<std::string>& lines) {
+  require(source.plateau_source == "static",
+          "the prediction modes take E* from the law's static G0 (mode b); --plateau-source "
+          "amplitude-sweep is for the Herschel-Bulkley material");
+  PredictionInputs in;
+  in.phi = phi;
+  in.viscosity = viscosity;
+  in.extrapolate = extrapolate;
+  in.modulus = source.interfacial_tension ? emulsion_modulus(source, lines) : source.modulus;
+  in.plateau_modulus = source.plateau_modulus;
+  in.yield_stress = mode.yield_stress;
+  if (!mode.fit_to.empty()) in.measured_curve = measured_curve(mode.fit_to, mode.fit_curve, mode.units);
+  return in;
 }
 
 }  // namespace softglass::bridge

@@ -125,25 +125,8 @@ namespace {
 // provenance.
 void write_tabulated_material(const MaterialOptions& o, const Law& law,
                               std::vector<std::string> lines, std::optional<AtomicOutput>& out) {
-  require(o.source.plateau_source == "static",
-          "--tabulated takes E* from the law's static G0 (mode b); --plateau-source "
-          "amplitude-sweep is for the Herschel-Bulkley material");
-  PredictionInputs in{.phi = o.phi,
-                      .viscosity = o.viscosity,
-                      .modulus = o.source.modulus,
-                      .plateau_modulus = o.source.plateau_modulus,
-                      .yield_stress = o.yield_stress,
-                      .measured_curve = std::nullopt,
-                      .extrapolate = o.extrapolate,
-                      .form = LawForm::tabulated,
-                      .model_error = std::nullopt};
-  if (o.source.interfacial_tension) {
-    in.modulus = 9.92 * *o.source.interfacial_tension / *o.source.radius;
-    lines.push_back(fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m = {:.6g} Pa "
-                                "(Seth et al. 2006, emulsions)",
-                                *o.source.interfacial_tension, *o.source.radius, *in.modulus));
-  }
-  if (!o.fit_to.empty()) in.measured_curve = measured_curve(o.fit_to, o.fit_curve, o.units);
+  const PredictionInputs in =
+      prediction_inputs(o.source, o.mode, o.phi, o.viscosity, o.extrapolate, lines);
   const SimulatedCurves curves = read_simulated_curves(o.law, law);
   const PredictionScales scales = prediction_scales(law, curves, in);
   lines.push_back("mode:     " + mode_name(scales.mode));
@@ -178,7 +161,7 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
     write_tabulated_material(o, law, lines, out);
     return;
   }
-  require(!o.yield_stress && o.fit_to.empty(),
+  require(!o.mode.yield_stress && o.mode.fit_to.empty(),
           "modes (c) and (d) (--yield-stress, --fit-to) write the simulated flow curve itself: "
           "add --tabulated");
   MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};

@@ -46,6 +46,15 @@ struct ModulusSource {
   std::string plateau_source = "static";
 };
 
+/// What modes (c) and (d) of bridge/material/prediction.h take besides E*:
+/// a measured yield stress, or a measured flow curve to fit E* to.
+struct ModeInputs {
+  std::optional<double> yield_stress;  // mode (c) [Pa]
+  std::filesystem::path fit_to;        // mode (d): the measured flow curve
+  std::string fit_curve;               // its label, when the file holds several
+  FallbackUnits units;                 // of its columns without units
+};
+
 struct MaterialOptions {
   std::filesystem::path law, output;  // output empty: standard output
   double phi = 0.0, viscosity = 0.0;
@@ -57,10 +66,7 @@ struct MaterialOptions {
   /// The simulated flow curve itself (tabulated_material.h) instead of the
   /// Herschel–Bulkley summary; then also modes (c) and (d) of prediction.h.
   bool tabulated = false;
-  std::optional<double> yield_stress;  // mode (c): a measured yield stress [Pa]
-  std::filesystem::path fit_to;        // mode (d): the measured curve E* is fitted to
-  std::string fit_curve;               // its label, when the file holds several
-  FallbackUnits units;
+  ModeInputs mode;
 };
 
 /// Writes the material fragment for (φ, E*, η_s) from a law file. With a
@@ -71,12 +77,10 @@ void material_command(const MaterialOptions& options, const std::string& command
 struct PredictOptions {
   std::filesystem::path law, output;  // output empty: standard output
   double phi = 0.0, viscosity = 0.0;
-  std::optional<double> modulus, interfacial_tension, radius, plateau_modulus, yield_stress;
-  std::filesystem::path fit_to;  // mode (d): the measured flow curve
-  std::string fit_curve;         // its label, when the file holds several
-  std::string rates;             // a list of numbers, or a measured file
-  std::string curve;             // the label of the rates' curve
-  FallbackUnits units;
+  ModulusSource source;  // plateau_source stays "static": predict uses the law's G0
+  ModeInputs mode;
+  std::string rates;  // a list of numbers, or a measured file
+  std::string curve;  // the label of the rates' curve
   std::string form = "tabulated";  // or herschel-bulkley: the summary
   bool extrapolate = false, force = false;
 };

@@ -161,15 +161,15 @@ int main(int argc, char** argv) {
                          "LAW_points.csv and LAW_phi.csv `bridge fit` writes) instead of the "
                          "Herschel-Bulkley summary");
   material_cmd
-      ->add_option("--yield-stress", material.yield_stress,
+      ->add_option("--yield-stress", material.mode.yield_stress,
                    "with --tabulated: a measured yield stress [Pa] (mode c, docs/bridge.md)")
       ->check(positive);
   auto* fit_to = material_cmd->add_option(
-      "--fit-to", material.fit_to,
+      "--fit-to", material.mode.fit_to,
       "with --tabulated: a measured flow curve (CSV) to fit E* to (mode d)");
-  material_cmd->add_option("--fit-curve", material.fit_curve, "the curve of --fit-to, by label");
-  material_cmd->add_option("--rate-unit", material.units.rate, "units of --fit-to's rates");
-  material_cmd->add_option("--stress-unit", material.units.stress, "units of --fit-to's stresses");
+  material_cmd->add_option("--fit-curve", material.mode.fit_curve, "the curve of --fit-to, by label");
+  material_cmd->add_option("--rate-unit", material.mode.units.rate, "units of --fit-to's rates");
+  material_cmd->add_option("--stress-unit", material.mode.units.stress, "units of --fit-to's stresses");
   fit_to->excludes(modulus);
   fit_to->excludes(plateau);
   fit_to->excludes(tension);
@@ -337,7 +337,7 @@ int main(int argc, char** argv) {
          {std::tuple(material_cmd, &material.source, "material"),
           std::tuple(sweep_cmd, &sweep.source, "amplitude-sweep")}) {
       if (*cmd && !source->modulus && !source->interfacial_tension && !source->plateau_modulus &&
-          material.fit_to.empty())
+          material.mode.fit_to.empty())
         throw CLI::ValidationError(fmt::format(
             "{}: give --modulus, --plateau-modulus, or --interfacial-tension and --radius", name));
     }

@@ -38,7 +38,7 @@ std::vector<double> requested_rates(const PredictOptions& o) {
   if (numbers && !rates.empty()) return rates;
   require(std::filesystem::exists(o.rates),
           fmt::format("--rates {}: neither a list of numbers nor a file", o.rates));
-  return measured_curve(o.rates, o.curve, o.units).shear_rate;
+  return measured_curve(o.rates, o.curve, o.mode.units).shear_rate;
 }
 
 }  // namespace
@@ -71,29 +71,29 @@ CLI::App* add_predict_command(CLI::App& app, PredictOptions& o) {
   cmd->add_option("--viscosity", o.viscosity, "solvent viscosity eta_s [Pa s]")
       ->required()
       ->check(positive);
-  auto* modulus = cmd->add_option("--modulus", o.modulus, "contact modulus E* [Pa]")->check(positive);
-  auto* tension = cmd->add_option("--interfacial-tension", o.interfacial_tension,
+  auto* modulus = cmd->add_option("--modulus", o.source.modulus, "contact modulus E* [Pa]")->check(positive);
+  auto* tension = cmd->add_option("--interfacial-tension", o.source.interfacial_tension,
                                   "emulsions: gamma_i [N/m], with --radius: E* = 9.92 gamma_i / R")
                       ->check(positive);
-  auto* radius = cmd->add_option("--radius", o.radius, "mean droplet radius R [m]")->check(positive);
-  auto* plateau = cmd->add_option("--plateau-modulus", o.plateau_modulus,
+  auto* radius = cmd->add_option("--radius", o.source.radius, "mean droplet radius R [m]")->check(positive);
+  auto* plateau = cmd->add_option("--plateau-modulus", o.source.plateau_modulus,
                                   "measured linear shear modulus G' [Pa]: E* = G'/(G0/E*)(phi) "
                                   "(mode b; with --yield-stress, mode c)")
                       ->check(positive);
-  cmd->add_option("--yield-stress", o.yield_stress,
+  cmd->add_option("--yield-stress", o.mode.yield_stress,
                   "measured yield stress [Pa] (mode c: the model gives the rate dependence and "
                   "the normal stresses)")
       ->check(positive);
-  auto* fit = cmd->add_option("--fit-to", o.fit_to,
+  auto* fit = cmd->add_option("--fit-to", o.mode.fit_to,
                               "a measured flow curve (CSV) to fit E* to (mode d)");
-  cmd->add_option("--fit-curve", o.fit_curve, "the curve of --fit-to's file, by its label");
+  cmd->add_option("--fit-curve", o.mode.fit_curve, "the curve of --fit-to's file, by its label");
   cmd->add_option("--rates", o.rates,
                   "shear rates [1/s]: a comma-separated list, or a measured file whose rates "
                   "to predict at")
       ->required();
   cmd->add_option("--curve", o.curve, "the curve of --rates' file, by its label");
-  cmd->add_option("--rate-unit", o.units.rate, "units of rate columns without units");
-  cmd->add_option("--stress-unit", o.units.stress, "units of stress columns without units");
+  cmd->add_option("--rate-unit", o.mode.units.rate, "units of rate columns without units");
+  cmd->add_option("--stress-unit", o.mode.units.stress, "units of stress columns without units");
   cmd->add_option("--law-form", o.form,
                   "tabulated (the simulated flow curve itself) or herschel-bulkley (its fitted "
                   "summary, to compare)")
@@ -118,26 +118,13 @@ void predict_command(const PredictOptions& o, const std::string& command_line) {
   std::optional<AtomicOutput> out;
   if (!o.output.empty()) out.emplace(o.output, o.force);
   const Law law = read_law_file(o.law);
-  PredictionInputs in{.phi = o.phi,
-                      .viscosity = o.viscosity,
-                      .modulus = o.modulus,
-                      .plateau_modulus = o.plateau_modulus,
-                      .yield_stress = o.yield_stress,
-                      .measured_curve = std::nullopt,
-                      .extrapolate = o.extrapolate,
-                      .form = o.form == "tabulated" ? LawForm::tabulated
-                                                    : LawForm::herschel_bulkley,
-                      .model_error = read_model_error(o.law)};
   std::vector<std::string> lines =
       provenance("softglass bridge predict: a flow curve from a law file", command_line);
   lines.push_back("law:      " + o.law.string());
-  if (o.interfacial_tension) {
-    in.modulus = 9.92 * *o.interfacial_tension / *o.radius;
-    lines.push_back(fmt::format("E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m = {:.6g} Pa "
-                                "(Seth et al. 2006, emulsions)",
-                                *o.interfacial_tension, *o.radius, *in.modulus));
-  }
-  if (!o.fit_to.empty()) in.measured_curve = measured_curve(o.fit_to, o.fit_curve, o.units);
+  PredictionInputs in =
+      prediction_inputs(o.source, o.mode, o.phi, o.viscosity, o.extrapolate, lines);
+  in.form = o.form == "tabulated" ? LawForm::tabulated : LawForm::herschel_bulkley;
+  in.model_error = read_model_error(o.law);
   lines.push_back(fmt::format("phi = {}, eta_s = {:.6g} Pa s", o.phi, o.viscosity));
   const Prediction p = predict(law, read_simulated_curves(o.law, law), in, requested_rates(o));
   const std::string text = prediction_table(p, lines);

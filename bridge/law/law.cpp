@@ -117,6 +117,10 @@ void require_finite(const Estimate& e, const std::string& source, const std::str
 
 }  // namespace
 
+std::filesystem::path beside(const std::filesystem::path& main, const std::string& suffix) {
+  return main.parent_path() / (main.stem().string() + suffix);
+}
+
 void validate(const Law& law, const std::string& source) {
   const std::size_t n = law.phi.size();
   if (n == 0) throw InputError(source + ": the law has no volume fractions");

@@ -17,6 +17,7 @@
 // exponent.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,10 @@ struct PaperValues {
   static constexpr Estimate exponent{0.50, 0.02};
   static constexpr double yield_strain_min = 0.02, yield_strain_max = 0.04;
 };
+
+/// A result file beside `main`: law.prm → law_phi.csv, the naming of the
+/// tables `bridge fit` writes beside its law file (and of other results).
+std::filesystem::path beside(const std::filesystem::path& main, const std::string& suffix);
 
 /// The name of an entry list in the law file for one quantity: "sigma", "N1", "N2", "f_m".
 inline const char* law_subsection(Quantity q) {

@@ -2,14 +2,14 @@
 
 #include <fmt/format.h>
 
+#include "bridge/law/law.h"
 #include "common/csv_table.h"
 #include "common/errors.h"
 
 namespace softglass::bridge {
 
 std::optional<ModelError> read_model_error(const std::filesystem::path& law_file) {
-  std::filesystem::path file = law_file;
-  file.replace_filename(law_file.stem().string() + "_model_error.csv");
+  const std::filesystem::path file = beside(law_file, "_model_error.csv");
   if (!std::filesystem::exists(file)) return std::nullopt;
   const CsvTable csv = CsvTable::read(file);
   const auto column = [&csv](const char* name) {

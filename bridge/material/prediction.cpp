@@ -70,7 +70,8 @@ class ReducedCurve {
   }
   /// d ln σ̃/d ln γ̃ = Δ n/σ̃ (the yield stress does not change with the rate).
   double slope(double gamma) const {
-    return shear_->excess_stress(gamma) * shear_->local_flow_index(gamma) / shear_->stress(gamma);
+    const auto [excess, n] = shear_->excess_and_flow_index(gamma);
+    return excess * n / (shear_->yield_stress() + excess);
   }
   bool outside(double gamma) const {
     const double x = std::log(gamma);

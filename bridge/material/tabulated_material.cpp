@@ -15,13 +15,6 @@ namespace softglass::bridge {
 
 namespace {
 
-// law.prm → law_points.csv (the naming of `bridge fit`'s outputs).
-std::filesystem::path companion(const std::filesystem::path& law_file, const std::string& suffix) {
-  std::filesystem::path p = law_file;
-  p.replace_filename(law_file.stem().string() + suffix);
-  return p;
-}
-
 std::size_t column(const CsvTable& csv, const std::string& header) {
   const auto c = csv.find(header);
   require(c.has_value(), fmt::format("{}: no column '{}' (a table of `bridge fit`?)",
@@ -39,8 +32,8 @@ std::optional<std::size_t> phi_index(const std::vector<double>& phi, double valu
 }  // namespace
 
 SimulatedCurves read_simulated_curves(const std::filesystem::path& law_file, const Law& law) {
-  const std::filesystem::path points_file = companion(law_file, "_points.csv"),
-                              phi_file = companion(law_file, "_phi.csv");
+  const std::filesystem::path points_file = beside(law_file, "_points.csv"),
+                              phi_file = beside(law_file, "_phi.csv");
   for (const auto& f : {points_file, phi_file})
     require(std::filesystem::exists(f),
             fmt::format("--tabulated needs the simulated points `bridge fit` writes beside the law "

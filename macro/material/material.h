@@ -13,7 +13,6 @@
 #include <memory>
 #include <string>
 
-#include "macro/material/herschel_bulkley.h"
 #include "macro/material/normal_stress.h"
 #include "macro/material/shear_law.h"
 
@@ -30,15 +29,5 @@ struct Material {
 /// The largest flow index a material file may give (shear thickening up to
 /// n = 2, docs/material-format.md).
 inline constexpr double kLargestFlowIndex = 2.0;
-
-/// A Herschel–Bulkley material, `model` naming the restriction the file
-/// declares (herschel-bulkley, bingham, power-law, newtonian), after the rules
-/// of docs/material-format.md: every value finite, yield stress ≥ 0,
-/// consistency > 0, 0 < flow index ≤ 2; bingham and newtonian require flow
-/// index 1, newtonian and power-law yield stress 0; N1 and N2 flow indices > 0
-/// (a normal stress difference must stay finite at rest). Throws InputError
-/// naming the entry as the file spells it, its value and what is allowed.
-Material herschel_bulkley_material(const std::string& model, const HerschelBulkley& shear,
-                                   const NormalStressLaw& n1 = {}, const NormalStressLaw& n2 = {});
 
 }  // namespace softglass::macro

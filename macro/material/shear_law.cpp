@@ -6,9 +6,8 @@ namespace softglass::macro {
 
 Viscosity ShearLaw::regularised_flow_viscosity(double rate, double rate_scale) const {
   const double s = std::hypot(rate, rate_scale);
-  const double excess = excess_stress(s);
-  return {.value = excess / s,
-          .derivative = (local_flow_index(s) - 1.0) * excess * rate / (s * s * s)};
+  const auto [excess, n] = excess_and_flow_index(s);
+  return {.value = excess / s, .derivative = (n - 1.0) * excess * rate / (s * s * s)};
 }
 
 }  // namespace softglass::macro

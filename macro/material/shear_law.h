@@ -64,6 +64,13 @@ class ShearLaw {
   /// n(γ̇) = d ln Δ / d ln γ̇ > 0 at γ̇ > 0.
   virtual double local_flow_index(double rate) const = 0;
 
+  /// Δ(γ̇) and n(γ̇) together, γ̇ > 0: what the regularised viscosity needs at
+  /// every quadrature point of every Newton step. A law that finds both in
+  /// one evaluation (a table: one interval look-up) overrides it.
+  virtual std::pair<double, double> excess_and_flow_index(double rate) const {
+    return {excess_stress(rate), local_flow_index(rate)};
+  }
+
   /// The excess stresses at which Δ is only finitely smooth (a table's
   /// nodes), empty for an analytic law: quadratures over the law split there.
   virtual std::vector<double> excess_breakpoints() const { return {}; }

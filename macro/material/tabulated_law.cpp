@@ -92,7 +92,7 @@ class TabulatedLaw final : public ShearLaw {
 
   double excess_stress(double rate) const override {
     if (rate <= 0.0) return 0.0;
-    return std::exp(log_excess_at(std::log(rate)));
+    return excess_and_flow_index(rate).first;
   }
   double stress(double rate) const override { return yield_stress_ + excess_stress(rate); }
 
@@ -116,10 +116,16 @@ class TabulatedLaw final : public ShearLaw {
   }
 
   double local_flow_index(double rate) const override {
+    return excess_and_flow_index(rate).second;
+  }
+
+  // ln Δ = P(ln γ̇) inside the window, the end power laws outside.
+  std::pair<double, double> excess_and_flow_index(double rate) const override {
     const double x = std::log(rate);
-    if (x <= x_lo_) return n_lo_;
-    if (x >= x_hi_) return n_hi_;
-    return p_.derivative(x);
+    if (x <= x_lo_) return {std::exp(p_.values().front() + n_lo_ * (x - x_lo_)), n_lo_};
+    if (x >= x_hi_) return {std::exp(p_.values().back() + n_hi_ * (x - x_hi_)), n_hi_};
+    const auto [log_excess, n] = p_.value_and_derivative(x);
+    return {std::exp(log_excess), n};
   }
 
   // On an interval of width h the cubic's slope is a quadratic in t ∈ [0, 1]:
@@ -165,11 +171,6 @@ class TabulatedLaw final : public ShearLaw {
   numerics::MonotoneCubic p_;
   double n_lo_ = 0.0, n_hi_ = 0.0, x_lo_ = 0.0, x_hi_ = 0.0;
 
-  double log_excess_at(double x) const {
-    if (x <= x_lo_) return p_.values().front() + n_lo_ * (x - x_lo_);
-    if (x >= x_hi_) return p_.values().back() + n_hi_ * (x - x_hi_);
-    return p_.value(x);
-  }
 };
 
 class TabulatedNormalStress final : public NormalStressCurve {

@@ -65,16 +65,11 @@ std::size_t MonotoneCubic::interval(double x) const {
   return std::min(k, x_.size() - 2);
 }
 
-double MonotoneCubic::value(double x) const {
+std::pair<double, double> MonotoneCubic::value_and_derivative(double x) const {
   const std::size_t k = interval(x);
   const Hermite c{y_[k], y_[k + 1], d_[k], d_[k + 1], x_[k + 1] - x_[k]};
-  return c.value((x - x_[k]) / c.h);
-}
-
-double MonotoneCubic::derivative(double x) const {
-  const std::size_t k = interval(x);
-  const Hermite c{y_[k], y_[k + 1], d_[k], d_[k + 1], x_[k + 1] - x_[k]};
-  return c.derivative((x - x_[k]) / c.h);
+  const double t = (x - x_[k]) / c.h;
+  return {c.value(t), c.derivative(t)};
 }
 
 double MonotoneCubic::inverse(double target) const {

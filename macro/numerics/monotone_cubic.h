@@ -22,6 +22,7 @@
 // slope (the callers' extrapolation) keeps the sign of the last interval.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 namespace softglass::macro::numerics {
@@ -34,9 +35,11 @@ class MonotoneCubic {
 
   /// The interpolant at x_0 ≤ x ≤ x_{M−1}; outside, the cubic of the end
   /// interval would be extrapolated, so callers handle the outside themselves.
-  double value(double x) const;
+  double value(double x) const { return value_and_derivative(x).first; }
   /// Its derivative there.
-  double derivative(double x) const;
+  double derivative(double x) const { return value_and_derivative(x).second; }
+  /// Both, from one look-up of the interval.
+  std::pair<double, double> value_and_derivative(double x) const;
 
   const std::vector<double>& nodes() const { return x_; }
   const std::vector<double>& values() const { return y_; }
