@@ -4,10 +4,10 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 
 namespace softglass {
 
@@ -51,14 +51,7 @@ std::vector<std::string> split_cells(std::string_view line, const std::string& w
 }  // namespace
 
 CsvTable CsvTable::read(const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file)) {
-    throw InputError(fmt::format("table '{}' does not exist", file.string()));
-  }
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw InputError(fmt::format("table '{}' cannot be read", file.string()));
-  return parse(text.str(), file.string());
+  return parse(read_input_text(file, "table"), file.string());
 }
 
 CsvTable CsvTable::parse(std::string_view text, std::string source) {

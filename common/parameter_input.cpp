@@ -3,16 +3,17 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>
 
-#include <fstream>
+#include <cctype>
 #include <map>
 #include <optional>
-#include <regex>
+#include <string_view>
 #include <sstream>
 #include <utility>
 #include <vector>
 
 #include "common/deal_ii_message.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 
 namespace softglass {
 
@@ -28,21 +29,26 @@ struct ExpandedText {
   std::vector<std::pair<std::string, std::size_t>> origin;
 };
 
-// `file`'s text after the checks a user's message needs: it exists, it is not
-// a directory, it can be read; without a leading UTF-8 byte-order mark.
-std::string read_text(const std::filesystem::path& file, const std::string& kind) {
-  if (std::filesystem::is_directory(file))
-    throw InputError(fmt::format("{} '{}' is a directory, not a file", kind, file.string()));
-  if (!std::filesystem::exists(file))
-    throw InputError(fmt::format("{} '{}' does not exist", kind, file.string()));
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof())
-    throw InputError(fmt::format("{} '{}' cannot be read", kind, file.string()));
-  std::string s = text.str();
-  if (s.starts_with("\xEF\xBB\xBF")) s.erase(0, 3);
-  return s;
+constexpr std::string_view kBlank = " \t\r\f\v";
+
+std::string_view trimmed(std::string_view s) {
+  const auto first = s.find_first_not_of(kBlank);
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(kBlank) - first + 1);
+}
+
+// `line` (trimmed) is `keyword` followed by blanks and a rest: the rest,
+// trimmed; otherwise nothing. ASCII case is ignored when `any_case`.
+std::optional<std::string_view> after_keyword(std::string_view line, std::string_view keyword,
+                                              bool any_case = false) {
+  if (line.size() <= keyword.size()) return std::nullopt;
+  for (std::size_t k = 0; k < keyword.size(); ++k) {
+    const char c = any_case ? static_cast<char>(std::tolower(static_cast<unsigned char>(line[k])))
+                            : line[k];
+    if (c != keyword[k]) return std::nullopt;
+  }
+  if (kBlank.find(line[keyword.size()]) == std::string_view::npos) return std::nullopt;
+  return trimmed(line.substr(keyword.size()));
 }
 
 // The statements of a parameter text, line by line: follows the subsections
@@ -54,17 +60,17 @@ class Statements {
     const bool statement = !continued_;
     continued_ = last != std::string::npos && line[last] == '\\';
     if (!statement) return std::nullopt;
-    line = line.substr(0, line.find('#'));
-    static const std::regex subsection(R"(^\s*subsection\s+(.*\S)\s*$)");
-    static const std::regex end(R"(^\s*end\s*$)");
-    static const std::regex set(R"(^\s*set\s+([^=]*\S)\s*=\s*(.*?)\s*$)");
-    std::smatch match;
-    if (std::regex_match(line, match, subsection)) {
-      path_.push_back(match[1].str());
-    } else if (std::regex_match(line, end)) {
+    const std::string_view text = trimmed(std::string_view(line).substr(0, line.find('#')));
+    if (const auto subsection = after_keyword(text, "subsection")) {
+      path_.emplace_back(*subsection);
+    } else if (text == "end") {
       if (!path_.empty()) path_.pop_back();
-    } else if (std::regex_match(line, match, set)) {
-      return SetEntry{path_, match[1].str(), match[2].str(), file, number};
+    } else if (const auto assignment = after_keyword(text, "set")) {
+      const auto equals = assignment->find('=');
+      const std::string_view name = trimmed(assignment->substr(0, equals));
+      if (equals != std::string_view::npos && !name.empty())
+        return SetEntry{path_, std::string(name), std::string(trimmed(assignment->substr(equals + 1))),
+                        file, number};
     }
     return std::nullopt;
   }
@@ -111,13 +117,13 @@ void expand(const std::filesystem::path& file, const std::string& kind, int dept
                                  "itself?)",
                                  kind, kMaxIncludeDepth, file.string()));
   }
-  static const std::regex include_line(R"(^\s*include\s+(\S+)\s*$)", std::regex::icase);
-  std::istringstream in(read_text(file, depth == 0 ? kind : "included file"));
+  std::istringstream in(
+      read_input_text(file, depth == 0 ? kind : "included file", kParameterFileLimits));
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
-    std::smatch match;
-    if (std::regex_match(line, match, include_line)) {
-      std::filesystem::path included = match[1].str();
+    const auto target = after_keyword(trimmed(line), "include", /*any_case=*/true);
+    if (target && target->find_first_of(kBlank) == std::string_view::npos) {
+      std::filesystem::path included{std::string(*target)};
       if (included.is_relative()) included = file.parent_path() / included;
       expand(included, kind, depth + 1, out, entries);
     } else {
@@ -132,14 +138,23 @@ void expand(const std::filesystem::path& file, const std::string& kind, int dept
 // file and line the user wrote. For an unknown subsection deal.II 9.4 leaves
 // the '>' out ("Line <8> of file <a.prm: There is no such subsection").
 std::string locate(const std::string& message, const ExpandedText& expanded) {
-  static const std::regex place(R"(Line <(\d+)> of file <[^>:]*>?)");
-  std::smatch match;
-  if (!std::regex_search(message, match, place)) return message;
-  const std::size_t line = std::stoul(match[1].str());
+  constexpr std::string_view kOpen = "Line <", kMiddle = "> of file <";
+  const std::size_t start = message.find(kOpen);
+  if (start == std::string::npos) return message;
+  std::size_t k = start + kOpen.size();
+  std::size_t line = 0;
+  const std::size_t digits = k;
+  for (; k < message.size() && std::isdigit(static_cast<unsigned char>(message[k])) && k - digits < 12;
+       ++k)
+    line = 10 * line + static_cast<std::size_t>(message[k] - '0');
+  if (k == digits || message.compare(k, kMiddle.size(), kMiddle) != 0) return message;
+  k = message.find_first_of(">:", k + kMiddle.size());
+  if (k == std::string::npos) k = message.size();
+  else if (message[k] == '>') ++k;
   if (line == 0 || line > expanded.origin.size()) return message;
   const auto& [file, number] = expanded.origin[line - 1];
-  return match.prefix().str() + fmt::format("line {} of file '{}'", number, file) +
-         match.suffix().str();
+  return message.substr(0, start) + fmt::format("line {} of file '{}'", number, file) +
+         message.substr(k);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include <ctime>
-#include <fstream>
+#include <sstream>
 
 #include "bridge/app/law_file.h"
 #include "bridge/app/report.h"
@@ -20,6 +20,7 @@
 #include "bridge/sweep/analysis.h"
 #include "common/atomic_output.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/progress.h"
 #include "common/version.h"
 
@@ -31,7 +32,7 @@ namespace {
 // without the explanations law_text writes after the provenance itself.
 std::vector<std::string> header_comments(const std::filesystem::path& file) {
   const std::string own = law_text(Law{});  // the explanations alone
-  std::ifstream in(file);
+  std::istringstream in(read_input_text(file, "law file", kParameterFileLimits));
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line) && line.starts_with("#");)
     if (own.find(line + "\n") == std::string::npos)

@@ -8,11 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <limits>
 #include <set>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 
 namespace softglass::macro::meshes {
 
@@ -66,8 +67,7 @@ void disc(Triangulation<2>& mesh, double radius) {
 }
 
 void gmsh(Triangulation<2>& mesh, const std::filesystem::path& file) {
-  std::ifstream in(file);
-  require(in.good(), fmt::format("duct: mesh file = '{}' cannot be read", file.string()));
+  std::istringstream in(read_input_text(file, "duct: mesh file"));
   GridIn<2> reader;
   reader.attach_triangulation(mesh);
   try {

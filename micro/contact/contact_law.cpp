@@ -2,10 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <iterator>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "micro/contact/registered_laws.h"
 
 namespace softglass::micro {
@@ -39,9 +38,7 @@ std::string ContactLawSpec::table() const {
   const std::string file = coefficients.has("file") ? coefficients.text("file") : "";
   if (file.empty())
     throw InputError("contact law 'table' needs 'table file' in subsection 'contact law'");
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("contact-law table '{}' cannot be opened", file));
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return read_input_text(file, "contact-law table");
 }
 
 ContactLawSpec completed(const ContactLawSpec& spec) {
