@@ -1,9 +1,14 @@
 #include "micro/analysis/shear_modulus.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <vector>
+
+#include "common/errors.h"
 
 namespace softglass::micro {
 
@@ -84,6 +89,19 @@ ShearModulus shear_modulus(ContactSystem& system, double tolerance) {
   result.direction_spread =
       std::sqrt(std::max(0.0, sum2 / count - result.modulus * result.modulus));
   return result;
+}
+
+void require_solid(const ShearModulus& modulus, const std::string& packing) {
+  const double g = modulus.modulus, spread = modulus.direction_spread;
+  if (std::isfinite(g) && g > 0 && spread < g) return;
+  const auto [lo, hi] = std::minmax_element(modulus.directions.begin(), modulus.directions.end());
+  throw NumericalError(fmt::format(
+      "{} is not a stable solid: its shear modulus G0 = {:.3e} E* {} (six simple shears "
+      "{:.3e} … {:.3e}, sd {:.2e}); a packing that is not at a stable minimum, or too small "
+      "to be isotropic, cannot be sheared into a flow curve: choose another seed or more "
+      "particles",
+      packing, g, g > 0 ? "is below the scatter of its six shears" : "is not positive", *lo, *hi,
+      spread));
 }
 
 }  // namespace softglass::micro

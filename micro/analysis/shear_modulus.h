@@ -25,6 +25,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <cstddef>
 
 #include "micro/model/contact_system.h"
@@ -47,5 +48,13 @@ struct ShearModulus {
 };
 
 ShearModulus shear_modulus(ContactSystem& system, double tolerance = 1e-10);
+
+/// A packing is a solid only if its modulus is positive and stands above the
+/// scatter of its six simple shears; otherwise it is not at a stable minimum (or
+/// too small to be isotropic) and every flow curve sheared from it would be
+/// that of another material. NumericalError naming `packing` (its φ and seed)
+/// and the figures, so that a campaign stops at the packing instead of at its
+/// last step.
+void require_solid(const ShearModulus& modulus, const std::string& packing);
 
 }  // namespace softglass::micro

@@ -139,6 +139,9 @@ RunRecord pack_and_measure(const MicroParameters& prm, std::shared_ptr<const Con
   ContactSystem system(record.packing_particles, record.packing_box, law, prm.packing.skin);
   record.modulus = shear_modulus(system);
   record.timings.modulus = seconds_since(modulus_start);
+  require_solid(record.modulus,
+                fmt::format("the packing of N = {} at phi = {} with seed {}", record.packing.particles,
+                            prm.packing.volume_fraction, prm.packing.seed));
   return record;
 }
 

@@ -116,7 +116,9 @@ void make_packings(const CaseSweep& sweep, const Workers& workers) {
         make_packing(sweep.packing_parameters(k), packings[k], workers, true);
       });
   if (!workers.all(failed == 0))
-    throw NumericalError("some packings failed (see above); rerun to retry");
+    throw NumericalError(
+        "some packings failed (see above); a packing refused as not a solid fails again on a "
+        "rerun: change its seed or the number of particles");
 }
 
 // `--case K` of a batch array: that case alone (and its packing), no lock.

@@ -4,6 +4,10 @@
 //     G_fd = (σ_xy(+δγ) − σ_xy(−δγ)) / (2 δγ).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
+#include "common/errors.h"
 #include "micro/analysis/shear_modulus.h"
 #include "micro/contact/contact_law.h"
 #include "micro/packing/fire.h"
@@ -114,6 +118,37 @@ TEST(ShearModulus, SixDirectionsArePermutationsOfOneFormula) {
   // the packings of this size are far from isotropic direction by direction
   std::printf("[ measured ] G0 %.4e, x-y %.4e, sd over directions %.2e\n", g.modulus,
               g.flow_gradient_modulus, g.direction_spread);
+}
+
+// The rule that stops a campaign at its packing: G0 positive and above the
+// scatter of the six shears, whatever the figures' sign pattern.
+TEST(ShearModulus, OnlyASolidPassesTheCheck) {
+  const auto with = [](std::array<double, 6> directions) {
+    ShearModulus m;
+    m.directions = directions;
+    double sum = 0, squares = 0;
+    for (const double g : directions) sum += g, squares += g * g;
+    m.modulus = sum / 6;
+    m.direction_spread = std::sqrt((squares - 6 * m.modulus * m.modulus) / 5);
+    return m;
+  };
+  EXPECT_NO_THROW(require_solid(with({0.05, 0.048, 0.052, 0.05, 0.049, 0.051}), "p"));
+  const auto message = [](const ShearModulus& m) {
+    try {
+      require_solid(m, "the packing of N = 150 at phi = 0.85 with seed 1");
+    } catch (const NumericalError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string negative = message(with({-0.01, 0.002, -0.02, 0.001, -0.005, 0.0}));
+  EXPECT_NE(negative.find("seed 1 is not a stable solid"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("is not positive"), std::string::npos) << negative;
+  EXPECT_NE(message(with({0.2, -0.1, 0.01, 0.0, 0.05, -0.05})).find("below the scatter"),
+            std::string::npos);
+  ShearModulus nan;
+  nan.modulus = std::nan("");
+  EXPECT_NE(message(nan), "accepted");
 }
 
 }  // namespace
