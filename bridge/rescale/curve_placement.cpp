@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -95,6 +96,18 @@ RescaledCurve place_curve(const MeasuredCurve& c, std::size_t j, const RescaleSe
   const std::optional<double> strain = pick(s.yield_strain, j), g0 = pick(s.shear_modulus, j);
   out.yield_stress_fitted = !given_yield;
   out.modulus_fitted = !s.modulus;
+  if (given_yield && out.modulus_fitted) {
+    // E* sets how fast the stress rises above τ_y: it needs points above it.
+    const auto above = std::count_if(stress.begin(), stress.end(),
+                                     [&](double t) { return t > *given_yield; });
+    require(above >= 2,
+            fmt::format("{}: the given yield stress {} Pa is not below the measured stresses ({} "
+                        "of {} points in the rate window above it, largest {:.4g} Pa): E* cannot "
+                        "be fitted from the rise above it; give the yield stress the curve "
+                        "flows from",
+                        what, *given_yield, above, stress.size(),
+                        *std::max_element(stress.begin(), stress.end())));
+  }
   if (!given_yield) {
     if (!hb.converged)
       throw NumericalError(what + ": the Herschel-Bulkley fit failed: " + hb.status);
@@ -144,6 +157,15 @@ RescaledCurve place_curve(const MeasuredCurve& c, std::size_t j, const RescaleSe
     std::tie(tau_y, e_star) = unpack(fit.p);
     if (yield_slot >= 0) yield_error = tau_y * fit.error(yield_slot);
     if (modulus_slot >= 0) modulus_error = e_star * fit.error(modulus_slot);
+  }
+  if (!(std::isfinite(tau_y) && std::isfinite(e_star) && std::isfinite(yield_error) &&
+        std::isfinite(modulus_error) && tau_y > 0 && e_star > 0 && yield_error < tau_y &&
+        modulus_error < e_star)) {
+    throw NumericalError(fmt::format("{}: the fit gave tau_y = {:.3g} +- {:.3g} Pa, E* = {:.3g} "
+                                     "+- {:.3g} Pa, which are not finite positive values known "
+                                     "better than to a factor of two; the curve does not "
+                                     "determine them",
+                                     what, tau_y, yield_error, e_star, modulus_error));
   }
   out.yield_stress = {tau_y, yield_error};
   out.modulus = {e_star, modulus_error};
