@@ -104,6 +104,15 @@ SlipLawFit fit_slip_law(const std::vector<SlipPoint>& points) {
     throw NumericalError("the slip-law fit's covariance is singular (rows too alike)");
   f.log_coefficient = {fit.parameters(0), std::sqrt(fit.covariance(0, 0))};
   f.exponent = {fit.parameters(1), std::sqrt(fit.covariance(1, 1))};
+  const double coefficient = std::exp(f.log_coefficient.value);
+  if (!(std::isfinite(coefficient) && coefficient > 0 && std::isfinite(f.exponent.value))) {
+    throw InputError(fmt::format(
+        "the slip law through these rows has ln A = {:.6g}, p = {:.6g}: A = exp(ln A) is not a "
+        "representable number (slip velocities up to {:.3g}, wall stresses down to {:.3g}); are "
+        "the rows in the reduced units of `micro slip` (gamma_dot R and E*)?",
+        f.log_coefficient.value, f.exponent.value, std::exp(l.y.maxCoeff()),
+        std::exp(l.x.minCoeff())));
+  }
   const double denominator = f.log_coefficient.error * f.exponent.error;
   f.correlation = denominator > 0 ? fit.covariance(0, 1) / denominator : 0.0;
   f.points = points.size();

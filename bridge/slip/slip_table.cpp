@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 
 #include "common/errors.h"
@@ -51,14 +52,16 @@ SlipTable read_slip_table(const CsvTable& csv) {
     const auto it = index.find(name);
     return it == index.end() ? std::nullopt : std::optional(it->second);
   };
-  const auto bulk = optional_column("bulk_rate"), converged = optional_column("converged");
+  const auto bulk = optional_column("bulk_rate"), converged = optional_column("converged"),
+             seed = optional_column("seed"), gap = optional_column("gap");
 
-  const auto checked = [&](std::size_t r, std::size_t c, bool ok, const char* rule) {
+  const auto checked = [&](std::size_t r, std::size_t c, bool ok, const std::string& rule) {
     const double v = csv.number(r, c);
     if (!ok) throw InputError(fmt::format("{}: {} (must be {})", csv.where(r, c), v, rule));
     return v;
   };
   SlipTable table{csv.source(), csv.comments(), {}};
+  std::vector<std::string> seeds;  // per row, "" without a seed column
   require(csv.rows() > 0, fmt::format("{}: the slip table has no rows", csv.source()));
   // Every cell a finite number, used or not: a table with gaps is not trusted.
   for (std::size_t r = 0; r < csv.rows(); ++r)
@@ -76,13 +79,38 @@ SlipTable read_slip_table(const CsvTable& csv) {
     row.slip_velocity = {csv.number(r, slip), csv.number(r, slip_se)};
     checked(r, slip, row.slip_velocity.value > 0, "> 0: the slip law is fitted in log-log");
     checked(r, slip_se, row.slip_velocity.error >= 0, ">= 0");
+    if (gap) {
+      // Each wall slips by at most half the walls' relative velocity γ̇_app H:
+      // Ṽ ≤ H / (2R), the gap being in R.
+      const double most = 0.5 * csv.number(r, *gap);
+      checked(r, slip,
+              row.slip_velocity.value <= 1.01 * most + 3 * row.slip_velocity.error,
+              fmt::format("at most gap/2 = {:.6g}: a wall cannot slip faster than the walls move "
+                          "apart",
+                          most));
+    }
     if (bulk) row.bulk_rate = csv.number(r, *bulk);
     if (converged) {
       const double v = csv.number(r, *converged);
       checked(r, *converged, v == 0 || v == 1, "0 or 1");
       row.converged = v == 1;
     }
+    // Runs of different packings (seeds) at one state point are independent
+    // samples; the same run listed twice is not.
+    for (std::size_t k = 0; k < table.rows.size(); ++k) {
+      const SlipRow& before = table.rows[k];
+      if (std::abs(before.phi - row.phi) <= 1e-9 * row.phi &&
+          std::abs(before.gamma_app - row.gamma_app) <= 1e-9 * row.gamma_app &&
+          (!seed || seeds[k] == csv.text(r, *seed))) {
+        throw InputError(fmt::format(
+            "{}, line {}: phi = {}, gamma_app = {}{} is already on line {}; one run listed twice "
+            "would weigh twice in the fit and narrow its errors",
+            csv.source(), row.line, row.phi, row.gamma_app,
+            seed ? fmt::format(", seed {}", csv.text(r, *seed)) : "", before.line));
+      }
+    }
     table.rows.push_back(row);
+    seeds.push_back(seed ? csv.text(r, *seed) : "");
   }
   return table;
 }

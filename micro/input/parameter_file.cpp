@@ -13,6 +13,7 @@
 #include "common/errors.h"
 #include "common/parameter_input.h"
 #include "micro/input/model_preset.h"
+#include "micro/sweep/sweep_plan.h"
 
 namespace softglass::micro {
 
@@ -641,6 +642,7 @@ SlipParameters read_slip_file(const std::filesystem::path& file) {
   SlipParameters slip;
   slip.base = convert(prm, e, file);
   slip.spec = w.spec;
+  require_sorted_unique(slip.spec.apparent_rates, "apparent rates", "walls");
   slip.spec.packings = static_cast<unsigned>(w.packings);
   slip.spec.first_seed = static_cast<unsigned>(w.first_seed);
   slip.spec.run.sampling.bins = w.bins;

@@ -537,7 +537,7 @@ std::string slip_table() {
       "slip_velocity,slip_velocity_se\n";
   for (const double rate : {1e-6, 1e-5, 1e-4, 1e-3}) {
     const double s = 0.5 * std::sqrt(rate), v = 20.0 * std::pow(s, 1.9) / rate;
-    csv += fmt::format("0.8,{},1,10.5,250,1,{:.17g},{:.3g},{:.17g},{:.3g}\n", rate, s, 1e-3 * s, v,
+    csv += fmt::format("0.8,{},1,1000,250,1,{:.17g},{:.3g},{:.17g},{:.3g}\n", rate, s, 1e-3 * s, v,
                        1e-3 * v);
   }
   return csv;

@@ -3,6 +3,7 @@
 // on 1 + k √x, and inconsistent settings are refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -161,6 +162,28 @@ TEST(Rescale, RefusesInconsistentSettingsAndCurvesWithoutPlateau) {
   for (std::size_t i = 0; i < fluid.stress.size(); ++i)
     fluid.stress[i] = 50 * std::sqrt(fluid.shear_rate[i]);
   expect_contains(refusal(settings_for(s), fluid), {"yield", "--yield-stress"});
+  // A given yield stress the curve never rises above leaves E* undetermined.
+  RescaleSettings above = settings_for(s);
+  above.yield_stress = {1e4};
+  expect_contains(refusal(above, c), {"yield stress 10000 Pa is not below the measured stresses",
+                                      "0 of 25 points"});
+}
+
+// A yield stress given above most of the flowing branch drives E* to where its
+// error is larger than itself: refused as not determined, never printed.
+TEST(Rescale, RefusesAModulusTheCurveDoesNotDetermine) {
+  const Sample s;
+  RescaleSettings settings = settings_for(s);
+  const MeasuredCurve c = measured(s, 7);
+  std::vector<double> sorted = c.stress;
+  std::sort(sorted.begin(), sorted.end());
+  settings.yield_stress = {sorted[sorted.size() - 4]};  // three points above it
+  try {
+    const auto out = rescale({c}, settings);
+    ADD_FAILURE() << "E* = " << out[0].modulus.value << " +- " << out[0].modulus.error;
+  } catch (const NumericalError& e) {
+    expect_contains(e.what(), {"curve 'sample'", "the curve does not determine them"});
+  }
 }
 
 // k′ enters only the N1 data: a law without a usable k′ still rescales curves

@@ -46,7 +46,7 @@ std::string slip_csv(const std::vector<double>& phis, const std::vector<double>&
     for (const double rate : {1e-6, 1e-5, 1e-4, 1e-3}) {
       const double s = 0.5 * std::sqrt(rate);  // any increasing stress
       const double v = a[j] * std::pow(s, p[j]) / rate;
-      csv += fmt::format("{},{},1,10.5,250,1,{:.17g},{:.3g},{:.17g},{:.3g},0,0\n", phis[j], rate, s,
+      csv += fmt::format("{},{},1,1000,250,1,{:.17g},{:.3g},{:.17g},{:.3g},0,0\n", phis[j], rate, s,
                          1e-3 * s, v, 1e-3 * v);
     }
   return csv;
@@ -230,11 +230,19 @@ TEST(SlipLaw, BadTablesAreRefusedNamingThePlace) {
   refused(replace("0.8,1e-06", "nan,1e-06"), {"line 2", "phi"});
   refused(replace("0.8,1e-06", "1.2,1e-06"), {"line 2", "phi", "(0, 1)"});
   refused(replace("0.8,1e-06", "0.8,0"), {"gamma_app", "> 0"});
-  refused(replace("0.8,1e-06,1,10.5,250,1,", "0.8,1e-06,1,10.5,250,1,-"), {"wall_stress", "> 0"});
-  refused(replace("0.8,1e-06,1,10.5,250,1,", "0.8,1e-06,1,10.5,250,7,"), {"converged", "0 or 1"});
+  refused(replace("0.8,1e-06,1,1000,250,1,", "0.8,1e-06,1,1000,250,1,-"), {"wall_stress", "> 0"});
+  refused(replace("0.8,1e-06,1,1000,250,1,", "0.8,1e-06,1,1000,250,7,"), {"converged", "0 or 1"});
   refused(replace(",0,0\n", ",0,\n"), {"line 2"});
   refused("phi,gamma_app,wall_stress,wall_stress_se,slip_velocity,slip_velocity_se\n",
           {"no rows"});
+  // One run listed twice would weigh twice; another packing's run is another datum.
+  const std::string first_row = good.substr(good.find('\n') + 1, good.find('\n', good.find('\n') + 1) - good.find('\n'));
+  refused(good + first_row, {"line 6", "phi = 0.8, gamma_app = 1e-06, seed 1", "already on line 2", "weigh twice"});
+  std::string other_seed = first_row;
+  other_seed.replace(other_seed.find(",1,1000,"), 8, ",2,1000,");
+  EXPECT_NO_THROW(parse(good + other_seed));
+  // A wall slips by at most half the walls' relative velocity: Ṽ ≤ gap/2 (in R).
+  refused(replace("0.8,1e-06,1,1000,", "0.8,1e-06,1,2,"), {"line 2", "slip_velocity", "at most gap/2 = 1"});
   // Units, when given, must be the documented ones.
   EXPECT_NO_THROW(parse(replace("wall_stress,", "wall_stress [E*],")));
   // Equal stresses leave p undetermined.
@@ -242,6 +250,19 @@ TEST(SlipLaw, BadTablesAreRefusedNamingThePlace) {
       "phi,gamma_app,wall_stress,wall_stress_se,slip_velocity,slip_velocity_se\n"
       "0.8,1e-5,1e-3,1e-6,5,0.01\n0.8,1e-4,1e-3,1e-6,0.5,0.01\n");
   EXPECT_THROW(fit_slip_table(flat, no_limit), InputError);
+  // Velocities far beyond reduced units give an A no double can hold: refused, not "inf".
+  // ln A = 800 with p = 20: every velocity a double, A = e^800 not one.
+  std::vector<SlipPoint> huge;
+  for (const double stress : {1e-4, 3e-4, 1e-3, 3e-3}) {
+    const double velocity = std::exp(800 + 20 * std::log(stress));
+    huge.push_back({{stress, 1e-3 * stress}, {velocity, 1e-3 * velocity}});
+  }
+  try {
+    fit_slip_law(huge);
+    ADD_FAILURE() << "A = exp(ln A) beyond the largest double was accepted";
+  } catch (const InputError& e) {
+    expect_contains(e.what(), {"not a representable number", "reduced units"});
+  }
 }
 
 }  // namespace

@@ -98,6 +98,7 @@ TEST_F(MicroCli, SlipRefusesBadFilesBeforeAnyWork) {
   refused(slip_file("  set apparent rates = 1e-5\n", "implicit"), "does not carry the wall films");
   refused(slip_file("  set apparent rates = -1e-5\n"), "apparent rates");
   refused(slip_file("  set apparent rates = nan\n"), "apparent rates");
+  refused(slip_file("  set apparent rates = 1e-3, 1e-5, 1e-3\n"), "'apparent rates' lists 0.001 twice");
   refused(slip_file("  set apparent rates = 1e-5\n  set solvent flow = still\n"), "solvent flow");
   refused(slip_file("  set apparent rates = 1e-5\n  set strain = 0.5\n"), "strain");
   refused(slip_file("  set apparent rates = 1e-5\n  set central fraction = 0\n"), "central fraction");
