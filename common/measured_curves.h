@@ -93,6 +93,11 @@ struct MeasuredCurve {
 /// The flow curves of the file; InputError unless it has shear rate and stress.
 std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv, const FallbackUnits& fallback);
 
+/// A measured curve holds tens to hundreds of points, each costing the tools a
+/// solve or a plotted symbol; a file with more than this is taken for
+/// something else (a time series, a whole export).
+inline constexpr std::size_t kMostMeasuredPoints = 10000;
+
 /// An amplitude sweep: G′ and G″ against the strain amplitude, at a frequency.
 struct MeasuredAmplitudeSweep {
   std::string label;

@@ -39,17 +39,23 @@ double at_strain(const std::vector<double>& amplitudes, const std::vector<Materi
   return (1 - w) * a + w * b;
 }
 
+// The sweep `sample` of the file (its only one when empty), unless it has more
+// points than a measured sweep has (common/measured_curves.h).
 MeasuredAmplitudeSweep chosen_sweep(const std::filesystem::path& data, const std::string& sample) {
   std::vector<MeasuredAmplitudeSweep> sweeps = read_amplitude_sweeps(CsvTable::read(data));
-  if (sample.empty()) {
-    require(sweeps.size() == 1,
-            fmt::format("'{}' holds {} amplitude sweeps: choose one with --sample", data.string(),
-                        sweeps.size()));
-    return sweeps.front();
-  }
-  for (MeasuredAmplitudeSweep& s : sweeps)
-    if (s.label == sample) return s;
-  throw InputError(fmt::format("'{}' has no curve labelled '{}'", data.string(), sample));
+  require(!sample.empty() || sweeps.size() == 1,
+          fmt::format("'{}' holds {} amplitude sweeps: choose one with --sample", data.string(),
+                      sweeps.size()));
+  const auto chosen = sample.empty() ? sweeps.begin()
+                                     : std::find_if(sweeps.begin(), sweeps.end(),
+                                                    [&](const auto& s) { return s.label == sample; });
+  require(chosen != sweeps.end(),
+          fmt::format("'{}' has no curve labelled '{}'", data.string(), sample));
+  require(chosen->strain.size() <= kMostMeasuredPoints,
+          fmt::format("'{}': amplitude sweep '{}' has {} points; a measured one has tens, so this "
+                      "is taken for another kind of file; allowed: at most {}",
+                      data.string(), chosen->label, chosen->strain.size(), kMostMeasuredPoints));
+  return *chosen;
 }
 
 struct BranchErrors {

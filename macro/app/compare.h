@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "common/measured_curves.h"
+
 namespace softglass::macro::app {
 
 struct CompareOptions {
@@ -36,10 +38,9 @@ struct CompareOptions {
   bool quiet = false;
 };
 
-/// A measured flow curve holds tens to hundreds of points; a file with more
-/// than this in the rate window is taken for something else (a time series, a
-/// whole export) unless --max-points thins it.
-inline constexpr std::size_t kMostComparedPoints = 10000;
+/// More points than this in the rate window are refused unless --max-points
+/// thins them (common/measured_curves.h).
+inline constexpr std::size_t kMostComparedPoints = kMostMeasuredPoints;
 
 /// Returns the exit code; throws InputError, OutputExistsError, NumericalError.
 int compare(const CompareOptions& options);
