@@ -7,6 +7,7 @@
 
 #include "bridge/material/interpolation.h"
 #include "common/errors.h"
+#include "common/si_range.h"
 
 namespace softglass::bridge {
 
@@ -94,10 +95,12 @@ std::string describe_placement(const Law& law, double phi) {
 }
 
 void check_request(const Law& law, const MaterialRequest& request) {
-  require(request.modulus > 0 && std::isfinite(request.modulus),
-          fmt::format("contact modulus E* = {} Pa must be positive", request.modulus));
-  require(request.viscosity > 0 && std::isfinite(request.viscosity),
-          fmt::format("solvent viscosity eta_s = {} Pa s must be positive", request.viscosity));
+  require(request.modulus > 0 && within_si_range(request.modulus),
+          fmt::format("contact modulus E* = {} Pa must be positive, between {:g} and {:g}",
+                      request.modulus, 1 / kSiRange, kSiRange));
+  require(request.viscosity > 0 && within_si_range(request.viscosity),
+          fmt::format("solvent viscosity eta_s = {} Pa s must be positive, between {:g} and {:g}",
+                      request.viscosity, 1 / kSiRange, kSiRange));
   check_phi(law.phi, request.phi, request.extrapolate);
 }
 
@@ -118,14 +121,15 @@ Material make_material(const Law& law, const MaterialRequest& request) {
             fmt::format("the {} flow index at phi = {} comes out as {:.3g}, outside (0, 2]",
                         column_name(q), request.phi, n));
   }
-  // Every number the material file will hold must be finite: an extreme E* or
-  // eta_s (1e308 Pa) overflows the scaling of the reduced law into inf, which
-  // would be written with exit 0 and refused only later by macro.
+  // Every number the material file will hold must be one macro accepts
+  // (common/si_range.h): an extreme E* or eta_s scales the reduced law to
+  // values (K = 1e-141 Pa s^n at E* = 1e-300 Pa) that would be written with
+  // exit 0 and refused only later by macro.
   const auto finite = [&](const MaterialValue& v, Quantity q, const char* name) {
-    require(std::isfinite(v.value) && std::isfinite(v.error()),
-            fmt::format("the {} {} at phi = {} comes out as {:.3g} +- {:.3g}, not a finite number: "
-                        "E* = {:.3g} Pa and eta_s = {:.3g} Pa s are beyond what the law can be "
-                        "scaled to",
+    require(within_si_range(v.value) && std::isfinite(v.error()),
+            fmt::format("the {} {} at phi = {} comes out as {:.3g} +- {:.3g}, outside 0 or "
+                        "magnitudes 1e-100 ... 1e100 (SI) that macro solves with: E* = {:.3g} Pa "
+                        "and eta_s = {:.3g} Pa s are beyond what the law can be scaled to",
                         column_name(q), name, request.phi, v.value, v.error(), request.modulus,
                         request.viscosity));
   };

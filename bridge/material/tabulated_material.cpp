@@ -10,6 +10,7 @@
 #include "bridge/material/interpolation.h"
 #include "common/csv_table.h"
 #include "common/errors.h"
+#include "common/si_range.h"
 
 namespace softglass::bridge {
 
@@ -125,6 +126,18 @@ TabulatedMaterial make_tabulated_material(const Law& law, const SimulatedCurves&
   // rate whose stress comes out at or below it lies on the yield plateau
   // within the scatter of both: those rows are left out, and the law reaches
   // τ_y through its continuation below the window instead.
+  for (const TabulatedRow& row : m.rows) {
+    require(within_si_range(row.rate) && within_si_range(m.yield.value),
+            fmt::format("at E* = {:.3g} Pa, eta_s = {:.3g} Pa s the table's rates or stresses "
+                        "({:.3g} 1/s, tau_y = {:.3g} Pa) fall outside 0 or magnitudes 1e-100 ... "
+                        "1e100 (SI) that macro solves with",
+                        e_star, request.viscosity, row.rate, m.yield.value));
+    for (const auto& value : row.value)
+      require(!value || within_si_range(value->value),
+              fmt::format("at E* = {:.3g} Pa the stress {:.3g} Pa at {:.3g} 1/s falls outside 0 "
+                          "or magnitudes 1e-100 ... 1e100 (SI) that macro solves with",
+                          e_star, value ? value->value : 0.0, row.rate));
+  }
   const auto sigma = [&m](std::size_t i) { return m.rows[i].value[index(Quantity::sigma)]->value; };
   while (!m.rows.empty() && sigma(0) <= m.yield.value) {
     m.plateau_rows.push_back(m.rows.front());

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "common/parameter_input.h"
+#include "common/si_range.h"
 #include "macro/fe/solver_settings.h"
 #include "macro/material/material.h"
 #include "macro/scenes/scene.h"
@@ -30,7 +31,7 @@
 namespace softglass::macro::app {
 
 /// Every derived scale s must satisfy 1/kScaleRange <= |s| <= kScaleRange.
-inline constexpr double kScaleRange = 1e100;
+inline constexpr double kScaleRange = kSiRange;
 
 /// The Bingham number Bi = τ_y/(K γ̇_cⁿ) at every operating point, the
 /// one dimensionless group the solver's convergence depends on (the plug's
