@@ -121,14 +121,26 @@ TEST(Material, RefusesVolumeFractionsOutsideTheSimulatedRange) {
 // E* = 1e308 Pa is a finite input whose scaled law is not (the consistency
 // E* k G0 (η_s/E*)^½ overflows on the way). It is refused naming E* and η_s,
 // never written as inf (issue 19, class 3).
-TEST(Material, RefusesAnInputWhoseScaledLawIsNotFinite) {
+// E* and eta_s, and every value the material file would hold, within the SI
+// range macro solves with (common/si_range.h): a material bridge writes is
+// never refused one step later by macro.
+TEST(Material, RefusesAnInputWhoseScaledLawMacroCannotSolve) {
   const Law law = testing::exact_law({});
-  try {
-    make_material(law, {0.80, 1e308, kViscosity, false});
-    ADD_FAILURE() << "accepted";
-  } catch (const InputError& e) {
-    expect_contains(e.what(), {"not a finite number", "E* = 1e+308 Pa"});
-  }
+  const auto refusal = [&](double modulus) {
+    try {
+      make_material(law, {0.80, modulus, kViscosity, false});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << "E* = " << modulus << " accepted";
+    return std::string();
+  };
+  expect_contains(refusal(1e308), {"E* = 1e+308 Pa must be positive, between 1e-100 and 1e+100"});
+  expect_contains(refusal(1e-300), {"E* = 1e-300 Pa"});
+  // Inside the range itself, but its yield stress (E* times a reduced one of
+  // order 1e-3) is not.
+  expect_contains(refusal(1e-99), {"yield stress", "outside 0 or magnitudes 1e-100 ... 1e100",
+                                   "E* = 1e-99 Pa"});
 }
 
 }  // namespace
