@@ -46,8 +46,9 @@ void add_amplitude_sweep(const FitOptions& o, const std::string& command_line) {
   AtomicOutput law_out(o.output, o.force);
   Law law = read_law_file(o.law);
   law.provenance = header_comments(o.law);
-  law.amplitude_sweep = make_amplitude_sweep_law(
-      read_oscillation_table(CsvTable::read(o.oscillation)), o.oscillation_frequency);
+  const OscillationTable table = read_oscillation_table(CsvTable::read(o.oscillation));
+  for (const std::string& w : table.warnings) fmt::print("WARNING:  {}: {}\n", table.source, w);
+  law.amplitude_sweep = make_amplitude_sweep_law(table, o.oscillation_frequency);
   for (const std::string& line :
        provenance("softglass bridge fit: an amplitude sweep added to a law", command_line))
     law.provenance.push_back(line);

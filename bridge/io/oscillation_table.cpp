@@ -23,6 +23,7 @@ OscillationTable read_oscillation_table(const CsvTable& csv) {
                     loss_se = c.require(columns::error_of(columns::loss)),
                     g0 = c.require(columns::shear_modulus),
                     g0_se = c.require(columns::error_of(columns::shear_modulus));
+  const std::optional<std::size_t> converged = c.find(columns::converged);
   OscillationTable table;
   table.source = csv.source();
   table.comments = csv.comments();
@@ -42,6 +43,22 @@ OscillationTable read_oscillation_table(const CsvTable& csv) {
       throw InputError(
           fmt::format("{}, line {}: phi = {}, omega~ = {}, gamma0 = {} already on line {}",
                       csv.source(), p.line, p.phi, p.frequency, p.amplitude, it->second));
+    const std::string where = fmt::format("line {} (phi = {}, gamma0 = {})", p.line, p.phi,
+                                          p.amplitude);
+    if (converged) {
+      const double met = c.number(r, *converged);
+      if (met < static_cast<double>(p.packings))
+        table.warnings.push_back(fmt::format(
+            "{}: {} of {} runs did not meet their stopping rule (no periodic state reached)",
+            where, static_cast<double>(p.packings) - met, p.packings));
+    }
+    for (const auto& [name, value] : {std::pair("G'", p.storage), std::pair("G''", p.loss)}) {
+      if (value.value < -2 * value.error)
+        table.warnings.push_back(fmt::format(
+            "{}: {} = {:.3g} +- {:.2g} E* is negative beyond its error: not a steady "
+            "oscillation's modulus",
+            where, name, value.value, value.error));
+    }
     table.points.push_back(p);
   }
   if (table.points.empty()) throw InputError(csv.source() + ": the table has no rows");

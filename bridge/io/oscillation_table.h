@@ -23,11 +23,15 @@ struct OscillationTable {
   std::string source;
   std::vector<std::string> comments;
   std::vector<OscillationPoint> points;  // file order
+  std::vector<std::string> warnings;     // rows read but not to be trusted blindly
 };
 
 /// Reads and checks the table: required columns and units, finite values, φ in
 /// (0, 1), ω̃ and γ0 > 0, standard errors ≥ 0, G0 > 0, packings ≥ 1, no point
-/// twice. InputError names file, line, column.
+/// twice. InputError names file, line, column. A row is kept with a warning
+/// when some of its runs did not meet their stopping rule (column `converged`)
+/// or when G′ or G″ is negative beyond twice its standard error: a material
+/// that stores or dissipates negative work is no steady oscillation.
 OscillationTable read_oscillation_table(const CsvTable& csv);
 
 }  // namespace softglass::bridge

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "bridge/io/oscillation_table.h"
 #include "bridge/law/law.h"
 #include "bridge/material/amplitude_sweep_prediction.h"
 #include "bridge_test_support.h"
@@ -83,6 +84,27 @@ TEST(AmplitudeSweepLaw, RefusesAmbiguousOrIncompleteTables) {
   OscillationTable ragged = synthetic_table({0.8, 0.85}, {0.03, 0.05});
   ragged.points.pop_back();
   EXPECT_THROW(make_amplitude_sweep_law(ragged, {}), InputError);
+}
+
+// Rows from runs that did not reach their periodic state, and moduli negative
+// beyond their errors, are read with a warning naming the row (as the
+// flow-curve fit does for its unconverged runs); clean rows give none.
+TEST(AmplitudeSweepLaw, WarnsOfUnconvergedRunsAndNegativeModuli) {
+  const std::string header =
+      "phi [1],omega_tilde [1],gamma0 [1],packings [1],converged [1],storage [E*],"
+      "storage_se [E*],loss [E*],loss_se [E*],G0 [E*],G0_se [E*]\n";
+  const OscillationTable clean = read_oscillation_table(CsvTable::parse(
+      header + "0.8,1e-7,0.001,2,2,0.03,1e-4,0.006,1e-4,0.03,1e-4\n"
+               "0.8,1e-7,0.01,2,2,-1e-5,1e-4,0.006,1e-4,0.03,1e-4\n",
+      "clean.csv"));
+  EXPECT_TRUE(clean.warnings.empty()) << "a G' within its error of zero is no warning";
+  const OscillationTable suspect = read_oscillation_table(CsvTable::parse(
+      header + "0.8,1e-7,0.001,2,1,0.03,1e-4,0.006,1e-4,0.03,1e-4\n"
+               "0.8,1e-7,0.01,2,2,0.02,1e-4,-0.004,1e-4,0.03,1e-4\n",
+      "suspect.csv"));
+  ASSERT_EQ(suspect.warnings.size(), 2u);
+  expect_contains(suspect.warnings[0], {"line 2", "1 of 2 runs did not meet their stopping rule"});
+  expect_contains(suspect.warnings[1], {"line 3", "G'' = -0.004", "negative beyond its error"});
 }
 
 Law law_with_sweep() {
