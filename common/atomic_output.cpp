@@ -1,12 +1,15 @@
 #include "common/atomic_output.h"
 
 #include <fcntl.h>
-#include <pthread.h>
 #include <fmt/format.h>
+#include <pthread.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -38,12 +41,22 @@ volatile std::sig_atomic_t slot_used[kSlots];
 constexpr int kTerminatingSignals[] = {SIGINT, SIGTERM, SIGHUP};
 struct sigaction previous_actions[std::size(kTerminatingSignals)];
 
-// Removes every held temporary, then gives the signal back to the action it
-// had before (the default: termination) and raises it again — delivered when
-// this handler returns — so that the exit status still names the signal.
+// The line set_interruption_notice registered, published by its length.
+constexpr std::size_t kNoticeBytes = 1024;
+char interruption_notice[kNoticeBytes];
+volatile std::sig_atomic_t notice_length = 0;
+
+// Removes every held temporary, says so when a command registered a notice,
+// then gives the signal back to the action it had before (the default:
+// termination) and raises it again — delivered when this handler returns —
+// so that the exit status still names the signal.
 void remove_temporaries_and_terminate(int signal) {
   for (std::size_t k = 0; k < kSlots; ++k)
     if (slot_used[k] != 0) ::unlink(temporary_slots[k]);
+  const std::size_t length = static_cast<std::size_t>(notice_length);
+  if (length > 0 && ::write(STDERR_FILENO, interruption_notice, length) < 0) {
+    // Nothing to do about a closed stderr: the process ends all the same.
+  }
   for (std::size_t s = 0; s < std::size(kTerminatingSignals); ++s)
     if (kTerminatingSignals[s] == signal) ::sigaction(signal, &previous_actions[s], nullptr);
   ::raise(signal);
@@ -86,7 +99,39 @@ void release(std::size_t& slot) {
   slot = AtomicOutput::kNoSlot;
 }
 
+// Puts `from` at `to` unless `to` exists: 0, or the errno (EEXIST when it
+// exists). The check and the rename are one step, so that of two processes
+// only one can succeed.
+int rename_without_replacing(const std::filesystem::path& from, const std::filesystem::path& to) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return 0;
+  // Some file systems (older NFS, FUSE) do not take the flag; link() never
+  // replaces a file either.
+  if (errno != EINVAL && errno != ENOSYS) return errno;
+  if (::link(from.c_str(), to.c_str()) == 0) {
+    ::unlink(from.c_str());
+    return 0;
+  }
+  if (errno != EPERM && errno != EOPNOTSUPP) return errno;
+  // Nor hard links (vfat, some FUSE): a check just before the rename is the
+  // best such a file system allows.
+  struct stat existing {};
+  if (::stat(to.c_str(), &existing) == 0) return EEXIST;
+  return ::rename(from.c_str(), to.c_str()) == 0 ? 0 : errno;
+}
+
 }  // namespace
+
+void set_interruption_notice(const std::string& line) {
+  install_signal_cleanup();
+  notice_length = 0;  // no half-written notice is ever printed
+  if (line.empty()) return;
+  // On a terminal the notice begins a line of its own, after "^C" or a
+  // progress bar; in a log it is a line like the others.
+  const std::string text = fmt::format("{}{}\n", ::isatty(STDERR_FILENO) ? "\n" : "", line);
+  const std::size_t length = std::min(text.size(), kNoticeBytes);
+  std::memcpy(interruption_notice, text.data(), length);
+  notice_length = static_cast<std::sig_atomic_t>(length);
+}
 
 void remove_dead_temporaries(const std::filesystem::path& directory, const std::string& name) {
   std::error_code error;
@@ -125,7 +170,7 @@ void AtomicOutput::write_and_commit(const std::function<void(std::ostream&)>& bo
 }
 
 AtomicOutput::AtomicOutput(std::filesystem::path final_path, bool overwrite)
-    : final_(std::move(final_path)) {
+    : final_(std::move(final_path)), overwrite_(overwrite) {
   if (final_.empty()) throw InputError("output path is empty");
   if (std::filesystem::exists(final_) && !overwrite) {
     throw OutputExistsError("output file '" + final_.string() +
@@ -162,7 +207,22 @@ AtomicOutput::~AtomicOutput() {
 
 void AtomicOutput::commit(bool tidy) {
   std::error_code error;
-  std::filesystem::rename(temporary_, final_, error);
+  // The file as it is put in place, for withdraw(): a writer may have made
+  // the temporary anew.
+  if (struct stat identity {}; ::stat(temporary_.c_str(), &identity) == 0) {
+    device_ = static_cast<std::uint64_t>(identity.st_dev);
+    inode_ = static_cast<std::uint64_t>(identity.st_ino);
+  }
+  if (overwrite_) {
+    std::filesystem::rename(temporary_, final_, error);
+  } else if (const int failure = rename_without_replacing(temporary_, final_); failure == EEXIST) {
+    throw OutputExistsError(fmt::format(
+        "'{}' was written by another process while this one ran: that result is kept and this "
+        "one's discarded (pass --force to replace it)",
+        final_.string()));
+  } else if (failure != 0) {
+    error = std::error_code(failure, std::generic_category());
+  }
   if (error) {
     throw NumericalError(fmt::format("cannot put the finished '{}' in place of '{}': {}",
                                      temporary_.string(), final_.string(), error.message()));
@@ -183,11 +243,28 @@ TerminatingSignalsHeld::~TerminatingSignalsHeld() {
   ::pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
 }
 
-void AtomicOutput::commit_together(const std::vector<AtomicOutput*>& outputs) {
+void AtomicOutput::withdraw() {
+  if (!committed_ || overwrite_) return;  // a replaced file cannot be brought back
+  struct stat identity {};
+  if (::stat(final_.c_str(), &identity) == 0 &&
+      static_cast<std::uint64_t>(identity.st_dev) == device_ &&
+      static_cast<std::uint64_t>(identity.st_ino) == inode_)
+    ::unlink(final_.c_str());
+  committed_ = false;
+}
+
+void AtomicOutput::commit_together(const std::vector<AtomicOutput*>& outputs, bool tidy) {
   {
     const TerminatingSignalsHeld held;
-    for (AtomicOutput* out : outputs) out->commit(/*tidy=*/false);
+    std::size_t done = 0;
+    try {
+      for (; done < outputs.size(); ++done) outputs[done]->commit(/*tidy=*/false);
+    } catch (...) {
+      while (done > 0) outputs[--done]->withdraw();
+      throw;
+    }
   }
+  if (!tidy) return;
   for (AtomicOutput* out : outputs)
     remove_dead_temporaries(directory_of(out->final_), out->final_.filename().string());
 }

@@ -7,11 +7,17 @@
 // (`<final>.tmp<PID>`) before it terminates by the signal; one killed by
 // SIGKILL cannot, and the next process that completes the same output removes
 // those of processes no longer alive on this machine.
+//
+// An output not to be overwritten is claimed to the end: it is refused when
+// it exists at the start, and its commit never replaces a file either, so
+// that of two processes writing the same output at once the later one fails
+// (OutputExistsError) instead of silently replacing the earlier one's result.
 #pragma once
 
 #include <csignal>
-#include <filesystem>
 #include <cstddef>
+#include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -47,6 +53,13 @@ class TerminatingSignalsHeld {
   sigset_t previous_;
 };
 
+/// Registers the one line the terminating signals' handler prints on stderr
+/// before the process ends (a resumable command tells how to resume); the
+/// handler can only copy bytes, so the line is kept in a fixed buffer (cut at
+/// its size); an empty line registers none. Installs the handler if it is
+/// not yet.
+void set_interruption_notice(const std::string& line);
+
 class AtomicOutput {
  public:
   /// Refuses (OutputExistsError) when `final_path` exists and `overwrite` is
@@ -69,24 +82,40 @@ class AtomicOutput {
   /// with `tidy`, removes the temporaries of this output left by dead
   /// processes (a caller committing many files of one folder tidies it once,
   /// with remove_dead_temporaries); NumericalError naming both paths and the
-  /// reason if it cannot.
+  /// reason if it cannot. Without `overwrite` the rename never replaces a
+  /// file (renameat2 with RENAME_NOREPLACE, or link() where the file system
+  /// lacks the flag): a file that appeared at the final path since the claim was
+  /// written by another process meanwhile, and is kept; OutputExistsError
+  /// (exit code 3) says so, and this output's temporary is removed.
   void commit(bool tidy = true);
 
   /// Commits every output of one result (a law and its tables, a run folder)
   /// as a set: the terminating signals are held back while the temporaries
   /// are renamed, so Ctrl-C or a time limit arriving in between ends the
   /// process after the last rename rather than leaving new files beside old
-  /// ones. Only SIGKILL (and a failing rename, reported as by commit()) can
-  /// still split a set. Tidies each output's dead temporaries afterwards.
-  static void commit_together(const std::vector<AtomicOutput*>& outputs);
+  /// ones. When one output cannot be put in place (another process's result
+  /// there, a failing rename), those this call put in place without replacing
+  /// anything are removed again before the error is thrown, so that the other
+  /// process's set stays whole and no part of this one is left; only SIGKILL,
+  /// and a failure after a replacing rename (with `overwrite`), can still
+  /// split a set. With `tidy`, removes each output's dead temporaries
+  /// afterwards.
+  static void commit_together(const std::vector<AtomicOutput*>& outputs, bool tidy = true);
 
   /// A temporary not among those a signal removes (all slots taken).
   static constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
 
  private:
+  // Removes the final file a commit without `overwrite` created, if it is
+  // still the one this output put there (a set that could not be completed).
+  void withdraw();
+
   std::filesystem::path final_;
   std::filesystem::path temporary_;
+  bool overwrite_ = false;
   bool committed_ = false;
+  // The committed file's identity, so that withdraw() removes only it.
+  std::uint64_t device_ = 0, inode_ = 0;
   std::size_t slot_ = kNoSlot;  // among the temporaries a signal removes
 };
 

@@ -72,15 +72,38 @@ struct RheometerCurve {
   std::map<Measured, std::vector<double>> values;
 
   bool has(Measured q) const { return values.contains(q); }
-  const std::vector<double>& operator[](Measured q) const { return values.at(q); }
+  /// The column of `q`; InputError naming the curve and the quantity when
+  /// the file has none (callers check has() or curve_kind() first).
+  const std::vector<double>& operator[](Measured q) const;
   std::size_t size() const { return values.begin()->second.size(); }
 };
+
+/// The name of a quantity in messages: "shear rate", "G′".
+std::string quantity_name(Measured q);
 
 /// Every curve of the file; InputError unless each has an abscissa (shear
 /// rate, angular velocity or strain amplitude) and an ordinate (stress,
 /// torque or storage modulus).
 std::vector<RheometerCurve> read_rheometer_curves(const CsvTable& csv,
                                                   const FallbackUnits& fallback);
+
+/// What a measured curve is, from its columns. Any pair of an abscissa and
+/// an ordinate makes a curve, so a file of one kind reads as curves where
+/// another is wanted: each reader says what the file looks like instead.
+enum class CurveKind {
+  flow_curve,       // shear rate or angular velocity, and stress or torque
+  amplitude_sweep,  // strain amplitude, and G′ or G″
+  other,            // a mixture: a rate against a modulus, a strain against a torque
+};
+CurveKind curve_kind(const RheometerCurve& curve);
+/// "an amplitude sweep (strain amplitude and G′/G″ columns)", for messages.
+std::string describe(CurveKind kind);
+
+/// InputError unless every curve of the file `source` is of the kind
+/// `expected`: "'F' is an amplitude sweep (strain amplitude and G′/G″
+/// columns), not a flow curve (...)", then `advice` if any.
+void require_curve_kind(const std::vector<RheometerCurve>& curves, CurveKind expected,
+                        const std::string& source, const std::string& advice = "");
 
 /// A flow curve: shear rate and stress (optional N1).
 struct MeasuredCurve {

@@ -1,10 +1,16 @@
 #include "common/overlay_plot.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -84,15 +90,76 @@ bool complete_png(const std::filesystem::path& file) {
   return in && std::equal(head, head + 8, kSignature) && std::equal(tail, tail + 8, kEnd);
 }
 
+// The errno of writing a block of data into `file` (truncated first and
+// afterwards), 0 when it can be written. The block is larger than a plot,
+// so that a disk with room for a part of one fails it too.
+int probe_write(const std::filesystem::path& file) {
+  constexpr std::size_t kBlock = 1 << 20;
+  const int fd = ::open(file.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) return errno;
+  const std::string block(kBlock, '\0');
+  int failure = 0;
+  for (std::size_t done = 0; done < kBlock && failure == 0;) {
+    const ssize_t n = ::write(fd, block.data() + done, kBlock - done);
+    if (n > 0)
+      done += static_cast<std::size_t>(n);
+    else if (n < 0 && errno != EINTR)
+      failure = errno;
+  }
+  if (failure == 0 && ::fsync(fd) != 0) failure = errno;
+  if (::ftruncate(fd, 0) != 0 && failure == 0) failure = errno;
+  ::close(fd);
+  return failure;
+}
+
+// SIGPIPE ignored for its lifetime: gnuplot missing, the shell exits before
+// reading the script, and writing the rest of it must fail (EPIPE) rather
+// than end the process.
+class BrokenPipeIgnored {
+ public:
+  BrokenPipeIgnored() {
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    ::sigaction(SIGPIPE, &ignore, &previous_);
+  }
+  ~BrokenPipeIgnored() { ::sigaction(SIGPIPE, &previous_, nullptr); }
+  BrokenPipeIgnored(const BrokenPipeIgnored&) = delete;
+  BrokenPipeIgnored& operator=(const BrokenPipeIgnored&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
 }  // namespace
 
-bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file) {
+PlotOutcome plot_outcome(int shell_status, const std::filesystem::path& file) {
+  using Kind = PlotOutcome::Kind;
+  const bool exited = shell_status != -1 && WIFEXITED(shell_status);
+  if (exited && WEXITSTATUS(shell_status) == 127)
+    return {Kind::no_gnuplot, "gnuplot is not installed"};
+  const bool succeeded = exited && WEXITSTATUS(shell_status) == 0;
+  if (succeeded && complete_png(file)) return {Kind::written, ""};
+  if (const int failure = probe_write(file); failure != 0)
+    return {Kind::write_failed, std::strerror(failure)};
+  if (succeeded)
+    return {Kind::write_failed, "the PNG is incomplete although gnuplot reported success"};
+  if (shell_status == -1) return {Kind::gnuplot_failed, "gnuplot could not be started"};
+  return {Kind::gnuplot_failed,
+          WIFSIGNALED(shell_status)
+              ? fmt::format("gnuplot was ended by signal {}", WTERMSIG(shell_status))
+              : fmt::format("gnuplot failed (exit status {})", WEXITSTATUS(shell_status))};
+}
+
+PlotOutcome write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file) {
+  const BrokenPipeIgnored ignored;
   FILE* gnuplot = popen("gnuplot 2>/dev/null", "w");
-  if (!gnuplot) return false;
+  if (!gnuplot)
+    return {PlotOutcome::Kind::gnuplot_failed,
+            fmt::format("gnuplot could not be started: {}", std::strerror(errno))};
   const std::string text = script(plot, file);
-  const bool written = std::fwrite(text.data(), 1, text.size(), gnuplot) == text.size();
-  const int status = pclose(gnuplot);
-  return written && status == 0 && complete_png(file);
+  std::fwrite(text.data(), 1, text.size(), gnuplot);  // a short write shows in the status
+  return plot_outcome(pclose(gnuplot), file);
 }
 
 }  // namespace softglass

@@ -21,9 +21,34 @@ struct OverlayPlot {
   std::vector<OverlaySeries> panels;  // one panel each, with the relative error below
 };
 
-/// Writes `file` (PNG) with gnuplot; false when gnuplot is not installed,
-/// fails, or leaves an incomplete PNG (a full disk), so that the caller can
-/// say so (and discard the file).
-bool write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file);
+/// How the writing of a plot ended. A plot is an extra of a result: without
+/// gnuplot, or when gnuplot fails, the result is written without it and a
+/// warning says why. A plot that cannot be stored (a full disk, a quota, a
+/// file-size limit) is an error like any other file that cannot be written.
+struct PlotOutcome {
+  enum class Kind {
+    written,         // a complete PNG
+    no_gnuplot,      // gnuplot is not installed
+    gnuplot_failed,  // gnuplot ended with an error, the folder takes data
+    write_failed,    // the PNG could not be stored
+  };
+  Kind kind = Kind::written;
+  std::string reason;  // why not written, for a message: "gnuplot is not installed"
+
+  bool written() const { return kind == Kind::written; }
+};
+
+/// Writes `file` (PNG) with gnuplot and says how it went (plot_outcome);
+/// the caller discards the file unless it was written.
+PlotOutcome write_overlay_png(const OverlayPlot& plot, const std::filesystem::path& file);
+
+/// What gnuplot's run left in `file`; `shell_status` as pclose() returns it
+/// for `sh -c gnuplot` (the shell exits with 127 when there is no gnuplot).
+/// A PNG that is incomplete after gnuplot reported success was not stored:
+/// gnuplot (cairo) does not check its writes. Otherwise the folder is probed
+/// by writing a block of data into `file` (which is the plot's own temporary):
+/// when that fails too (ENOSPC, EDQUOT, EFBIG...), the write failed, with the
+/// system's reason; when it does not, gnuplot itself failed.
+PlotOutcome plot_outcome(int shell_status, const std::filesystem::path& file);
 
 }  // namespace softglass

@@ -19,6 +19,7 @@
 #include "bridge/material/amplitude_sweep_prediction.h"
 #include "common/errors.h"
 #include "common/measured_curves.h"
+#include "common/output_folder.h"
 #include "common/overlay_plot.h"
 #include "common/unit_table.h"
 
@@ -197,17 +198,12 @@ void print_comparison(const Comparison& c, const MeasuredAmplitudeSweep& m,
 }  // namespace
 
 void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& command_line) {
-  // The inputs first, so that a bad one leaves no folder behind.
+  // Every input is read and checked, and the prediction and comparison made
+  // (they take no time), before the folder is made: a refused command leaves
+  // none behind.
   const Law law = read_law_file(o.law);
   std::optional<MeasuredAmplitudeSweep> measured;
   if (!o.data.empty()) measured = chosen_sweep(o.data, o.sample);
-  std::filesystem::create_directories(o.output);
-  AtomicOutput predicted_out(o.output / "amplitude_sweep.csv", o.force);
-  std::optional<AtomicOutput> comparison_out, plot_out;
-  if (measured) {
-    comparison_out.emplace(o.output / "comparison.csv", o.force);
-    plot_out.emplace(o.output / "comparison.png", o.force);
-  }
   std::vector<std::string> lines =
       provenance("softglass bridge amplitude-sweep: a material's amplitude sweep from a law file",
                  command_line);
@@ -215,12 +211,6 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
   MaterialRequest request{o.phi, 0.0, o.viscosity, o.extrapolate};
   request.modulus = contact_modulus(o.source, law, o.phi, o.extrapolate, lines);
   const AmplitudeSweepPrediction p = predict_amplitude_sweep(law, request);
-  print_amplitude_sweep_prediction(p);
-  lines.push_back(fmt::format("phi = {}, E* = {:.6g} Pa, eta_s = {:.6g} Pa s: omega = {:.4g} rad/s",
-                              o.phi, request.modulus, o.viscosity, p.angular_frequency));
-  write_csv(predicted_out.temporary_path(), predicted_out.final_path(), lines, prediction_table(p),
-            8);
-  std::vector<AtomicOutput*> outputs{&predicted_out};
   std::optional<Comparison> c;
   if (measured) {
     c = compare(*measured, p);
@@ -229,6 +219,22 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
         fmt::format("no measured strain of '{}' lies within the simulated amplitudes {:.3g} ... "
                     "{:.3g}",
                     o.data.string(), p.amplitudes.front(), p.amplitudes.back()));
+  }
+
+  const OutputFolder folder(o.output);
+  AtomicOutput predicted_out(o.output / "amplitude_sweep.csv", o.force);
+  std::optional<AtomicOutput> comparison_out, plot_out;
+  if (measured) {
+    comparison_out.emplace(o.output / "comparison.csv", o.force);
+    plot_out.emplace(o.output / "comparison.png", o.force);
+  }
+  print_amplitude_sweep_prediction(p);
+  lines.push_back(fmt::format("phi = {}, E* = {:.6g} Pa, eta_s = {:.6g} Pa s: omega = {:.4g} rad/s",
+                              o.phi, request.modulus, o.viscosity, p.angular_frequency));
+  write_csv(predicted_out.temporary_path(), predicted_out.final_path(), lines, prediction_table(p),
+            8);
+  std::vector<AtomicOutput*> outputs{&predicted_out};
+  if (measured) {
     print_comparison(*c, *measured, p);
     lines.push_back("measured: " + o.data.string() + ", curve '" + measured->label + "'");
     write_csv(comparison_out->temporary_path(), comparison_out->final_path(), lines,
@@ -242,12 +248,18 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
         .x = c->strain,
         .panels = {{"G' [Pa]", c->storage, c->storage_predicted},
                    {"G'' [Pa]", c->loss, c->loss_predicted}}};
-    if (write_overlay_png(plot, plot_out->temporary_path())) {
+    const PlotOutcome plotted = write_overlay_png(plot, plot_out->temporary_path());
+    if (plotted.kind == PlotOutcome::Kind::write_failed) {
+      throw NumericalError(
+          fmt::format("cannot write '{}': {}", plot_out->final_path().string(), plotted.reason));
+    }
+    if (plotted.written()) {
       outputs.push_back(&*plot_out);
     } else {
-      // An older plot (replaced with --force) would not show these numbers.
-      std::filesystem::remove(plot_out->final_path());
-      fmt::print("no plot: gnuplot is missing or failed\n");
+      // An older plot (replaced with --force) would not show these numbers;
+      // without --force a plot there is another process's result.
+      if (o.force) std::filesystem::remove(plot_out->final_path());
+      fmt::print("no plot: {}\n", plotted.reason);
     }
   }
   AtomicOutput::commit_together(outputs);

@@ -27,8 +27,6 @@ namespace softglass::macro::app {
 
 namespace {
 
-constexpr const char* kNoPlot = "gnuplot is not installed, failed, or wrote an incomplete file";
-
 // How far the predictions are from the measurements, e = predicted/measured − 1.
 struct Agreement {
   std::size_t points = 0;
@@ -112,6 +110,9 @@ MeasuredTorques read_measured(const CompareOptions& o, const InstrumentConstants
           fmt::format("--max-points {} is not allowed; allowed: >= 2", o.max_points));
   const auto curves =
       read_rheometer_curves(CsvTable::read(o.data_file), {o.rate_unit, o.stress_unit});
+  require_curve_kind(curves, CurveKind::flow_curve, o.data_file.string(),
+                     "macro compare solves a scene at a flow curve's angular velocities (an "
+                     "amplitude sweep is compared by `bridge amplitude-sweep LAW --data FILE`)");
   MeasuredTorques m = measured_torques(select_curve(curves, o), constants, o.min_rate, o.max_rate);
   if (o.max_points > 0) return thinned(m, o.max_points);
   require(
@@ -206,10 +207,9 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
   return table;
 }
 
-// Predicted against measured torque (and normal force) over Ω into `file`;
-// false if gnuplot is missing, failed, or wrote an incomplete PNG.
-bool write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
-                const std::filesystem::path& file) {
+// Predicted against measured torque (and normal force) over Ω into `file`.
+PlotOutcome write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
+                       const std::filesystem::path& file) {
   const MeasuredTorques& m = c.measured;
   OverlayPlot plot{.title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
                                         label == o.data_file.stem().string() ? "" : ", " + label,
@@ -224,14 +224,14 @@ bool write_plot(const Comparison& c, const CompareOptions& o, const std::string&
 
 void write_summary(const std::filesystem::path& file, const std::vector<std::string>& header_lines,
                    const std::vector<std::string>& report, double wall, unsigned ranks_per_point,
-                   bool plotted) {
+                   const PlotOutcome& plot) {
   write_file(file, "summary.txt", [&](std::ostream& summary) {
     for (const std::string& line : header_lines) summary << line << "\n";
     for (const std::string& line : report) summary << line << "\n";
     summary << fmt::format("wall time {:.2f} s on {} MPI rank(s), {} per point's mesh\n", wall,
                            dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
                            ranks_per_point);
-    if (!plotted) summary << "no plot: " << kNoPlot << "\n";
+    if (!plot.written()) summary << "no plot: " << plot.reason << "\n";
   });
 }
 
@@ -260,7 +260,7 @@ std::vector<std::string> provenance(const CompareOptions& o, const std::string& 
 
 // The point-by-point table and the report on standard output.
 void print_comparison(const Comparison& c, const std::vector<std::string>& report,
-                      const std::filesystem::path& directory, bool plotted) {
+                      const std::filesystem::path& directory, const PlotOutcome& plot) {
   const MeasuredTorques& m = c.measured;
   std::cout << fmt::format("{:>14} {:>12} {:>14} {:>14} {:>8}\n", "Omega [rad/s]", "rate [1/s]",
                            "measured [N m]", "predicted", "error");
@@ -271,8 +271,8 @@ void print_comparison(const Comparison& c, const std::vector<std::string>& repor
   }
   for (const std::string& line : report) std::cout << line << "\n";
   std::cout << fmt::format("results: {}{}\n", (directory / "comparison.csv").string(),
-                           plotted ? ", " + (directory / "comparison.png").string()
-                                   : fmt::format(" (no plot: {})", kNoPlot));
+                           plot.written() ? ", " + (directory / "comparison.png").string()
+                                          : fmt::format(" (no plot: {})", plot.reason));
 }
 
 }  // namespace
@@ -329,13 +329,17 @@ int compare(const CompareOptions& o) {
 
   write_results_csv(folder.temporary("comparison.csv"), folder.path("comparison.csv"), header_lines,
                     table, 8);
-  const bool plotted =
+  const PlotOutcome plot =
       write_plot(comparison, o, measured.label, folder.temporary("comparison.png"));
-  if (!plotted) folder.discard("comparison.png");
+  if (plot.kind == PlotOutcome::Kind::write_failed) {
+    throw NumericalError(
+        fmt::format("cannot write '{}': {}", folder.path("comparison.png").string(), plot.reason));
+  }
+  if (!plot.written()) folder.discard("comparison.png");
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_summary(folder.temporary("summary.txt"), header_lines, report, wall,
-                groups.ranks_per_point(), plotted);
+                groups.ranks_per_point(), plot);
   std::ostringstream parameters;
   prm.print_parameters(parameters, dealii::ParameterHandler::Text);
   write_results_h5(folder.temporary("comparison.h5"), table,
@@ -350,8 +354,8 @@ int compare(const CompareOptions& o) {
                     .ranks_per_point = groups.ranks_per_point()});
   folder.commit();
 
-  if (!o.quiet) print_comparison(comparison, report, directory, plotted);
-  if (!plotted) std::cerr << "macro: warning: no plot written (" << kNoPlot << ")\n";
+  if (!o.quiet) print_comparison(comparison, report, directory, plot);
+  if (!plot.written()) std::cerr << "macro: warning: no plot written (" << plot.reason << ")\n";
   return kExitOk;
 }
 

@@ -51,7 +51,7 @@ std::string listing(const std::map<std::string, std::unique_ptr<AtomicOutput>>& 
 
 ResultFolder::ResultFolder(std::filesystem::path directory, const std::vector<std::string>& names,
                            bool force)
-    : directory_(std::move(directory)) {
+    : directory_(std::move(directory)), force_(force) {
   const MPI_Comm world = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(world) == 0;
   // Whatever stops rank 0 here (an existing result, a folder it cannot write,
@@ -60,13 +60,14 @@ ResultFolder::ResultFolder(std::filesystem::path directory, const std::vector<st
   std::exception_ptr failure;
   if (root) {
     try {
-      std::filesystem::create_directories(directory_);
+      folder_.emplace(directory_);
       for (const std::string& name : names)
         files_[name] = std::make_unique<AtomicOutput>(directory_ / name, force);
       files_[kManifest] = std::make_unique<AtomicOutput>(directory_ / kManifest, force);
     } catch (const std::exception&) {
       failure = std::current_exception();
       files_.clear();
+      folder_.reset();
     }
   }
   if (broadcast_flag(world, failure != nullptr)) {
@@ -101,13 +102,34 @@ void ResultFolder::commit() {
   {
     // A signal in between would leave the new files beside the old ones.
     const TerminatingSignalsHeld held;
-    for (const auto& [name, file] : files_) file->commit(/*tidy=*/false);  // tidied once below
-    for (const std::string& name : previous) {
-      if (files_.contains(name)) continue;
-      std::error_code ignored;  // already gone: nothing to remove
-      std::filesystem::remove(directory_ / name, ignored);
+    const auto remove_previous = [&] {
+      for (const std::string& name : previous) {
+        if (files_.contains(name)) continue;
+        std::error_code ignored;  // already gone: nothing to remove
+        std::filesystem::remove(directory_ / name, ignored);
+      }
+    };
+    if (force_) {
+      for (const auto& [name, file] : files_) file->commit(/*tidy=*/false);  // tidied once below
+      remove_previous();
+      manifest->commit(/*tidy=*/false);
+    } else {
+      // Every file and the manifest are put in place without replacing any,
+      // or none is (a concurrent run's result is there); only then is the
+      // previous result's remainder removed.
+      std::vector<AtomicOutput*> set;
+      for (const auto& [name, file] : files_) set.push_back(file.get());
+      set.push_back(manifest.get());
+      try {
+        AtomicOutput::commit_together(set, /*tidy=*/false);
+      } catch (const OutputExistsError&) {
+        throw OutputExistsError(fmt::format(
+            "another process put its result in '{}' while this one ran: that result is kept and "
+            "this one's discarded (pass --force to replace it)",
+            directory_.string()));
+      }
+      remove_previous();
     }
-    manifest->commit(/*tidy=*/false);
   }
   remove_dead_temporaries(directory_);
 }

@@ -211,6 +211,11 @@ class OscillationSweep final : public CaseSweep {
 }  // namespace
 
 void oscillate_command(const SweepOptions& options, const Workers& workers) {
+  // One line for all the ranks an MPI starter interrupts together.
+  if (workers.leader())
+    set_interruption_notice(
+        "micro oscillate: interrupted; run the same command again to resume (finished cases "
+        "are kept)");
   Oscillation o;
   o.parameters = read_oscillation_file(options.parameter_file);
   o.plan = make_oscillation_plan(o.parameters.spec);

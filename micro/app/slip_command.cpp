@@ -11,6 +11,7 @@
 #include "common/atomic_output.h"
 #include "common/errors.h"
 #include "common/h5_file.h"
+#include "common/output_folder.h"
 #include "micro/analysis/plug_slip.h"
 #include "micro/input/parameter_file.h"
 #include "micro/packing/wall_packing.h"
@@ -99,6 +100,8 @@ PlugSlipLaw plug_law(const WallPacking& walls, std::shared_ptr<const ContactLaw>
 }  // namespace
 
 void slip_command(const CommandOptions& options) {
+  set_interruption_notice(
+      "micro slip: interrupted; run the same command again to resume (finished runs are kept)");
   const SlipParameters prm = read_slip_file(options.parameter_file);
   const SlipSpec& spec = prm.spec;
   const IntegratorSpec scheme = [&] {
@@ -109,6 +112,9 @@ void slip_command(const CommandOptions& options) {
                                            s.name));
     return s.resolved_for(spec.apparent_rates.front(), prm.base.shear_model.drag.stokes.reference);
   }();
+  // Before the first packing: a folder that cannot take the results is
+  // refused at once.
+  const OutputFolder folder(spec.directory);
   const std::filesystem::path runs = spec.directory / "runs";
   const std::string identity = run_identity(prm);
   const auto law = std::shared_ptr<const ContactLaw>(make_contact_law(prm.base.contact_law));

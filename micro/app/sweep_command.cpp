@@ -339,6 +339,11 @@ class FlowCurveSweep final : public CaseSweep {
 }  // namespace
 
 void sweep_command(const SweepOptions& options, const Workers& workers) {
+  // One line for all the ranks an MPI starter interrupts together.
+  if (workers.leader())
+    set_interruption_notice(
+        "micro sweep: interrupted; run the same command again to resume (finished cases are "
+        "kept)");
   Sweep sweep;
   sweep.parameters = read_sweep_file(options.parameter_file);
   sweep.plan = make_sweep_plan(sweep.parameters.spec);

@@ -61,7 +61,16 @@ void make_packing(const MicroParameters& prm, const SweepPacking& packing, const
   std::filesystem::create_directories(packing.file.parent_path());
   AtomicOutput out(packing.file, false);
   RunRecord record = pack_and_measure(prm, make_contact_law(prm.contact_law), "pack", quiet);
-  write_record(out, record, seconds_since(start));
+  try {
+    write_record(out, record, seconds_since(start));
+  } catch (const OutputExistsError&) {
+    // The tasks of a batch array (--case K) whose cases share this packing
+    // make it at once when it is missing. It is one computation of one sweep
+    // file, so the copy written first serves them all.
+    log(workers, "packing  phi {:.4f} seed {}: written meanwhile by another task, used -> {}",
+        packing.volume_fraction, packing.seed, packing.file.string());
+    return;
+  }
   log(workers, "packing  phi {:.4f} seed {}: Z {:.3f}, G0 {:.4e} E*, {:.1f} s -> {}",
       packing.volume_fraction, packing.seed, record.packing.coordination, record.modulus.modulus,
       seconds_since(start), packing.file.string());

@@ -122,15 +122,11 @@ void write_oscillation(H5Group&& g, const OscillationRecord& record) {
 }
 
 StoredOscillationSummary read_oscillation_summary(const std::filesystem::path& path) {
-  const H5File file = H5File::open(path);
+  const std::string expected = "an oscillatory run (micro oscillate's runs/*.h5)";
+  const H5File file = open_micro_file(path, expected);
   const H5Group root = file.root();
-  require_run_file_format(root, path);
+  require_file_kind(root, path, {FileKind::oscillation_run}, expected);
   const std::string where = path.string();
-  if (!root.has_child("oscillation"))
-    throw InputError(
-        fmt::format("'{}' holds no oscillatory run (made by `micro run` or `micro "
-                    "pack`?)",
-                    where));
   const H5Group packing = root.group("packing"), g = root.group("oscillation"),
                 summary = g.group("summary");
   const auto positive = [&](const H5Group& group, const char* name) {

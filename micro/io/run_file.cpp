@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <fstream>
 
 #include "common/atomic_output.h"
 #include "common/errors.h"
@@ -146,15 +147,95 @@ std::string now_iso8601() {
 
 }  // namespace
 
-void require_run_file_format(const H5Group& root, const std::filesystem::path& path) {
-  const std::int64_t format =
-      root.has_attribute("format_version") ? root.attribute_int("format_version") : 0;
-  if (format != kFormatVersion) {
+FileKind file_kind(const H5Group& root) {
+  const auto attribute = [&](const char* name) {
+    return root.has_attribute(name) ? root.attribute_string(name) : std::string();
+  };
+  if (attribute("kind").ends_with("checkpoint")) return FileKind::checkpoint;
+  if (attribute("software").starts_with("softglass macro")) return FileKind::macro_result;
+  if (root.has_attribute("format_version") ||
+      (root.has_child("packing") && attribute("software").starts_with("softglass micro"))) {
+    const std::int64_t format =
+        root.has_attribute("format_version") ? root.attribute_int("format_version") : 0;
+    if (format != kFormatVersion) return FileKind::older_run;
+    if (root.has_child("shear")) return FileKind::run;
+    if (root.has_child("oscillation")) return FileKind::oscillation_run;
+    return FileKind::packing;
+  }
+  // The tables and the slip runs carry no attribute of their own on the root.
+  if (root.has_child("flow_curve") && root.has_child("flow_curve_packings"))
+    return FileKind::sweep_table;
+  if (root.has_child("oscillation") && root.has_child("oscillation_packings"))
+    return FileKind::oscillation_table;
+  if (root.has_child("stationary") && root.has_child("profile") && root.has_child("series"))
+    return FileKind::slip_run;
+  return FileKind::other;
+}
+
+std::string describe(FileKind kind) {
+  switch (kind) {
+    case FileKind::run:
+      return "a run file (micro run)";
+    case FileKind::packing:
+      return "a packing file (micro pack)";
+    case FileKind::oscillation_run:
+      return "an oscillatory run (micro oscillate)";
+    case FileKind::older_run:
+      return "a run file of an older format";
+    case FileKind::checkpoint:
+      return "the checkpoint of an unfinished run (*.checkpoint.h5)";
+    case FileKind::sweep_table:
+      return "the table of a sweep (micro sweep's flow_curve.h5)";
+    case FileKind::oscillation_table:
+      return "the table of an oscillation sweep (micro oscillate's oscillation.h5)";
+    case FileKind::slip_run:
+      return "a run between walls (micro slip's runs/*.h5)";
+    case FileKind::macro_result:
+      return "a result of macro run or macro compare";
+    case FileKind::other:
+      break;
+  }
+  return "an HDF5 file softglass micro did not write";
+}
+
+H5File open_micro_file(const std::filesystem::path& path, const std::string& expected) {
+  try {
+    return H5File::open(path);
+  } catch (const InputError&) {
+    // A text file (a table, a parameter file) is named as such; for anything
+    // else H5File's own message says what is wrong.
+    std::error_code ignored;
+    if (!std::filesystem::is_regular_file(path, ignored)) throw;
+    std::ifstream in(path, std::ios::binary);
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    const bool text = !head.empty() && head.find('\0') == std::string::npos;
+    if (!text) throw;
+    throw InputError(fmt::format("'{}' is a text file (a table or a parameter file?), not {}",
+                                 path.string(), expected));
+  }
+}
+
+void require_file_kind(const H5Group& root, const std::filesystem::path& path,
+                       std::initializer_list<FileKind> accepted, const std::string& expected) {
+  const FileKind kind = file_kind(root);
+  for (const FileKind k : accepted)
+    if (k == kind) return;
+  if (kind == FileKind::older_run) {
+    const std::int64_t format =
+        root.has_attribute("format_version") ? root.attribute_int("format_version") : 0;
     throw InputError(fmt::format(
         "'{}' has run-file format {}, this version reads {} (G0 is now the mean over six "
         "simple shears: rerun the case)",
         path.string(), format, kFormatVersion));
   }
+  throw InputError(fmt::format("'{}' is {}, not {}", path.string(), describe(kind), expected));
+}
+
+void require_run_file_format(const H5Group& root, const std::filesystem::path& path) {
+  require_file_kind(root, path, {FileKind::run, FileKind::packing, FileKind::oscillation_run},
+                    "a packing or run file of micro (micro pack, micro run)");
 }
 
 void write_run_file(const std::filesystem::path& path, const RunRecord& record) {
@@ -248,13 +329,11 @@ TimeSeries read_time_series(const std::filesystem::path& path) {
 }
 
 StoredRunSummary read_run_summary(const std::filesystem::path& path) {
-  const H5File file = H5File::open(path);
+  const std::string expected =
+      "a run file of a sheared packing (micro run, micro sweep's runs/*.h5)";
+  const H5File file = open_micro_file(path, expected);
   const H5Group root = file.root();
-  require_run_file_format(root, path);
-  if (!root.has_child("shear")) {
-    throw InputError(
-        fmt::format("'{}' holds no sheared run (made by `micro pack`?)", path.string()));
-  }
+  require_file_kind(root, path, {FileKind::run}, expected);
   const H5Group packing = root.group("packing");
   const H5Group shear = root.group("shear");
   const H5Group summary = shear.group("summary");

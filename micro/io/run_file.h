@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -66,7 +67,39 @@ struct RunRecord {
   Timings timings;
 };
 
-/// InputError unless the file's root says it has this version's run-file format.
+/// The HDF5 files softglass writes, told apart by what identifies each (the
+/// root's attributes `format_version`, `software`, `kind` and its groups), so
+/// that a file handed to a command in place of another is named for what it
+/// is instead of being refused with advice that cannot help.
+enum class FileKind {
+  run,                // a sheared packing: micro run, micro sweep's runs/*.h5
+  packing,            // micro pack, micro sweep's packings/*.h5
+  oscillation_run,    // micro oscillate's runs/*.h5
+  older_run,          // a packing or run file of another run-file format
+  checkpoint,         // an unfinished case's *.checkpoint.h5
+  sweep_table,        // micro sweep's flow_curve.h5
+  oscillation_table,  // micro oscillate's oscillation.h5
+  slip_run,           // micro slip's runs/*.h5
+  macro_result,       // macro run's results.h5, macro compare's comparison.h5
+  other,              // an HDF5 file softglass did not write
+};
+FileKind file_kind(const H5Group& root);
+/// "a packing file (micro pack)", for messages.
+std::string describe(FileKind kind);
+
+/// Opens `path`, which should be `expected` ("a run file ..."); InputError
+/// naming what it is instead when it is not HDF5 (a text file: a table, a
+/// parameter file) or does not exist.
+H5File open_micro_file(const std::filesystem::path& path, const std::string& expected);
+
+/// InputError unless the file is of one of the kinds `accepted`: "'F' is a
+/// packing file (micro pack), not EXPECTED"; a packing or run file of
+/// another format is told to be made again.
+void require_file_kind(const H5Group& root, const std::filesystem::path& path,
+                       std::initializer_list<FileKind> accepted, const std::string& expected);
+
+/// InputError unless the file's root says it has this version's run-file
+/// format (a packing, a sheared or an oscillated run).
 void require_run_file_format(const H5Group& root, const std::filesystem::path& path);
 
 /// Writes `record` to `path` (which must not exist or is replaced: the caller

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <sstream>
 #include <vector>
 
@@ -462,6 +463,7 @@ TEST_F(BridgeCli, AmplitudeSweepFromTheLawAgainstAMeasuredOne) {
       bridge("amplitude-sweep plain.prm --phi 0.8 --modulus 1000 --viscosity 1e-3 -o x");
   EXPECT_EQ(no_sweep.code, 2);
   expect_contains(no_sweep.err, {"no amplitude sweep", "--oscillation"});
+  EXPECT_FALSE(fs::exists(work() / "x")) << "a refused command leaves no folder (issue 65)";
   testing::write_text(work() / "bad.csv",
                       "Storage modulus [Pa],Oscillation strain [%]\n1,1\n2,2\n3,3\n4,4\n");
   const Outcome bad = bridge(
@@ -469,6 +471,86 @@ TEST_F(BridgeCli, AmplitudeSweepFromTheLawAgainstAMeasuredOne) {
   EXPECT_EQ(bad.code, 2);
   expect_contains(bad.err, {"loss-modulus"});
   EXPECT_FALSE(fs::exists(work() / "y/amplitude_sweep.csv")) << "nothing written";
+}
+
+// Issue 65: the output folder of amplitude-sweep is refused before any work
+// when it cannot take the result (it was a raw "filesystem error", exit code
+// 1); a plot that cannot be stored is an error naming the file and the
+// reason, with nothing left behind, while a missing gnuplot only costs the
+// plot.
+TEST_F(BridgeCli, AmplitudeSweepRefusesAnUnusableFolderAndAPlotItCannotStore) {
+  testing::write_text(work() / "osc.csv", oscillation_csv());
+  ASSERT_EQ(bridge(std::string(kFit) + " --oscillation osc.csv -o law.prm").code, 0);
+  testing::write_text(work() / "measured.csv",
+                      "Storage modulus [Pa],Loss modulus [Pa],Oscillation strain [%]\n"
+                      "33,6.6,0.02\n33,6.6,0.1\n30,6.6,1\n10,6.6,10\n");
+  const std::string command =
+      "amplitude-sweep law.prm --phi 0.8 --modulus 1000 --viscosity 1e-3 --data measured.csv";
+  testing::write_text(work() / "afile", "mine");
+  const std::vector<std::string> before = files();
+  for (const auto& [output, message] :
+       {std::pair<std::string, std::string>{"afile",
+                                            "output folder 'afile' is a file, not a folder"},
+        {"afile/out", "output folder 'afile/out' cannot be created: 'afile' is a file"},
+        {"/proc/softglass-out", "output folder '/proc/softglass-out' cannot be created: "}}) {
+    const Outcome o = bridge(command + " -o " + output);
+    EXPECT_EQ(o.code, 2) << output << ": " << o.err;
+    expect_contains(o.err, {message});
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
+    EXPECT_EQ(files(), before);
+  }
+  EXPECT_EQ(testing::read_text(work() / "afile"), "mine");
+
+  if (fs::exists("/usr/bin/gnuplot")) {
+    // The tables fit in 4 KiB, the plot does not.
+    const Outcome full = softglass::testing::run_tool_on_full_disk(
+        SOFTGLASS_BRIDGE_EXECUTABLE, command + " -o out", work(), dir_ / "capture", 4);
+    EXPECT_EQ(full.code, 1) << full.out << full.err;
+    expect_contains(full.err, {"cannot write 'out/comparison.png': File too large"});
+    EXPECT_EQ(files(), before) << "no result, no folder";
+  }
+  // Without gnuplot on the path: the tables, and a note that there is no plot.
+  const Outcome no_plot = softglass::testing::run_tool(
+      "/usr/bin/env",
+      "PATH=/nonexistent '" + std::string(SOFTGLASS_BRIDGE_EXECUTABLE) + "' " + command + " -o out",
+      work(), dir_ / "capture");
+  EXPECT_EQ(no_plot.code, 0) << no_plot.err;
+  expect_contains(no_plot.out, {"no plot: gnuplot is not installed"});
+  EXPECT_EQ(softglass::testing::file_names(work() / "out"),
+            (std::vector<std::string>{"amplitude_sweep.csv", "comparison.csv"}));
+}
+
+// Issue 65, class A: two fits into one law started together both exited 0,
+// the later replacing the earlier's law and tables. The earlier is held
+// (SIGSTOP) after claiming its outputs, the later writes its result, and
+// the earlier, let go, is refused at its commit (exit code 3) and leaves the
+// later's four files as they were.
+TEST_F(BridgeCli, OfTwoFitsIntoOneLawTheLaterCommitIsRefused) {
+  softglass::testing::BackgroundTool held(
+      SOFTGLASS_BRIDGE_EXECUTABLE, "fit sweep.csv --packings runs.csv --bootstrap 2000 --quiet",
+      work(), dir_ / "held");
+  // The last of its four outputs it claims.
+  const fs::path claimed = work() / ("law_constants.csv.tmp" + std::to_string(held.pid()));
+  ASSERT_TRUE(softglass::testing::wait_until([&] { return fs::exists(claimed); }, 60));
+  held.signal(SIGSTOP);
+  ASSERT_FALSE(fs::exists(work() / "law.prm")) << "held too late";
+  const Outcome later = bridge(kFit);
+  ASSERT_EQ(later.code, 0) << later.err;
+  std::vector<std::string> texts;
+  for (const char* name : {"law.prm", "law_phi.csv", "law_points.csv", "law_constants.csv"})
+    texts.push_back(testing::read_text(work() / name));
+  std::vector<std::string> result = files();  // and the held fit's temporaries
+  std::erase_if(result,
+                [](const std::string& name) { return name.find(".tmp") != std::string::npos; });
+  held.signal(SIGCONT);
+  const auto ended = held.wait();
+  EXPECT_EQ(ended.code, 3) << ended.err;
+  expect_contains(ended.err, {"'law.prm' was written by another process while this one ran",
+                              "that result is kept"});
+  EXPECT_EQ(files(), result) << "no temporary, no file of the refused fit";
+  std::size_t k = 0;
+  for (const char* name : {"law.prm", "law_phi.csv", "law_points.csv", "law_constants.csv"})
+    EXPECT_EQ(testing::read_text(work() / name), texts[k++]) << name;
 }
 
 TEST_F(BridgeCli, AFullDiskNamesTheFileAndTheReason) {

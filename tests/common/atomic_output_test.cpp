@@ -2,18 +2,19 @@
 // existing result is only replaced when asked for.
 #include "common/atomic_output.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <vector>
-#include <memory>
 
 #include "common/errors.h"
 
@@ -46,6 +47,14 @@ void write_text(const fs::path& path, const std::string& text) {
 std::string read_text(const fs::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The names in `dir`, sorted.
+std::vector<std::string> file_names(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 bool directory_is_empty(const fs::path& dir) {
@@ -265,6 +274,113 @@ TEST_F(AtomicOutputTest, ASignalDuringTheCommitOfASetLeavesItWholeOldOrWholeNew)
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), kFiles)
         << "temporaries left";
   }
+}
+
+// Writes `text` to `path` through an AtomicOutput of a process of its own
+// (the temporary's name holds the PID: one process claims a path once), as
+// another run of a command would; whether its commit succeeded.
+bool commit_in_another_process(const fs::path& path, const std::string& text, bool overwrite) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    try {
+      AtomicOutput output(path, overwrite);
+      std::ofstream(output.temporary_path()) << text;
+      output.commit();
+    } catch (...) {
+      ::_exit(1);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  return child > 0 && ::waitpid(child, &status, 0) == child && WIFEXITED(status) &&
+         WEXITSTATUS(status) == 0;
+}
+
+// Issue 65, class A: two processes writing one output without --force both
+// claimed it at their start, when it did not exist yet, and the later commit
+// silently replaced the earlier result. The later commit is refused now, and
+// the earlier result kept.
+TEST_F(AtomicOutputTest, WithoutOverwriteTheLaterOfTwoWritersIsRefusedAtItsCommit) {
+  fs::path temporary;
+  {
+    AtomicOutput later(result(), false);
+    temporary = later.temporary_path();
+    write_text(temporary, "later");
+    ASSERT_TRUE(commit_in_another_process(result(), "earlier", false));
+    try {
+      later.commit();
+      FAIL() << "no OutputExistsError";
+    } catch (const OutputExistsError& error) {
+      const std::string message = error.what();
+      for (const std::string& part : {result().string(), std::string("another process"),
+                                      std::string("is kept"), std::string("--force")})
+        EXPECT_NE(message.find(part), std::string::npos) << part << " in " << message;
+    }
+    EXPECT_EQ(read_text(result()), "earlier");
+  }
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_EQ(file_names(dir_), std::vector<std::string>{"result.h5"});
+}
+
+// With overwrite (--force) the later writer replaces the earlier one's file,
+// as it would replace any older result.
+TEST_F(AtomicOutputTest, WithOverwriteTheLaterOfTwoWritersReplacesTheEarlier) {
+  AtomicOutput later(result(), true);
+  write_text(later.temporary_path(), "later");
+  ASSERT_TRUE(commit_in_another_process(result(), "earlier", false));
+  later.commit();
+  EXPECT_EQ(read_text(result()), "later");
+}
+
+// A set is one result: when its last file turns out to be another process's,
+// the files this commit had already put in place are taken back, so that
+// neither set is left mixed; the other process's file stays.
+TEST_F(AtomicOutputTest, ASetThatMeetsAnotherWritersFileTakesItsFilesBack) {
+  const fs::path law = dir_ / "law.prm", phi = dir_ / "law_phi.csv",
+                 points = dir_ / "law_points.csv";
+  {
+    AtomicOutput law_out(law, false), phi_out(phi, false), points_out(points, false);
+    for (AtomicOutput* out : {&law_out, &phi_out, &points_out})
+      write_text(out->temporary_path(), "later");
+    ASSERT_TRUE(commit_in_another_process(points, "earlier", false));
+    EXPECT_THROW(AtomicOutput::commit_together({&law_out, &phi_out, &points_out}),
+                 OutputExistsError);
+    EXPECT_FALSE(fs::exists(law));
+    EXPECT_FALSE(fs::exists(phi));
+    EXPECT_EQ(read_text(points), "earlier");
+  }
+  EXPECT_EQ(file_names(dir_), std::vector<std::string>{"law_points.csv"}) << "temporaries left";
+}
+
+// A resumable command registers how to resume; a terminating signal prints
+// that line on stderr, and the process still ends by the signal with its
+// temporaries removed.
+TEST_F(AtomicOutputTest, ATerminatingSignalPrintsTheRegisteredNotice) {
+  const fs::path log = dir_ / "stderr.txt";
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0 || ::dup2(fd, STDERR_FILENO) < 0) ::_exit(3);
+    set_interruption_notice("tool: interrupted; run the same command again to resume");
+    AtomicOutput output(result(), false);
+    const char byte = 1;
+    if (::write(ready[1], &byte, 1) != 1) ::_exit(3);
+    for (;;) ::pause();
+  }
+  ::close(ready[1]);
+  char byte = 0;
+  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  ::close(ready[0]);
+  ASSERT_EQ(::kill(child, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  EXPECT_EQ(read_text(log), "tool: interrupted; run the same command again to resume\n");
+  EXPECT_EQ(file_names(dir_), std::vector<std::string>{"stderr.txt"}) << "temporary left";
 }
 
 }  // namespace

@@ -159,6 +159,38 @@ TEST(RheometerCurves, ReadsTorqueAngularVelocityAndForceInSIUnits) {
   }
 }
 
+// Issue 65, class B1: an amplitude sweep given where a flow curve is read
+// reached a column it does not have and failed with "map::at". Each reader
+// says what the file is instead; a curve asked for a quantity it lacks names
+// it.
+TEST(RheometerCurves, AFileOfTheOtherKindIsNamedForWhatItIs) {
+  const std::string sweep =
+      "Storage modulus [Pa],Loss modulus [Pa],Oscillation torque [uN.m],Oscillation strain [%],"
+      "Axial force [g]\n146,4.7,0.9,0.01,58\n137,5.7,1.1,0.013,58\n130,6,1.5,0.1,58\n"
+      "100,20,3,1,58\n";
+  const std::vector<RheometerCurve> curves =
+      read_rheometer_curves(CsvTable::parse(sweep, "sweep.csv"), {});
+  ASSERT_EQ(curves.size(), 1u);
+  EXPECT_EQ(curve_kind(curves[0]), CurveKind::amplitude_sweep);
+  expect_contains(
+      refusal_of([&] { require_curve_kind(curves, CurveKind::flow_curve, "sweep.csv", "advice"); }),
+      {"'sweep.csv' is an amplitude sweep (strain amplitude and G′/G″ columns), not "
+       "a flow curve",
+       ": advice"});
+  expect_contains(refusal_of([&] { (void)curves[0][Measured::angular_velocity]; }),
+                  {"curve 'sweep' has no angular velocity column"});
+  expect_contains(refusal(sweep), {"is an amplitude sweep", "not a flow curve"});
+  expect_contains(
+      refusal_of([] {
+        read_amplitude_sweeps(
+            CsvTable::parse("Shear rate [1/s],Stress [Pa]\n1,2\n2,3\n3,4\n4,5\n", "flow.csv"));
+      }),
+      {"'flow.csv' is a flow curve (shear rate or angular velocity, and stress or torque "
+       "columns), not an amplitude sweep"});
+  expect_contains(refusal("Shear rate [1/s],Storage modulus [Pa]\n1,2\n2,3\n3,4\n4,5\n"),
+                  {"is neither a flow curve nor an amplitude sweep (its columns: shear rate, G′)"});
+}
+
 TEST(MeasuredCurves, RefusesBadValuesAndShortCurves) {
   expect_contains(refusal("rate [1/s],stress [Pa]\n1,2\n2,-3\n3,4\n4,5\n"),
                   {"line 3", "'stress [Pa]'", "must be > 0"});

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -108,6 +109,56 @@ TEST_F(MacroCli, ExistingOutputNeedsForce) {
   ASSERT_EQ(run(couette("")), 0) << error_;
   EXPECT_EQ(run(couette("")), 3);
   EXPECT_EQ(run(couette(""), "--force"), 0) << error_;
+}
+
+// Issue 65, class A: two runs into one folder started together both exited 0,
+// the later's files replacing the earlier's. The earlier is held (SIGSTOP)
+// once it has claimed the folder, the later writes its result, and the
+// earlier, let go, is refused at its commit (exit code 3), takes back what it
+// had put in place and leaves the later's result whole.
+TEST_F(MacroCli, OfTwoRunsIntoOneFolderTheLaterCommitIsRefused) {
+  std::string every_point = couette("");
+  every_point += "subsection output\n set vtu = all\nend\n";
+  write("scene.prm", every_point);
+  softglass::testing::BackgroundTool held(MACRO_EXECUTABLE, "run scene.prm -o out -q", dir_,
+                                          dir_ / "held");
+  const fs::path claimed = dir_ / "out" / ("manifest.txt.tmp" + std::to_string(held.pid()));
+  ASSERT_TRUE(softglass::testing::wait_until([&] { return fs::exists(claimed); }, 60));
+  held.signal(SIGSTOP);
+  ASSERT_FALSE(fs::exists(dir_ / "out" / "manifest.txt")) << "held too late";
+  ASSERT_EQ(run(couette("")), 0) << error_;  // one field file, not two
+  std::vector<std::string> result = softglass::testing::file_names(dir_ / "out");
+  std::erase_if(result,
+                [](const std::string& name) { return name.find(".tmp") != std::string::npos; });
+  const std::string table = softglass::testing::read_text(dir_ / "out" / "results.csv");
+  held.signal(SIGCONT);
+  const auto ended = held.wait();
+  EXPECT_EQ(ended.code, 3) << ended.err;
+  EXPECT_NE(ended.err.find("another process put its result in 'out' while this one ran"),
+            std::string::npos)
+      << ended.err;
+  EXPECT_EQ(softglass::testing::file_names(dir_ / "out"), result)
+      << "no temporary, no file of the refused run";
+  EXPECT_EQ(softglass::testing::read_text(dir_ / "out" / "results.csv"), table);
+}
+
+// Issue 65, class B2: an output folder that is a file or cannot be created
+// was "filesystem error: cannot create directories", exit code 1.
+TEST_F(MacroCli, AnOutputFolderThatCannotBeMadeIsBadInputNamingIt) {
+  write("scene.prm", couette(""));
+  write("taken", "a file, not a folder\n");
+  for (const auto& [output, message] :
+       {std::pair<std::string, std::string>{"taken",
+                                            "output folder 'taken' is a file, not a folder"},
+        {"taken/out", "output folder 'taken/out' cannot be created: 'taken' is a file"},
+        {"/proc/softglass-out", "output folder '/proc/softglass-out' cannot be created: "}}) {
+    const auto o = softglass::testing::run_tool(MACRO_EXECUTABLE, "run scene.prm -q -o " + output,
+                                                dir_, dir_ / "capture");
+    EXPECT_EQ(o.code, 2) << output << ": " << o.err;
+    EXPECT_NE(o.err.find(message), std::string::npos) << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one line: " << o.err;
+  }
+  EXPECT_EQ(softglass::testing::read_text(dir_ / "taken"), "a file, not a folder\n");
 }
 
 TEST_F(MacroCli, UnknownKeyIsNamed) {

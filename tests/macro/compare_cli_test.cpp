@@ -182,24 +182,68 @@ TEST_F(MacroCompare, TooManyPointsAreRefusedOrThinned) {
 }
 
 // Issue 19, class 5: on a full disk gnuplot exits with success and leaves a
-// truncated PNG, which was put in place. The disk is filled by a file-size
-// limit (SIGXFSZ ignored, so that writes fail as on a full disk): the tables
-// fit, the plot does not. No truncated plot and no temporary file remain.
+// truncated PNG, which was put in place. Issue 65, class B4: it was then
+// dropped with exit code 0 and blamed on gnuplot. A plot that cannot be
+// stored is an error naming the file and the reason, and no result (nor its
+// folder) is left. The disk is filled by a file-size limit (SIGXFSZ ignored,
+// so that writes fail as on a full disk): the tables fit, the plot does not.
 TEST_F(MacroCompare, TruncatedPlotIsNotPutInPlace) {
   if (!fs::exists("/usr/bin/gnuplot")) GTEST_SKIP() << "no gnuplot";
-  const softglass::testing::Outcome o = softglass::testing::run_tool(
-      "/bin/bash",
-      "-c \"trap '' XFSZ; ulimit -f 24; exec '" + std::string(MACRO_EXECUTABLE) +
-          "' compare cone.prm measured.csv -o out -q\"",
-      dir_.path(), dir_.path() / "capture");
+  const softglass::testing::Outcome o = softglass::testing::run_tool_on_full_disk(
+      MACRO_EXECUTABLE, "compare cone.prm measured.csv -o out -q", dir_.path(),
+      dir_.path() / "capture", 24);
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_NE(o.err.find("macro: error: cannot write 'out/comparison.png': File too large"),
+            std::string::npos)
+      << o.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+  // Without the limit the plot is complete.
+  ASSERT_EQ(compare("cone.prm measured.csv -o out -q").code, 0);
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "comparison.png"));
+}
+
+// Without gnuplot the comparison is written without its plot, and says why.
+TEST_F(MacroCompare, WithoutGnuplotTheResultHasNoPlotAndAWarning) {
+  const softglass::testing::Outcome o =
+      softglass::testing::run_tool("/usr/bin/env",
+                                   "PATH=/nonexistent '" + std::string(MACRO_EXECUTABLE) +
+                                       "' compare cone.prm measured.csv -o out -q",
+                                   dir_.path(), dir_.path() / "capture");
   ASSERT_EQ(o.code, 0) << o.err;
-  EXPECT_NE(o.err.find("no plot written"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("macro: warning: no plot written (gnuplot is not installed)"),
+            std::string::npos)
+      << o.err;
   EXPECT_EQ(softglass::testing::file_names(dir_.path() / "out"),
             (std::vector<std::string>{"comparison.csv", "comparison.h5", "manifest.txt",
                                       "summary.txt"}));
-  // Without the limit the plot is complete, and the forced result has it.
-  ASSERT_EQ(compare("cone.prm measured.csv -o out -q --force").code, 0);
-  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "comparison.png"));
+  EXPECT_NE(
+      read_text(dir_.path() / "out" / "summary.txt").find("no plot: gnuplot is not installed"),
+      std::string::npos);
+}
+
+// Issue 65, class B1: an amplitude sweep (G′, G″ over the strain amplitude)
+// given as the measurement ended in "macro: error: map::at", exit code 1.
+TEST_F(MacroCompare, AnAmplitudeSweepIsRefusedForWhatItIs) {
+  write_text(dir_.path() / "sweep.csv",
+             "Storage modulus [Pa],Loss modulus [Pa],Oscillation strain [%],Axial force [g]\n"
+             "146,4.7,0.01,58\n137,5.7,0.013,58\n130,6,0.1,58\n100,20,1,58\n");
+  const auto o = compare("cone.prm sweep.csv -o out -q");
+  EXPECT_EQ(o.code, 2) << o.err;
+  for (const char* part :
+       {"'sweep.csv' is an amplitude sweep (strain amplitude and G′/G″ columns), not a flow curve",
+        "bridge amplitude-sweep"})
+    EXPECT_NE(o.err.find(part), std::string::npos) << part << " in " << o.err;
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+}
+
+// Issue 65, class B2: as for `macro run` (cli_test.cpp).
+TEST_F(MacroCompare, AnOutputFolderThatIsAFileIsBadInput) {
+  write_text(dir_.path() / "taken", "mine");
+  const auto o = compare("cone.prm measured.csv -o taken -q");
+  EXPECT_EQ(o.code, 2) << o.err;
+  EXPECT_NE(o.err.find("output folder 'taken' is a file, not a folder"), std::string::npos)
+      << o.err;
+  EXPECT_EQ(read_text(dir_.path() / "taken"), "mine");
 }
 
 TEST_F(MacroCompare, ExistingResultsNeedForce) {
@@ -250,6 +294,26 @@ TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
     ++rows;
   }
   EXPECT_EQ(rows, 6) << "316 ... 1000 1/s";
+}
+
+// Issue 65, class B1, with the file of the report: the castor-oil amplitude
+// sweep against the project's Couette cell was "map::at", exit code 1.
+TEST(MacroCompareRealData, TheAmplitudeSweepExportIsRefusedForWhatItIs) {
+  const fs::path data = fs::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry" /
+                        "castoroil85_couette_amplitude_sweep.csv";
+  if (!fs::exists(data)) GTEST_SKIP() << data << " is absent";
+  TemporaryDirectory dir;
+  const auto o = softglass::testing::run_tool(
+      MACRO_EXECUTABLE,
+      fmt::format("compare '{}/cases/castoroil_couette.prm' '{}' -o out -q", SOFTGLASS_SOURCE_DIR,
+                  data.string()),
+      dir.path(), dir.path() / "capture");
+  EXPECT_EQ(o.code, 2) << o.err;
+  EXPECT_NE(o.err.find("is an amplitude sweep (strain amplitude and G′/G″ columns), not a flow "
+                       "curve"),
+            std::string::npos)
+      << o.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }
 
 }  // namespace

@@ -343,6 +343,34 @@ TEST_F(MicroCli, SummaryRefusesToAverageARunWithItself) {
   EXPECT_EQ(micro("summary run.h5 other.h5").code, 0) << "two packings average";
 }
 
+// Issue 65, class B3: a file of another kind given to `micro summary` got
+// advice that cannot help ("rerun the case") or a guess. Each is named for
+// what it is: a packing, a macro result, a table, a text file.
+TEST_F(MicroCli, SummaryNamesAFileOfAnotherKindForWhatItIs) {
+  ASSERT_EQ(micro("pack --quiet " + parameters("tiny.prm", kTiny)).code, 0);
+  testing::write_text(work() / "table.csv", "phi [1],sigma [E*]\n0.8,1e-3\n");
+  // A result of `macro run`: its root says which software wrote it.
+  {
+    H5File macro = H5File::create(work() / "results.h5");
+    macro.root().set_attribute("software", std::string("softglass macro 1.0 (test)"));
+    macro.root().create_group("results");
+    macro.close();
+  }
+  const std::string wanted =
+      "not a run file of a sheared packing (micro run, micro sweep's runs/*.h5)";
+  for (const auto& [file, kind] :
+       {std::pair<std::string, std::string>{"tiny.h5", "is a packing file (micro pack"},
+        {"results.h5", "is a result of macro run or macro compare"},
+        {"table.csv", "is a text file"},
+        {"tiny.prm", "is a text file"}}) {
+    const Outcome o = micro("summary " + file);
+    EXPECT_EQ(o.code, 2) << file;
+    EXPECT_NE(o.err.find("'" + file + "' " + kind), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find(wanted), std::string::npos) << o.err;
+    EXPECT_EQ(o.err.find("rerun"), std::string::npos) << o.err;
+  }
+}
+
 TEST_F(MicroCli, AnalyzeWritesTheStructureAndKeepsItWithoutForce) {
   // A short run stores snapshots every 0.02 strain; `analyze` adds /structure
   // and the CSV tables, refuses to replace them without --force (exit 3) and a

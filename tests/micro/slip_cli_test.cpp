@@ -108,6 +108,26 @@ TEST_F(MicroCli, SlipRefusesBadFilesBeforeAnyWork) {
   refused(few, "gap");
 }
 
+// Issue 65, class B2: an output directory that is a file or cannot be made
+// was "filesystem error: cannot create directories", exit code 1, and only
+// after the first packing was made. Refused before it now, naming the folder.
+TEST_F(MicroCli, SlipRefusesAnOutputFolderItCannotMakeBeforeThePacking) {
+  testing::write_text(work() / "taken", "mine");
+  for (const auto& [folder, message] :
+       {std::pair<std::string, std::string>{"taken",
+                                            "output folder 'taken' is a file, not a folder"},
+        {"taken/out", "output folder 'taken/out' cannot be created: 'taken' is a file"},
+        {"/proc/softglass-out", "output folder '/proc/softglass-out' cannot be created: "}}) {
+    std::string text = slip_file("  set apparent rates = 3e-5\n");
+    text.replace(text.find("directory = out"), 15, "directory = " + folder);
+    const Outcome o = micro("--threads 1 slip " + parameters("s.prm", text));
+    EXPECT_EQ(o.code, 2) << folder << ": " << o.err;
+    EXPECT_NE(o.err.find(message), std::string::npos) << o.err;
+    EXPECT_EQ(o.out.find("packing seed"), std::string::npos) << "no packing made: " << o.out;
+  }
+  EXPECT_EQ(files_in_work(), (std::vector<std::string>{"s.prm", "taken"}));
+}
+
 TEST_F(MicroCli, SlipTemplateDocumentsTheWallsSubsection) {
   const Outcome tmpl = micro("template --slip");
   ASSERT_EQ(tmpl.code, 0);

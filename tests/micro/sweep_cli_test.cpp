@@ -466,6 +466,65 @@ TEST_F(MicroCli, SweepRunsOneCaseOfABatchArray) {
   EXPECT_NEAR(std::stod(pace[1]) / (recorded / (finished_hours * 3600.0)), 1.0, 0.01);
 }
 
+// The tasks of a batch array whose cases share a packing make it at once when
+// it is missing. Now that a commit never replaces another process's file
+// (issue 65), the later task uses the packing the earlier wrote instead of
+// failing: one task is held (SIGSTOP) once it has claimed the packing, the
+// other makes it and runs its case, and the held one, let go, runs its own.
+TEST_F(MicroCli, BatchTasksSharingAPackingBothRunTheirCases) {
+  parameters("s.prm",
+             sweep_file("out",
+                        "  set volume fractions = 0.7\n  set gamma dot tildes = 1e-4, 3e-5\n"
+                        "  set packings = 1\n",
+                        1.0));
+  softglass::testing::BackgroundTool held(SOFTGLASS_MICRO_EXECUTABLE,
+                                          "--threads 1 sweep s.prm --case 0 --quiet", work(),
+                                          dir_ / "held");
+  const fs::path claimed =
+      work() / ("out/packings/phi0.7000_seed1.h5.tmp" + std::to_string(held.pid()));
+  ASSERT_TRUE(softglass::testing::wait_until([&] { return fs::exists(claimed); }, 60));
+  held.signal(SIGSTOP);
+  const Outcome other = micro("--threads 1 sweep s.prm --case 1 --quiet");
+  ASSERT_EQ(other.code, 0) << other.err;
+  const std::string packing = testing::read_text(work() / "out/packings/phi0.7000_seed1.h5");
+  held.signal(SIGCONT);
+  const auto ended = held.wait();
+  EXPECT_EQ(ended.code, 0) << ended.err;
+  EXPECT_NE(ended.out.find("written meanwhile by another task, used"), std::string::npos)
+      << ended.out;
+  EXPECT_EQ(testing::read_text(work() / "out/packings/phi0.7000_seed1.h5"), packing);
+  EXPECT_EQ(std::distance(fs::directory_iterator(work() / "out/runs"), fs::directory_iterator()),
+            2);
+}
+
+// Issue 65, class C: a sweep ended by SIGTERM (a batch system's time limit)
+// or Ctrl-C said nothing. It says, in one line on stderr, that the run can
+// be resumed; it still ends by the signal, with no temporary file left, and
+// the same command goes on from the checkpoint.
+TEST_F(MicroCli, SweepEndedByASignalSaysHowToResume) {
+  const std::string entries =
+      "  set volume fractions = 0.8\n  set gamma dot tildes = 3e-5\n  set packings = 1\n"
+      "  set checkpoint steps = 100\n";
+  parameters("s.prm", sweep_file("out", entries, 6.0));
+  const fs::path checkpoint = work() / "out/runs/phi0.8000_gt3.000e-05_seed1.checkpoint.h5";
+  softglass::testing::BackgroundTool sweep(
+      SOFTGLASS_MICRO_EXECUTABLE, "--threads 1 sweep s.prm --quiet", work(), dir_ / "signalled");
+  ASSERT_TRUE(softglass::testing::wait_until([&] { return fs::exists(checkpoint); }, 120));
+  sweep.signal(SIGTERM);
+  const auto ended = sweep.wait();
+  EXPECT_EQ(ended.signal, SIGTERM) << "exit code " << ended.code << ": " << ended.err;
+  EXPECT_EQ(ended.err,
+            "micro sweep: interrupted; run the same command again to resume (finished cases are "
+            "kept)\n");
+  for (const auto& entry : fs::recursive_directory_iterator(work() / "out"))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+  ASSERT_FALSE(fs::exists(work() / "out/runs/phi0.8000_gt3.000e-05_seed1.h5"))
+      << "ended too late: the case had finished";
+  const Outcome resumed = micro("--threads 1 sweep s.prm --quiet");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("resumed from its checkpoint"), std::string::npos) << resumed.out;
+}
+
 // The run is checkpointed every 100 accepted steps; the first sweep is killed
 // (SIGKILL: no chance to clean up) once a checkpoint exists, the rerun resumes
 // it, and the tables must be those of the uninterrupted sweep to the last digit.
