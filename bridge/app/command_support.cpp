@@ -42,14 +42,13 @@ double contact_modulus(const ModulusSource& s, const Law& law, double phi, bool 
             ? fmt::format("(G' plateau/E*)(phi), the law's amplitude sweep at omega~ = {:.4g}",
                           law.amplitude_sweep->frequency)
             : std::string("(G0/E*)(phi), the law's static G0");
-    fmt::print(
-        "E*       {:.6g} Pa ± {:.2g} % = G' / {}: every stress below carries this error too\n",
-        e_star.value, 100.0 * e_star.error() / e_star.value, ratio);
+    fmt::print("E*       {:.6g} Pa {} = G' / {}: every stress below carries this error too\n",
+               e_star.value, relative_error_text(e_star), ratio);
     lines.push_back(fmt::format(
-        "E* = G' / {} = {:.6g} Pa / {:.6g} = {:.6g} Pa +- {:.2g} % (every stress below scales with "
-        "E*, so this error adds to theirs)",
+        "E* = G' / {} = {:.6g} Pa / {:.6g} = {:.6g} Pa {} (every stress below scales with E*, so "
+        "this error adds to theirs)",
         ratio, *s.plateau_modulus, *s.plateau_modulus / e_star.value, e_star.value,
-        100.0 * e_star.error() / e_star.value));
+        relative_error_text(e_star)));
     return e_star.value;
   }
   return emulsion_modulus(s, lines);

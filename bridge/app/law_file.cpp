@@ -3,6 +3,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include <cctype>
 #include <map>
 #include <set>
@@ -133,6 +135,7 @@ Law read_law_file(const std::filesystem::path& file) {
   for (const char* name : {"volume fractions", "gamma tilde range", "shear modulus",
                            "shear modulus error", "yield strain", "yield strain error"})
     l.declare(prm, "", name, true);
+  l.declare(prm, "", "packings", false);
   prm.enter_subsection("universal");
   for (const char* name : {"k", "k error", "mean exponent", "mean exponent error"})
     l.declare(prm, "universal/", name, true);
@@ -175,6 +178,19 @@ Law read_law_file(const std::filesystem::path& file) {
   law.gamma_tilde_min = range[0];
   law.gamma_tilde_max = range[1];
   law.modulus = estimates(l, "shear modulus", law.phi.size(), source);
+  law.packings = l("packings");
+  if (!law.packings.empty()) {
+    if (law.packings.size() != law.phi.size())
+      throw InputError(fmt::format("{}: 'packings' has {} value(s), expected {} (one per volume "
+                                   "fraction)",
+                                   source, law.packings.size(), law.phi.size()));
+    for (std::size_t j = 0; j < law.packings.size(); ++j) {
+      require(law.packings[j] >= 1 && law.packings[j] == std::floor(law.packings[j]),
+              fmt::format("{}: 'packings' = {} is not a count of packings", source,
+                          law.packings[j]));
+      if (law.packings[j] < 2) law.modulus[j].error = NAN;
+    }
+  }
   law.yield_strain = estimates(l, "yield strain", law.phi.size(), source);
   const std::pair<Quantity, const char*> constants[] = {{Quantity::sigma, "universal/k"},
                                                         {Quantity::N1, "universal/k N1"},

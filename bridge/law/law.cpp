@@ -69,7 +69,9 @@ Law make_law(const SweepAnalysis& a, std::vector<std::string> provenance) {
     law.gamma_tilde_min = std::min(law.gamma_tilde_min, rates.front());
     law.gamma_tilde_max = std::max(law.gamma_tilde_max, rates.back());
     law.phi.push_back(g.phi);
-    law.modulus.push_back({v.modulus, e.modulus});
+    const double packings = static_cast<double>(*std::min_element(g.packings.begin(), g.packings.end()));
+    law.packings.push_back(packings);
+    law.modulus.push_back({v.modulus, packings < 2 ? NAN : e.modulus});
     law.yield_strain.push_back({v.yield_strain, e.yield_strain});
     for (Quantity q : kAllQuantities) {
       if (!law.hb[index(q)]) continue;
@@ -136,7 +138,9 @@ void validate(const Law& law, const std::string& source) {
   require_size(law.yield_strain.size(), n, source, "yield strain");
   if (!law.hb[index(Quantity::sigma)]) throw InputError(source + ": subsection 'sigma' is missing");
   for (std::size_t j = 0; j < n; ++j) {
-    require_finite(law.modulus[j], source, "shear modulus");
+    const bool one_packing = !law.packings.empty() && law.packings[j] < 2;
+    require_finite({law.modulus[j].value, one_packing ? 0.0 : law.modulus[j].error}, source,
+                   "shear modulus");
     require_finite(law.yield_strain[j], source, "yield strain");
   }
   for (Quantity q : kAllQuantities) {

@@ -42,6 +42,10 @@ struct Law {
   std::vector<double> phi;  // increasing
   double gamma_tilde_min = 0.0, gamma_tilde_max = 0.0;
   std::vector<Estimate> modulus, yield_strain;  // per volume fraction
+  // Per volume fraction, the fewest packings any of its state points averages;
+  // empty for a law written before it was recorded. With one packing G0 has no
+  // packing-to-packing scatter to estimate: its error is NaN ("n/a").
+  std::vector<double> packings;
   PerQuantity<HbLaw> hb;                        // sigma always
   std::optional<ForceLaw> force;                // with structure data
   PerQuantity<Estimate> k;                      // sigma: k, N1: k′, N2: k″

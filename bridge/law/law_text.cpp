@@ -3,6 +3,8 @@
 // numbers; app/law_file.cpp reads it back with ParameterHandler.
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "bridge/law/law.h"
 
 namespace softglass::bridge {
@@ -18,8 +20,12 @@ std::string list(const std::vector<T>& values, F&& format) {
 std::string values(const std::vector<Estimate>& e) {
   return list(e, [](const Estimate& x) { return fmt::format("{:.10g}", x.value); });
 }
+// An error that cannot be estimated (NaN) is written 0: the reader knows it
+// from the packings (law_file.cpp), and a parameter file holds no NaN.
 std::string errors(const std::vector<Estimate>& e) {
-  return list(e, [](const Estimate& x) { return fmt::format("{:.4g}", x.error); });
+  return list(e, [](const Estimate& x) {
+    return fmt::format("{:.4g}", std::isnan(x.error) ? 0.0 : x.error);
+  });
 }
 
 // "  set name = value", names aligned.
@@ -76,6 +82,11 @@ std::string law_text(const Law& law) {
   set(out, "  ", "volume fractions", list(law.phi, [](double p) { return fmt::format("{}", p); }));
   set(out, "  ", "gamma tilde range",
       fmt::format("{:.6g}, {:.6g}", law.gamma_tilde_min, law.gamma_tilde_max));
+  if (!law.packings.empty()) {
+    out += "  # the fewest packings any state point averages, per volume fraction; with one,\n"
+           "  # the error of G0 cannot be estimated (written 0, read as n/a)\n";
+    set(out, "  ", "packings", list(law.packings, [](double p) { return fmt::format("{}", p); }));
+  }
   out += "  # G0/E*: the linear shear modulus of the packings\n";
   estimates(out, "  ", "shear modulus", law.modulus);
   out += "  # gamma_y = sigma_y / G0, with the Herschel-Bulkley sigma_y\n";

@@ -15,6 +15,11 @@ double MaterialValue::error() const {
   return std::isnan(interpolation) ? statistical : std::hypot(statistical, interpolation);
 }
 
+std::string relative_error_text(const MaterialValue& v) {
+  if (std::isnan(v.statistical)) return "+- n/a (one packing: no scatter between packings)";
+  return fmt::format("+- {:.2g} %", 100.0 * v.error() / std::abs(v.value));
+}
+
 namespace {
 
 MaterialLaw dimensional(const Law& law, const HbLaw& hb, const MaterialRequest& request) {

@@ -45,6 +45,11 @@ struct MaterialValue {
   double error() const;  // in quadrature; the statistical error alone when the other is unknown
 };
 
+/// "+- 1.2 %", or, when the statistical error cannot be estimated (NaN: a law
+/// of one packing per state point), "+- n/a (one packing)": never a number
+/// that is only floating-point noise.
+std::string relative_error_text(const MaterialValue& v);
+
 /// N = yield + consistency γ̇^index in SI units.
 struct MaterialLaw {
   MaterialValue yield, consistency, index;

@@ -242,8 +242,8 @@ PredictionScales resolve_scales(const Law& law, const ReducedCurve& curve,
       break;
     case PredictionMode::plateau_modulus:
       p.modulus = contact_modulus_from_plateau(law, in.phi, *in.plateau_modulus, in.extrapolate);
-      p.notes.push_back(fmt::format("E* = G' / (G0/E*)(phi) = {:.6g} Pa +- {:.2g} %",
-                                    p.modulus.value, 100.0 * p.modulus.error() / p.modulus.value));
+      p.notes.push_back(fmt::format("E* = G' / (G0/E*)(phi) = {:.6g} Pa {}", p.modulus.value,
+                                    relative_error_text(p.modulus)));
       break;
     case PredictionMode::fitted_modulus:
       p.modulus = fit_modulus(curve, *in.measured_curve, in.viscosity, p.notes);
@@ -321,6 +321,10 @@ Prediction predict(const Law& law, const SimulatedCurves& curves, const Predicti
       "band (one standard deviation): the packings' statistical error of the simulated points "
       "and the interpolation between simulated phi, propagated, in quadrature with the scale's "
       "error above");
+  if (std::isnan(p.modulus.error()))
+    p.notes.push_back(
+        "the law has one packing at this phi: the scatter of G0 between packings is n/a and left "
+        "out of the band, which is therefore a lower bound");
   state_model_error(p, in, scale * curve.yield());
   return p;
 }

@@ -53,6 +53,31 @@ TEST(LawFile, RoundTripsThroughParameterHandler) {
   }
 }
 
+// G0's error from one packing is no number: n/a in memory (NaN), 0 in the file
+// beside `packings` = 1, and n/a again when read back; with several packings
+// it is the bootstrap's.
+TEST(LawFile, TheErrorOfG0FromOnePackingIsNotANumber) {
+  Law law = synthetic_law();
+  ASSERT_EQ(law.packings.size(), law.phi.size());
+  for (std::size_t j = 0; j < law.phi.size(); ++j) {
+    EXPECT_GE(law.packings[j], 2.0);
+    EXPECT_GT(law.modulus[j].error, 0.0);
+  }
+  law.packings[0] = 1;
+  law.modulus[0].error = NAN;
+  testing::TemporaryDirectory dir;
+  testing::write_text(dir / "law.prm", law_text(law));
+  const Law back = read_law_file(dir / "law.prm");
+  EXPECT_TRUE(std::isnan(back.modulus[0].error));
+  EXPECT_NEAR(back.modulus[1].error, law.modulus[1].error, 1e-3 * law.modulus[1].error);
+  EXPECT_EQ(back.packings, law.packings);
+  expect_contains(law_text(law), {"set packings", "read as n/a"});
+  std::string text = law_text(law);
+  text.replace(text.find("set packings            = 1"), 28, "set packings            = 0.5");
+  testing::write_text(dir / "bad.prm", text);
+  EXPECT_THROW(read_law_file(dir / "bad.prm"), InputError);
+}
+
 // The amplitude-sweep law reads back with its rows per volume fraction; a
 // list of the wrong length is refused naming it.
 TEST(LawFile, RoundTripsTheAmplitudeSweepLaw) {
