@@ -8,9 +8,11 @@
 #     tried N refused R defects D" (fuzz_check.h); a program that ends without
 #     its tallies crashed, which counts as a defect;
 #   - the tools' own hostile-command tests (MicroCli, BridgeCli, MacroCli,
-#     MacroCompare, AtomicOutputTest): real processes on real files — bad
-#     arguments, read-only and full disks, SIGKILL and SIGTERM mid-run — each a
-#     test that passes or fails.
+#     MacroCompare) and those of the shared guards (AtomicOutputTest,
+#     OutputFolder, InputFile, MemoryBudget, PlotOutcome): real processes on
+#     real files — bad arguments, devices, encodings, read-only and full disks,
+#     concurrent writers, SIGKILL and SIGTERM mid-run — each a test that passes
+#     or fails.
 #   scripts/reliability_table.sh build            (the CI budget)
 #   SOFTGLASS_FUZZ_ITERATIONS=1000 scripts/reliability_table.sh build
 # FUZZ_TIMEOUT (s, default 1800) bounds each fuzz program: one that does not
@@ -57,9 +59,10 @@ for program in micro_fuzz_tests bridge_fuzz_tests bridge_prm_fuzz_tests macro_fu
 done
 
 # The hostile-command tests, run through CTest: one test, one or more commands.
-(cd "$build" && ctest -R '^(MicroCli|BridgeCli|MacroCli|MacroCompare|AtomicOutputTest)\.' \
+suites="MicroCli BridgeCli MacroCli MacroCompare AtomicOutputTest OutputFolder InputFile MemoryBudget PlotOutcome"
+(cd "$build" && ctest -R "^(${suites// /|})\\." \
    > "$work/cli.out" 2>&1) || true
-for suite in MicroCli BridgeCli MacroCli MacroCompare AtomicOutputTest; do
+for suite in $suites; do
   case $suite in
     Micro*) tool=micro ;; Bridge*) tool=bridge ;; Macro*) tool=macro ;; *) tool=all ;;
   esac
