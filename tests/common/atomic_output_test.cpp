@@ -61,6 +61,24 @@ bool directory_is_empty(const fs::path& dir) {
   return fs::directory_iterator(dir) == fs::directory_iterator();
 }
 
+// The parent's side of a forked child that writes one byte to `ready` once it
+// holds what the test examines: waits for that byte.
+void await_ready(int ready[2]) {
+  ::close(ready[1]);
+  char byte = 0;
+  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  ::close(ready[0]);
+}
+
+// Sends `signal` to `child` and expects it to end by that signal.
+void expect_ended_by(pid_t child, int signal) {
+  ASSERT_EQ(::kill(child, signal), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "signal " << signal;
+  EXPECT_EQ(WTERMSIG(status), signal);
+}
+
 TEST_F(AtomicOutputTest, CommitMovesTheTemporaryFileOntoTheFinalPath) {
   AtomicOutput output(result(), false);
   EXPECT_EQ(output.final_path(), result());
@@ -215,17 +233,10 @@ TEST_F(AtomicOutputTest, ATerminatingSignalRemovesTheTemporariesAndStillEndsTheP
       if (::write(ready[1], &byte, 1) != 1) ::_exit(3);
       for (;;) ::pause();
     }
-    ::close(ready[1]);
-    char byte = 0;
-    ASSERT_EQ(::read(ready[0], &byte, 1), 1);
-    ::close(ready[0]);
+    await_ready(ready);
     const fs::path temporary = result().string() + ".tmp" + std::to_string(child);
     ASSERT_TRUE(fs::exists(temporary));
-    ASSERT_EQ(::kill(child, signal), 0);
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFSIGNALED(status)) << "signal " << signal;
-    EXPECT_EQ(WTERMSIG(status), signal);
+    expect_ended_by(child, signal);
     EXPECT_FALSE(fs::exists(temporary)) << "signal " << signal;
     EXPECT_FALSE(fs::exists(dir_ / ("table.csv.tmp" + std::to_string(child))));
     EXPECT_EQ(read_text(result()), "earlier");
@@ -259,15 +270,8 @@ TEST_F(AtomicOutputTest, ASignalDuringTheCommitOfASetLeavesItWholeOldOrWholeNew)
       AtomicOutput::commit_together(set);
       for (;;) ::pause();  // the held signal ends it here at the latest
     }
-    ::close(ready[1]);
-    char byte = 0;
-    ASSERT_EQ(::read(ready[0], &byte, 1), 1);
-    ::close(ready[0]);
-    ASSERT_EQ(::kill(child, SIGTERM), 0);
-    int status = 0;
-    ASSERT_EQ(::waitpid(child, &status, 0), child);
-    ASSERT_TRUE(WIFSIGNALED(status));
-    EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    await_ready(ready);
+    expect_ended_by(child, SIGTERM);
     int renewed = 0;
     for (int k = 0; k < kFiles; ++k) renewed += read_text(name(k)) == "new" ? 1 : 0;
     EXPECT_TRUE(renewed == 0 || renewed == kFiles) << renewed << " of " << kFiles << " new";
@@ -370,15 +374,8 @@ TEST_F(AtomicOutputTest, ATerminatingSignalPrintsTheRegisteredNotice) {
     if (::write(ready[1], &byte, 1) != 1) ::_exit(3);
     for (;;) ::pause();
   }
-  ::close(ready[1]);
-  char byte = 0;
-  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
-  ::close(ready[0]);
-  ASSERT_EQ(::kill(child, SIGTERM), 0);
-  int status = 0;
-  ASSERT_EQ(::waitpid(child, &status, 0), child);
-  ASSERT_TRUE(WIFSIGNALED(status));
-  EXPECT_EQ(WTERMSIG(status), SIGTERM);
+  await_ready(ready);
+  expect_ended_by(child, SIGTERM);
   EXPECT_EQ(read_text(log), "tool: interrupted; run the same command again to resume\n");
   EXPECT_EQ(file_names(dir_), std::vector<std::string>{"stderr.txt"}) << "temporary left";
 }
