@@ -231,6 +231,9 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
   print_amplitude_sweep_prediction(p);
   lines.push_back(fmt::format("phi = {}, E* = {:.6g} Pa, eta_s = {:.6g} Pa s: omega = {:.4g} rad/s",
                               o.phi, request.modulus, o.viscosity, p.angular_frequency));
+  if (std::isnan(p.plateau_storage.statistical))
+    lines.push_back("storage_se, loss_se: nan (n/a) where the law's sweep is one packing's: no "
+                    "scatter between packings to estimate them from");
   write_csv(predicted_out.temporary_path(), predicted_out.final_path(), lines, prediction_table(p),
             8);
   std::vector<AtomicOutput*> outputs{&predicted_out};

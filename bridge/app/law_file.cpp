@@ -103,6 +103,21 @@ std::optional<Estimate> scalar(const Lists& l, const std::string& key, const std
   return Estimate{v[0], e[0]};
 }
 
+// The optional list `key` of packing counts, one per volume fraction (empty
+// when the file has none: a law written before they were recorded).
+std::vector<double> packing_counts(const Lists& l, const std::string& key, std::size_t expected,
+                                   const std::string& source) {
+  const std::vector<double>& counts = l(key);
+  if (counts.empty()) return counts;
+  if (counts.size() != expected)
+    throw InputError(fmt::format("{}: '{}' has {} value(s), expected {} (one per volume fraction)",
+                                 source, key, counts.size(), expected));
+  for (const double k : counts)
+    require(k >= 1 && k == std::floor(k),
+            fmt::format("{}: '{}' = {} is not a count of packings", source, key, k));
+  return counts;
+}
+
 // Subsection amplitude sweep: its own volume fractions and amplitudes, the
 // moduli row by row (one row of amplitudes per volume fraction).
 AmplitudeSweepLaw read_amplitude_sweep(const Lists& l, const std::string& source) {
@@ -122,6 +137,9 @@ AmplitudeSweepLaw read_amplitude_sweep(const Lists& l, const std::string& source
   a.plateau_loss = estimates(l, s + "plateau loss", n, source);
   a.softening_strain = estimates(l, s + "softening strain", n, source);
   a.crossover_strain = estimates(l, s + "crossover strain", n, source);
+  a.packings = packing_counts(l, s + "packings", n, source);
+  for (std::size_t i = 0; i < n; ++i)
+    if (a.one_packing(i)) mark_errors_unknown(a, i);
   return a;
 }
 
@@ -158,7 +176,7 @@ Law read_law_file(const std::filesystem::path& file) {
        {"frequency", "volume fractions", "amplitudes", "storage", "storage error", "loss",
         "loss error", "plateau storage", "plateau storage error", "plateau loss",
         "plateau loss error", "softening strain", "softening strain error", "crossover strain",
-        "crossover strain error"})
+        "crossover strain error", "packings"})
     l.declare(prm, "amplitude sweep/", name, false);
   prm.leave_subsection();
   prm.leave_subsection();
@@ -178,19 +196,9 @@ Law read_law_file(const std::filesystem::path& file) {
   law.gamma_tilde_min = range[0];
   law.gamma_tilde_max = range[1];
   law.modulus = estimates(l, "shear modulus", law.phi.size(), source);
-  law.packings = l("packings");
-  if (!law.packings.empty()) {
-    if (law.packings.size() != law.phi.size())
-      throw InputError(fmt::format("{}: 'packings' has {} value(s), expected {} (one per volume "
-                                   "fraction)",
-                                   source, law.packings.size(), law.phi.size()));
-    for (std::size_t j = 0; j < law.packings.size(); ++j) {
-      require(law.packings[j] >= 1 && law.packings[j] == std::floor(law.packings[j]),
-              fmt::format("{}: 'packings' = {} is not a count of packings", source,
-                          law.packings[j]));
-      if (law.packings[j] < 2) law.modulus[j].error = NAN;
-    }
-  }
+  law.packings = packing_counts(l, "packings", law.phi.size(), source);
+  for (std::size_t j = 0; j < law.packings.size(); ++j)
+    if (law.packings[j] < 2) law.modulus[j].error = NAN;
   law.yield_strain = estimates(l, "yield strain", law.phi.size(), source);
   const std::pair<Quantity, const char*> constants[] = {{Quantity::sigma, "universal/k"},
                                                         {Quantity::N1, "universal/k N1"},

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -97,10 +98,13 @@ AmplitudeSweepLaw make_amplitude_sweep_law(const OscillationTable& table,
           table.source, phi, by_phi.begin()->first));
     law.phi.push_back(phi);
     std::vector<Estimate> storage, loss;
+    std::size_t packings = std::numeric_limits<std::size_t>::max();
     for (const auto& [gamma0, point] : sweep) {
       storage.push_back(point->storage);
       loss.push_back(point->loss);
+      packings = std::min(packings, point->packings);
     }
+    law.packings.push_back(static_cast<double>(packings));
     if (storage.front().value <= 0.0)
       throw InputError(fmt::format("{}: phi = {}: G' = {} at the smallest amplitude; allowed: > 0",
                                    table.source, phi, storage.front().value));
@@ -111,12 +115,21 @@ AmplitudeSweepLaw make_amplitude_sweep_law(const OscillationTable& table,
     law.plateau_loss.push_back(loss.front());
     law.softening_strain.push_back(strains.softening);
     law.crossover_strain.push_back(strains.crossover);
+    if (packings < 2) mark_errors_unknown(law, law.phi.size() - 1);
   }
   if (law.amplitudes.size() < 3)
     throw InputError(
         fmt::format("{}: an amplitude sweep needs at least three amplitudes ({} given)",
                     table.source, law.amplitudes.size()));
   return law;
+}
+
+void mark_errors_unknown(AmplitudeSweepLaw& law, std::size_t i) {
+  for (auto* rows : {&law.storage, &law.loss})
+    for (Estimate& e : (*rows)[i]) e.error = NAN;
+  for (auto* per_phi :
+       {&law.plateau_storage, &law.plateau_loss, &law.softening_strain, &law.crossover_strain})
+    (*per_phi)[i].error = NAN;
 }
 
 void validate(const AmplitudeSweepLaw& law, const std::string& source) {
@@ -139,19 +152,23 @@ void validate(const AmplitudeSweepLaw& law, const std::string& source) {
        {&law.plateau_storage, &law.plateau_loss, &law.softening_strain, &law.crossover_strain})
     if (per_phi->size() != law.phi.size())
       fail("the plateaus and strains need one value per volume fraction");
+  if (!law.packings.empty() && law.packings.size() != law.phi.size())
+    fail("'packings' needs one value per volume fraction");
   for (std::size_t i = 0; i < law.phi.size(); ++i) {
+    // An error is >= 0, or n/a (NaN) where the rows are one packing's.
+    const auto error_ok = [&](double e) { return e >= 0.0 || (std::isnan(e) && law.one_packing(i)); };
     for (const auto* moduli : {&law.storage, &law.loss}) {
       if ((*moduli)[i].size() != law.amplitudes.size())
         fail("'storage' and 'loss' need a value per volume fraction and amplitude");
       for (const Estimate& e : (*moduli)[i])
-        if (!std::isfinite(e.value) || !(e.error >= 0.0))
+        if (!std::isfinite(e.value) || !error_ok(e.error))
           fail("moduli must be finite, errors >= 0");
     }
     if (!(law.plateau_storage[i].value > 0.0)) fail("'plateau storage' must be > 0");
-    if (!std::isfinite(law.plateau_loss[i].value) || !(law.plateau_loss[i].error >= 0.0))
+    if (!std::isfinite(law.plateau_loss[i].value) || !error_ok(law.plateau_loss[i].error))
       fail("'plateau loss' must be finite, its error >= 0");
     for (const auto* strains : {&law.softening_strain, &law.crossover_strain})
-      if (!((*strains)[i].value >= 0.0) || !((*strains)[i].error >= 0.0))
+      if (!((*strains)[i].value >= 0.0) || !error_ok((*strains)[i].error))
         fail("strains must be >= 0 (0: not reached) with errors >= 0");
   }
 }

@@ -31,7 +31,16 @@ struct AmplitudeSweepLaw {
   std::vector<double> amplitudes;                    // γ0, increasing, the same for every φ
   std::vector<std::vector<Estimate>> storage, loss;  // [φ][amplitude], E*
   std::vector<Estimate> plateau_storage, plateau_loss, softening_strain, crossover_strain;  // per φ
+  // Per φ, the fewest packings of its rows (empty: not recorded). With one, the
+  // scatter between packings is unknown: every error of that φ is NaN ("n/a").
+  std::vector<double> packings;
+
+  /// Whether the errors at volume fraction `i` cannot be estimated.
+  bool one_packing(std::size_t i) const { return !packings.empty() && packings[i] < 2; }
 };
+
+/// Every error of volume fraction `i` made NaN: its rows are one packing's.
+void mark_errors_unknown(AmplitudeSweepLaw& law, std::size_t i);
 
 /// G′ at the end of the linear regime, as a fraction of its plateau.
 inline constexpr double kSoftening = 0.9;

@@ -61,6 +61,11 @@ void amplitude_sweep_text(std::string& out, const AmplitudeSweepLaw& a) {
   set(out, "    ", "frequency", fmt::format("{:.10g}", a.frequency));
   set(out, "    ", "volume fractions", numbers(a.phi));
   set(out, "    ", "amplitudes", numbers(a.amplitudes));
+  if (!a.packings.empty()) {
+    out += "    # the fewest packings of each volume fraction's rows; with one, its errors\n"
+           "    # cannot be estimated (written 0, read as n/a)\n";
+    set(out, "    ", "packings", numbers(a.packings));
+  }
   estimates(out, "    ", "storage", flattened(a.storage));
   estimates(out, "    ", "loss", flattened(a.loss));
   estimates(out, "    ", "plateau storage", a.plateau_storage);
