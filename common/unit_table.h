@@ -25,7 +25,13 @@ struct UnitTable {
   std::vector<std::vector<double>> rows;  ///< each as wide as `columns`
 };
 
-/// Writes `path` in the CSV form above; NumericalError naming `shown_path`
+/// Every number a tool writes passes here: NumericalError naming `file`, the
+/// row and the column of a cell that is not finite, except NaN in an error
+/// column (name ending "_se" or holding "error"), which means "n/a" (an error
+/// one packing cannot give).
+void require_finite_cells(const UnitTable& table, const std::string& file);
+
+/// Checks the cells (require_finite_cells) and writes `path` in the CSV form above; NumericalError naming `shown_path`
 /// (the file the user will see, when `path` is a temporary) if it cannot.
 void write_csv(const std::filesystem::path& path, const std::filesystem::path& shown_path,
                const std::vector<std::string>& comments, const UnitTable& table, int digits);
