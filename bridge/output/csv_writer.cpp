@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <stdexcept>
+
+#include "common/errors.h"
 
 namespace softglass::bridge {
 
@@ -30,6 +33,13 @@ void CsvWriter::separate() {
 }
 
 CsvWriter& CsvWriter::operator<<(double value) {
+  // NaN marks a cell that does not apply (a phi without its quasi-static row,
+  // an error one packing cannot give); an infinity is never a result.
+  if (std::isinf(value)) {
+    throw NumericalError(fmt::format("a result table's column {} (of {}) came out as {}: not "
+                                     "written",
+                                     cells_ + 1, columns_, value));
+  }
   separate();
   text_ += fmt::format("{:.10g}", value);
   return *this;

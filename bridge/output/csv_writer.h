@@ -13,6 +13,8 @@ class CsvWriter {
   /// `comments` become `#` lines above the header (provenance).
   CsvWriter(const std::vector<std::string>& comments, const std::vector<std::string>& header);
 
+  /// NaN is written as `nan` (the cell does not apply); an infinity is a
+  /// NumericalError naming the column.
   CsvWriter& operator<<(double value);
   CsvWriter& operator<<(const std::string& text);
   /// Ends the row; the row must have as many cells as the header.
