@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdlib>
+#include <initializer_list>
 
 namespace softglass {
 
@@ -14,6 +15,15 @@ inline bool launched_by_mpi() {
   return false;
 }
 
+/// Open MPI keeps every singleton's session files under one folder per user,
+/// /tmp/ompi.<host>.<uid>, and singletons started at the same moment (two
+/// `macro run` in a script, a parallel test suite) can remove each other's
+/// job-family folder there: the later then fails in orte_init ("mkdir ... No
+/// such file or directory"). Gives this process a base of its own,
+/// <temp>/softglass-mpi-<pid>, removed at exit (those of processes no longer
+/// alive are removed here), unless the user set orte_tmpdir_base.
+void own_mpi_session_directory();
+
 /// Call before MPI_Init. A process started without a launcher is an MPI
 /// singleton, and Open MPI's defaults then start a server for MPI_Comm_spawn
 /// and probe the UCX network layer — neither of any use to one process, and
@@ -23,6 +33,7 @@ inline void prefer_lean_mpi_singleton() {
   if (launched_by_mpi()) return;
   setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
   setenv("OMPI_MCA_pml", "ob1", 0);
+  own_mpi_session_directory();
 }
 
 }  // namespace softglass
