@@ -110,9 +110,9 @@ void keep_run(RunRecord& record, ShearRecord&& shear, double resumed_seconds,
 
 RunRecord pack_and_measure(const MicroParameters& prm, std::shared_ptr<const ContactLaw> law,
                            const std::string& command, bool quiet) {
-  // The peak resident memory of `micro pack` grows by 7.4 kB per particle
-  // (measured at N = 2,000 and 16,000, phi = 0.80: 174 and 277 MB); a run holds
-  // at least that much, so this bound refuses only what cannot fit.
+  // The slope of `micro pack`'s peak resident memory in N
+  // (bench/results/memory_per_particle-*.md); a run holds at least that much,
+  // so this bound refuses only what cannot fit.
   constexpr double kBytesPerParticle = 7.4e3;
   require_memory(kBytesPerParticle * static_cast<double>(prm.packing.particles),
                  fmt::format("a packing of N = {} particles", prm.packing.particles));
