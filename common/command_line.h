@@ -12,6 +12,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "common/measured_file.h"
 
 namespace softglass {
 
@@ -34,5 +35,15 @@ inline const CLI::Validator positive(
       return {};
     },
     "POSITIVE");
+
+/// --format FORMAT: the export format of the measured file `which` names.
+inline CLI::Option* add_measured_format_option(CLI::App& command, std::string& format,
+                                               const std::string& which) {
+  return command
+      .add_option("--format", format,
+                  "export format of " + which + " (default auto: detected):\n" +
+                      measured_file_formats_help())
+      ->check(CLI::IsMember(measured_file_formats()));
+}
 
 }  // namespace softglass

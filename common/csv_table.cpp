@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/errors.h"
 #include "common/input_file.h"
@@ -20,8 +21,10 @@ std::string_view trim(std::string_view s) {
   return s.substr(first, last - first + 1);
 }
 
-// Splits one line into cells; quotes protect commas, "" inside quotes is a quote.
-std::vector<std::string> split_cells(std::string_view line, const std::string& where) {
+}  // namespace
+
+std::vector<std::string> split_cells(std::string_view line, char delimiter,
+                                     const std::string& where) {
   std::vector<std::string> cells(1);
   bool quoted = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
@@ -37,7 +40,7 @@ std::vector<std::string> split_cells(std::string_view line, const std::string& w
       }
     } else if (c == '"') {
       quoted = true;
-    } else if (c == ',') {
+    } else if (c == delimiter) {
       cells.emplace_back();
     } else {
       cells.back() += c;
@@ -47,8 +50,6 @@ std::vector<std::string> split_cells(std::string_view line, const std::string& w
   for (auto& cell : cells) cell = std::string(trim(cell));
   return cells;
 }
-
-}  // namespace
 
 CsvTable CsvTable::read(const std::filesystem::path& file) {
   return parse(read_input_text(file, "table"), file.string());
@@ -71,7 +72,7 @@ CsvTable CsvTable::parse(std::string_view text, std::string source) {
       continue;
     }
     const std::string where = fmt::format("{}, line {}", table.source_, number);
-    auto cells = split_cells(line, where);
+    auto cells = split_cells(line, ',', where);
     if (table.header_.empty()) {
       table.header_ = std::move(cells);
       continue;
@@ -84,6 +85,23 @@ CsvTable CsvTable::parse(std::string_view text, std::string source) {
     table.lines_.push_back(number);
   }
   if (table.header_.empty()) throw InputError(table.source_ + ": no header line");
+  return table;
+}
+
+CsvTable CsvTable::from_rows(std::string source, std::string title,
+                             std::vector<std::string> comments, std::vector<std::string> header,
+                             std::vector<std::vector<std::string>> rows,
+                             std::vector<std::size_t> lines) {
+  CsvTable table;
+  table.source_ = std::move(source);
+  table.title_ = std::move(title);
+  table.comments_ = std::move(comments);
+  table.header_ = std::move(header);
+  table.cells_ = std::move(rows);
+  table.lines_ = std::move(lines);
+  for (const auto& row : table.cells_)
+    if (row.size() != table.header_.size())
+      throw std::logic_error("CsvTable::from_rows: a row as wide as the header was expected");
   return table;
 }
 

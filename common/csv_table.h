@@ -24,6 +24,16 @@ class CsvTable {
   static CsvTable read(const std::filesystem::path& file);
   /// Parses `text`; `source` names it in messages (usually the file name).
   static CsvTable parse(std::string_view text, std::string source);
+  /// A table assembled by a reader of another text form (an instrument
+  /// export's section): `lines[r]` is row r's line in the file, for messages;
+  /// `title` names the section (a step of the export), "" for a whole file.
+  static CsvTable from_rows(std::string source, std::string title,
+                            std::vector<std::string> comments, std::vector<std::string> header,
+                            std::vector<std::vector<std::string>> rows,
+                            std::vector<std::size_t> lines);
+
+  /// The section's name in its file ("Flow sweep - 3"), "" when the table is the whole file.
+  const std::string& title() const { return title_; }
 
   const std::string& source() const { return source_; }
   const std::vector<std::string>& comments() const { return comments_; }
@@ -43,7 +53,7 @@ class CsvTable {
   std::optional<std::size_t> find(std::string_view name) const;
 
  private:
-  std::string source_;
+  std::string source_, title_;
   std::vector<std::string> comments_, header_;
   std::vector<std::vector<std::string>> cells_;
   std::vector<std::size_t> lines_;
@@ -55,5 +65,11 @@ struct ColumnName {
   std::string name, units;
 };
 ColumnName split_units(std::string_view header);
+
+/// One line split at `delimiter` into trimmed cells; double quotes protect
+/// delimiters ("" inside quotes is a quote). InputError naming `where` for an
+/// unterminated quote.
+std::vector<std::string> split_cells(std::string_view line, char delimiter,
+                                     const std::string& where);
 
 }  // namespace softglass

@@ -103,24 +103,89 @@ void require_curve_kind(const std::vector<RheometerCurve>& curves, CurveKind exp
 }
 
 std::vector<RheometerCurve> read_rheometer_curves(const CsvTable& csv,
-                                                  const FallbackUnits& fallback) {
+                                                  const MeasuredReading& fallback) {
   for (const measured::LayoutEntry& layout : measured::layouts().entries())
     if (layout.recognises(csv.header())) return layout.read(csv, fallback);
   throw InputError(
       fmt::format("{}: no layout of measured files recognises its header", csv.source()));
 }
 
-std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv,
-                                                const FallbackUnits& fallback) {
+std::vector<RheometerCurve> read_rheometer_curves(const MeasuredFile& file,
+                                                  const MeasuredReading& fallback) {
+  std::vector<RheometerCurve> curves;
+  for (const CsvTable& section : file.sections) {
+    std::vector<RheometerCurve> read = read_rheometer_curves(section, fallback);
+    curves.insert(curves.end(), std::make_move_iterator(read.begin()),
+                  std::make_move_iterator(read.end()));
+  }
+  return curves;
+}
+
+namespace {
+
+// Whether a flow curve's rates (or angular velocities) span less than 1 %: a
+// step at one rate, a transient rather than a flow curve.
+bool at_one_rate(const RheometerCurve& c) {
+  const std::vector<double>& x =
+      c.has(Measured::shear_rate) ? c[Measured::shear_rate] : c[Measured::angular_velocity];
+  return x.back() < 1.01 * x.front();  // sorted by finish()
+}
+
+}  // namespace
+
+std::vector<RheometerCurve> curves_of_kind(const MeasuredFile& file, const MeasuredReading& fallback,
+                                           CurveKind kind, const std::string& advice) {
+  if (file.sections.size() == 1) {
+    std::vector<RheometerCurve> curves = read_rheometer_curves(file.sections[0], fallback);
+    require_curve_kind(curves, kind, file.source, advice);
+    return curves;
+  }
+  std::vector<RheometerCurve> kept;
+  std::vector<std::string> left_out;
+  for (const CsvTable& section : file.sections) {
+    for (RheometerCurve& c : read_rheometer_curves(section, fallback)) {
+      const CurveKind k = curve_kind(c);
+      if (k == kind && !(k == CurveKind::flow_curve && at_one_rate(c))) {
+        kept.push_back(std::move(c));
+      } else {
+        left_out.push_back(fmt::format("'{}' ({})", c.label,
+                                       k == kind ? "a flow curve at one rate" : describe(k)));
+      }
+    }
+  }
+  if (kept.empty()) {
+    throw InputError(fmt::format("'{}' ({} export) has no section that is {}; its sections: {}{}{}",
+                                 file.source, file.format, describe(kind),
+                                 fmt::join(left_out, ", "), advice.empty() ? "" : ": ", advice));
+  }
+  return kept;
+}
+
+namespace {
+
+// The quantities of a curve, for messages: "shear rate, torque".
+std::string columns_of(const RheometerCurve& c) {
+  std::vector<std::string> found;
+  for (const auto& [quantity, column] : c.values) found.push_back(quantity_name(quantity));
+  return fmt::format("{}", fmt::join(found, ", "));
+}
+
+// A plain table as a file of one section.
+MeasuredFile whole(const CsvTable& csv) {
+  return {.source = csv.source(), .format = "plain", .sections = {csv}};
+}
+
+}  // namespace
+
+std::vector<MeasuredCurve> read_measured_curves(const MeasuredFile& file,
+                                                const MeasuredReading& fallback) {
   std::vector<MeasuredCurve> curves;
-  std::vector<RheometerCurve> read = read_rheometer_curves(csv, fallback);
-  require_curve_kind(read, CurveKind::flow_curve, csv.source());
-  for (RheometerCurve& c : read) {
+  for (RheometerCurve& c : curves_of_kind(file, fallback, CurveKind::flow_curve)) {
     if (!c.has(Measured::shear_rate) || !c.has(Measured::stress)) {
       throw InputError(
-          fmt::format("{}: needs a shear-rate and a stress column (e.g. 'Shear rate [1/s]', "
-                      "'Stress [Pa]'); found {}",
-                      csv.source(), fmt::join(csv.header(), ", ")));
+          fmt::format("{}: curve '{}' needs a shear-rate and a stress column (e.g. 'Shear rate "
+                      "[1/s]', 'Stress [Pa]'); it has {}",
+                      file.source, c.label, columns_of(c)));
     }
     MeasuredCurve& m = curves.emplace_back();
     m.label = c.label;
@@ -131,18 +196,21 @@ std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv,
   return curves;
 }
 
-std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const CsvTable& csv) {
+std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv,
+                                                const MeasuredReading& fallback) {
+  return read_measured_curves(whole(csv), fallback);
+}
+
+std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const MeasuredFile& file) {
   std::vector<MeasuredAmplitudeSweep> sweeps;
-  std::vector<RheometerCurve> read = read_rheometer_curves(csv, {});
-  require_curve_kind(read, CurveKind::amplitude_sweep, csv.source());
-  for (RheometerCurve& c : read) {
+  for (RheometerCurve& c : curves_of_kind(file, {}, CurveKind::amplitude_sweep)) {
     if (!c.has(Measured::strain_amplitude) || !c.has(Measured::storage_modulus) ||
         !c.has(Measured::loss_modulus)) {
       throw InputError(
-          fmt::format("{}: an amplitude sweep needs strain-amplitude, storage- and loss-modulus "
-                      "columns (e.g. 'Oscillation strain [%]', 'Storage modulus [Pa]', 'Loss "
-                      "modulus [Pa]'); found {}",
-                      csv.source(), fmt::join(csv.header(), ", ")));
+          fmt::format("{}: curve '{}': an amplitude sweep needs strain-amplitude, storage- and "
+                      "loss-modulus columns (e.g. 'Oscillation strain [%]', 'Storage modulus "
+                      "[Pa]', 'Loss modulus [Pa]'); it has {}",
+                      file.source, c.label, columns_of(c)));
     }
     MeasuredAmplitudeSweep& s = sweeps.emplace_back();
     s.label = c.label;
@@ -155,11 +223,15 @@ std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const CsvTable& csv) {
       if (*high > *low * (1.0 + 1e-6))
         throw InputError(fmt::format(
             "{}: curve '{}' runs from {} to {} rad/s: an amplitude sweep is at one frequency",
-            csv.source(), c.label, *low, *high));
+            file.source, c.label, *low, *high));
       s.angular_frequency = w.front();
     }
   }
   return sweeps;
+}
+
+std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const CsvTable& csv) {
+  return read_amplitude_sweeps(whole(csv));
 }
 
 }  // namespace softglass

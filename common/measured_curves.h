@@ -34,6 +34,10 @@
 // (E*, 1) are refused: these are measured, dimensional data. Values must be
 // finite and positive (N1 and normal force may take any sign); each curve
 // needs 4 points.
+//
+// Instrument exports (measured_file.h) reach these readers as sections: one
+// per step of a TA TRIOS export or interval of an Anton Paar RheoCompass
+// export, the whole table for a plain or delimited file.
 #pragma once
 
 #include <map>
@@ -42,11 +46,16 @@
 #include <vector>
 
 #include "common/csv_table.h"
+#include "common/measured_file.h"
 
 namespace softglass {
 
-struct FallbackUnits {
-  std::string rate, stress;  // empty: none given
+/// How the user asks for a measured file to be read: its export format
+/// (measured_file.h; "auto" detects it) and the units of rate and stress
+/// columns whose headers give none (--rate-unit, --stress-unit).
+struct MeasuredReading {
+  std::string format = "auto";
+  std::string rate{}, stress{};  // empty: none given
 };
 
 /// The quantities a column may hold; values are stored in SI units (a strain
@@ -85,7 +94,7 @@ std::string quantity_name(Measured q);
 /// rate, angular velocity or strain amplitude) and an ordinate (stress,
 /// torque or storage modulus).
 std::vector<RheometerCurve> read_rheometer_curves(const CsvTable& csv,
-                                                  const FallbackUnits& fallback);
+                                                  const MeasuredReading& fallback);
 
 /// What a measured curve is, from its columns. Any pair of an abscissa and
 /// an ordinate makes a curve, so a file of one kind reads as curves where
@@ -114,7 +123,22 @@ struct MeasuredCurve {
 };
 
 /// The flow curves of the file; InputError unless it has shear rate and stress.
-std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv, const FallbackUnits& fallback);
+std::vector<MeasuredCurve> read_measured_curves(const CsvTable& csv, const MeasuredReading& fallback);
+
+/// The curves of an export of one or more sections. A section's curve is
+/// labelled by the section's title when the section has no label column.
+std::vector<RheometerCurve> read_rheometer_curves(const MeasuredFile& file,
+                                                  const MeasuredReading& fallback);
+/// The curves of `file` of kind `kind`. A file of several sections (an
+/// instrument's procedure) may hold other tests beside them: those sections
+/// are left out, and so is a flow-curve section at one shear rate (a
+/// transient at constant rate, not a flow curve). InputError, with `advice`,
+/// when no section is of that kind, or when a one-section file is of another.
+std::vector<RheometerCurve> curves_of_kind(const MeasuredFile& file, const MeasuredReading& fallback,
+                                           CurveKind kind, const std::string& advice = "");
+/// The flow curves (shear rate and stress) of an export.
+std::vector<MeasuredCurve> read_measured_curves(const MeasuredFile& file,
+                                                const MeasuredReading& fallback);
 
 /// A measured curve holds tens to hundreds of points, each costing the tools a
 /// solve or a plotted symbol; a file with more than this is taken for
@@ -133,6 +157,8 @@ struct MeasuredAmplitudeSweep {
 /// The amplitude sweeps of the file; InputError unless it has strain
 /// amplitude, storage and loss modulus, or its frequency varies along a curve.
 std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const CsvTable& csv);
+/// The amplitude sweeps of an export (its amplitude-sweep sections).
+std::vector<MeasuredAmplitudeSweep> read_amplitude_sweeps(const MeasuredFile& file);
 
 /// SI factor of a rate unit (1/s → 1, 1/min → 1/60); InputError naming `what` otherwise.
 double rate_factor(const std::string& units, const std::string& what);

@@ -42,8 +42,10 @@ double at_strain(const std::vector<double>& amplitudes, const std::vector<Materi
 
 // The sweep `sample` of the file (its only one when empty), unless it has more
 // points than a measured sweep has (common/measured_curves.h).
-MeasuredAmplitudeSweep chosen_sweep(const std::filesystem::path& data, const std::string& sample) {
-  std::vector<MeasuredAmplitudeSweep> sweeps = read_amplitude_sweeps(CsvTable::read(data));
+MeasuredAmplitudeSweep chosen_sweep(const std::filesystem::path& data, const std::string& format,
+                                    const std::string& sample) {
+  std::vector<MeasuredAmplitudeSweep> sweeps =
+      read_amplitude_sweeps(read_measured_file(data, format));
   require(!sample.empty() || sweeps.size() == 1,
           fmt::format("'{}' holds {} amplitude sweeps: choose one with --sample", data.string(),
                       sweeps.size()));
@@ -203,7 +205,7 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
   // none behind.
   const Law law = read_law_file(o.law);
   std::optional<MeasuredAmplitudeSweep> measured;
-  if (!o.data.empty()) measured = chosen_sweep(o.data, o.sample);
+  if (!o.data.empty()) measured = chosen_sweep(o.data, o.format, o.sample);
   std::vector<std::string> lines =
       provenance("softglass bridge amplitude-sweep: a material's amplitude sweep from a law file",
                  command_line);

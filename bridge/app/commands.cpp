@@ -218,8 +218,8 @@ void material_command(const MaterialOptions& o, const std::string& command_line)
 
 void rescale_command(const RescaleOptions& o, const std::string& command_line) {
   AtomicOutput points_out(o.output, o.force), curves_out(beside(o.output, "_curves.csv"), o.force);
-  const CsvTable csv = CsvTable::read(o.data);
-  const std::vector<MeasuredCurve> curves = read_measured_curves(csv, o.units);
+  const MeasuredFile data = read_measured_file(o.data, o.units.format);
+  const std::vector<MeasuredCurve> curves = read_measured_curves(data, o.units);
   RescaleSettings settings = o.settings;
   std::string constants = "the paper's values";
   std::optional<Law> law;

@@ -52,7 +52,7 @@ struct ModeInputs {
   std::optional<double> yield_stress;  // mode (c) [Pa]
   std::filesystem::path fit_to;        // mode (d): the measured flow curve
   std::string fit_curve;               // its label, when the file holds several
-  FallbackUnits units;                 // of its columns without units
+  MeasuredReading units;                 // of its columns without units
 };
 
 struct MaterialOptions {
@@ -88,7 +88,7 @@ struct PredictOptions {
 /// The curve called `label` of a measured flow-curve file, or its only one;
 /// InputError naming the labels otherwise.
 MeasuredCurve measured_curve(const std::filesystem::path& file, const std::string& label,
-                             const FallbackUnits& units);
+                             const MeasuredReading& units);
 
 /// Declares `bridge predict` and its options on `app`.
 CLI::App* add_predict_command(CLI::App& app, PredictOptions& options);
@@ -102,7 +102,8 @@ struct AmplitudeSweepOptions {
   std::filesystem::path output = "amplitude_sweep";  // folder
   double phi = 0.0, viscosity = 0.0;
   ModulusSource source;
-  std::string sample;  // the curve of `data` when it holds several
+  std::string sample;           // the curve of `data` when it holds several
+  std::string format = "auto";  // the export format of `data` (common/measured_file.h)
   bool extrapolate = false, force = false;
 };
 
@@ -130,7 +131,7 @@ struct RescaleOptions {
   std::filesystem::path data, law;  // law empty: the paper's constants
   std::filesystem::path output = "rescaled.csv";
   RescaleSettings settings;
-  FallbackUnits units;
+  MeasuredReading units;
   // γ_y of each curve from the law file at its φ (given, or from the labels).
   std::vector<double> phi;
   bool phi_from_labels = false, extrapolate = false;

@@ -168,6 +168,7 @@ int main(int argc, char** argv) {
       "--fit-to", material.mode.fit_to,
       "with --tabulated: a measured flow curve (CSV) to fit E* to (mode d)");
   material_cmd->add_option("--fit-curve", material.mode.fit_curve, "the curve of --fit-to, by label");
+  add_measured_format_option(*material_cmd, material.mode.units.format, "--fit-to's file");
   material_cmd->add_option("--rate-unit", material.mode.units.rate, "units of --fit-to's rates");
   material_cmd->add_option("--stress-unit", material.mode.units.stress, "units of --fit-to's stresses");
   fit_to->excludes(modulus);
@@ -217,8 +218,10 @@ int main(int argc, char** argv) {
       ->required()
       ->check(positive);
   sweep_cmd->add_option("--data", sweep.data,
-                        "measured amplitude sweep (CSV: strain amplitude, storage and loss "
-                        "modulus, optionally angular frequency)");
+                        "measured amplitude sweep as the instrument exported it: strain "
+                        "amplitude, storage and loss modulus, optionally angular frequency "
+                        "(docs/measured-files.md)");
+  add_measured_format_option(*sweep_cmd, sweep.format, "--data");
   sweep_cmd->add_option("--sample", sweep.sample, "the curve of --data when it holds several");
   sweep_cmd
       ->add_option("-o,--output", sweep.output,
@@ -270,7 +273,10 @@ int main(int argc, char** argv) {
       app.add_subcommand("rescale",
                          "put measured flow curves (CSV with units) on the universal curve; fit E* "
                          "(and tau_y) when unknown");
-  rescale_cmd->add_option("data", rescale.data, "measured flow curves (CSV)")->required();
+  rescale_cmd->add_option("data", rescale.data,
+                          "measured flow curves, as the instrument exported them "
+                          "(docs/measured-files.md)")
+      ->required();
   rescale_cmd->add_option("--viscosity", s.viscosity, "solvent viscosity eta_s [Pa s]")
       ->required()
       ->check(positive);
@@ -313,6 +319,7 @@ int main(int argc, char** argv) {
                         "allow --phi outside the law's simulated range");
   rescale_cmd->add_option("--min-rate", s.min_rate, "fit only rates from here [1/s]");
   rescale_cmd->add_option("--max-rate", s.max_rate, "fit only rates up to here [1/s]");
+  add_measured_format_option(*rescale_cmd, rescale.units.format, "the measured file");
   rescale_cmd->add_option("--rate-unit", rescale.units.rate,
                           "units of shear-rate columns without units (1/s, 1/min)");
   rescale_cmd->add_option("--stress-unit", rescale.units.stress,

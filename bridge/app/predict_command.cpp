@@ -44,8 +44,9 @@ std::vector<double> requested_rates(const PredictOptions& o) {
 }  // namespace
 
 MeasuredCurve measured_curve(const std::filesystem::path& file, const std::string& label,
-                             const FallbackUnits& units) {
-  const std::vector<MeasuredCurve> curves = read_measured_curves(CsvTable::read(file), units);
+                             const MeasuredReading& units) {
+  const std::vector<MeasuredCurve> curves =
+      read_measured_curves(read_measured_file(file, units.format), units);
   if (label.empty()) {
     require(curves.size() == 1,
             fmt::format("{} holds {} curves: name one with --curve", file.string(), curves.size()));
@@ -92,6 +93,7 @@ CLI::App* add_predict_command(CLI::App& app, PredictOptions& o) {
                   "to predict at")
       ->required();
   cmd->add_option("--curve", o.curve, "the curve of --rates' file, by its label");
+  add_measured_format_option(*cmd, o.mode.units.format, "--fit-to's and --rates' measured files");
   cmd->add_option("--rate-unit", o.mode.units.rate, "units of rate columns without units");
   cmd->add_option("--stress-unit", o.mode.units.stress, "units of stress columns without units");
   cmd->add_option("--law-form", o.form,

@@ -30,6 +30,9 @@ const Kind* kind_of(const std::string& name);
 bool is_label(const std::string& name);
 /// "Stress [Pa]" or "stress_Pa" → {"Stress", "Pa"}; the suffix form only for known units.
 ColumnName measured_name(const std::string& header);
+/// Whether `unit` is a unit of some recognised column (spaces, "·" and "Nm"
+/// written as for the factors).
+bool known_unit(const std::string& unit);
 /// The SI factor of `unit` for a column of kind `kind`; InputError naming `what` otherwise.
 double unit_factor(const Kind& kind, const std::string& unit, const std::string& what);
 

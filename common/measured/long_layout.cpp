@@ -15,7 +15,7 @@
 namespace softglass::measured {
 namespace {
 
-std::vector<RheometerCurve> read_long(const CsvTable& csv, const FallbackUnits& fallback) {
+std::vector<RheometerCurve> read_long(const CsvTable& csv, const MeasuredReading& fallback) {
   std::map<Measured, Column> columns;
   std::optional<std::size_t> label;
   for (std::size_t c = 0; c < csv.columns(); ++c) {
@@ -55,7 +55,8 @@ std::vector<RheometerCurve> read_long(const CsvTable& csv, const FallbackUnits& 
   }
   std::vector<RheometerCurve> curves;
   std::map<std::string, std::size_t> by_label;
-  const std::string file_label = std::filesystem::path(csv.source()).stem().string();
+  const std::string file_label =
+      csv.title().empty() ? std::filesystem::path(csv.source()).stem().string() : csv.title();
   for (std::size_t r = 0; r < csv.rows(); ++r) {
     const std::string name = label ? csv.text(r, *label) : file_label;
     const auto [it, fresh] = by_label.emplace(name, curves.size());

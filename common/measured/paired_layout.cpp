@@ -17,7 +17,7 @@ bool recognises(const std::vector<std::string>& header) {
   return true;
 }
 
-std::vector<RheometerCurve> read_paired(const CsvTable& csv, const FallbackUnits& fallback) {
+std::vector<RheometerCurve> read_paired(const CsvTable& csv, const MeasuredReading& fallback) {
   if (fallback.rate.empty() || fallback.stress.empty()) {
     throw InputError(
         fmt::format("{}: the header labels pairs of columns (shear rate, stress) but "

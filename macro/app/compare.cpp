@@ -80,37 +80,63 @@ const RheometerCurve& select_curve(const std::vector<RheometerCurve>& curves,
                                o.data_file.string(), fmt::join(labels, ", ")));
 }
 
+// The constants that turn the file's shear rates and stresses into angular
+// velocities and torques: the command line's, else those the export records
+// (TRIOS writes its geometry's, end-effect correction included), else the
+// scene geometry's standard ones. The strain constant is the geometry's alone
+// (γ̇/Ω: the gap, the cone angle, the radius ratio); one recorded more than
+// 1 % from the scene's means the curve was measured with another geometry
+// than the scene models, which goes into `report`: the comparison would be
+// between two instruments.
 InstrumentConstants instrument_constants(const Scene& scene, const std::string& scene_name,
-                                         const CompareOptions& o) {
+                                         const CompareOptions& o, const MeasuredFile& data,
+                                         std::vector<std::string>& report) {
   const auto standard = scene.instrument();
   require(standard.has_value(),
           fmt::format("scene = {} has no rheometer torque to compare; allowed: couette, "
                       "cone-plate, parallel-plates",
                       scene_name));
   InstrumentConstants c = *standard;
-  for (auto [option, given, slot] :
-       {std::tuple{"--strain-constant", o.strain_constant, &c.strain_constant},
-        std::tuple{"--stress-constant", o.stress_constant, &c.stress_constant}}) {
-    if (!given) continue;
-    require(std::isfinite(*given) && *given > 0.0,
-            fmt::format("{} = {} is not allowed; allowed: > 0", option, *given));
-    *slot = *given;
-    c.convention = "the instrument's constants from the command line";
+  const InstrumentRecord& recorded = data.instrument;
+  if (recorded.strain_constant &&
+      std::abs(*recorded.strain_constant / standard->strain_constant - 1.0) > 0.01) {
+    report.push_back(fmt::format(
+        "warning: {} records the strain constant {:.6g} 1/rad (geometry '{}'), {:+.1f} % from "
+        "the scene's {:.6g} 1/rad: the curve was measured with another geometry than the scene "
+        "models",
+        data.source, *recorded.strain_constant, recorded.geometry,
+        100 * (*recorded.strain_constant / standard->strain_constant - 1.0),
+        standard->strain_constant));
+  }
+  for (auto [option, given, in_file, slot] :
+       {std::tuple{"--strain-constant", o.strain_constant, recorded.strain_constant,
+                   &c.strain_constant},
+        std::tuple{"--stress-constant", o.stress_constant, recorded.stress_constant,
+                   &c.stress_constant}}) {
+    if (given) {
+      require(std::isfinite(*given) && *given > 0.0,
+              fmt::format("{} = {} is not allowed; allowed: > 0", option, *given));
+      *slot = *given;
+      c.convention = "the instrument's constants from the command line";
+    } else if (in_file) {
+      *slot = *in_file;
+      c.convention = fmt::format("the constants {} records", data.source);
+    }
   }
   return c;
 }
 
 // The measured points of the chosen curve within the rate window, as torques,
 // thinned to --max-points; refused when they are too many to be a flow curve.
-MeasuredTorques read_measured(const CompareOptions& o, const InstrumentConstants& constants) {
+MeasuredTorques read_measured(const CompareOptions& o, const MeasuredFile& data,
+                              const InstrumentConstants& constants) {
   require(o.min_rate >= 0.0 && o.max_rate > o.min_rate,
           fmt::format("--min-rate {} and --max-rate {}: allowed 0 <= min < max", o.min_rate,
                       o.max_rate));
   require(o.max_points == 0 || o.max_points >= 2,
           fmt::format("--max-points {} is not allowed; allowed: >= 2", o.max_points));
   const auto curves =
-      read_rheometer_curves(CsvTable::read(o.data_file), {o.rate_unit, o.stress_unit});
-  require_curve_kind(curves, CurveKind::flow_curve, o.data_file.string(),
+      curves_of_kind(data, o.reading, CurveKind::flow_curve,
                      "macro compare solves a scene at a flow curve's angular velocities (an "
                      "amplitude sweep is compared by `bridge amplitude-sweep LAW --data FILE`)");
   MeasuredTorques m = measured_torques(select_curve(curves, o), constants, o.min_rate, o.max_rate);
@@ -291,8 +317,14 @@ int compare(const CompareOptions& o) {
   });
   check_entry_scales(entries, o.scene_file);
   std::unique_ptr<Scene> scene = make_scene(prm, material, settings, o.scene_file.parent_path());
-  const InstrumentConstants constants = instrument_constants(*scene, scene_name, o);
-  const MeasuredTorques measured = read_measured(o, constants);
+  const MeasuredFile data = read_measured_file(o.data_file, o.reading.format);
+  std::vector<std::string> file_report;
+  for (const std::string& note : data.notes) file_report.push_back("measured file: " + note);
+  const InstrumentConstants constants =
+      instrument_constants(*scene, scene_name, o, data, file_report);
+  for (const std::string& line : file_report)
+    if (line.starts_with("warning: ")) std::cerr << "macro: " << line << "\n";
+  const MeasuredTorques measured = read_measured(o, data, constants);
   const std::vector<SetEntry> measured_points = measured_entries(measured, o.data_file);
   entries.insert(entries.end(), measured_points.begin(), measured_points.end());
   check_derived_scales(*scene, material, settings, measured.angular_velocity, entries,
@@ -323,6 +355,7 @@ int compare(const CompareOptions& o) {
       extrapolation_note(*scene, material, measured.angular_velocity);
   if (!extrapolation.empty()) report.push_back(extrapolation);
   if (!material.source.empty()) report.insert(report.begin(), "material: " + material.source);
+  report.insert(report.end(), file_report.begin(), file_report.end());
   const UnitTable table = comparison_table(comparison, constants);
   const std::vector<std::string> header_lines =
       provenance(o, scene->description(), measured, describe_model(material, settings));

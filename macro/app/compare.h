@@ -19,8 +19,9 @@ struct CompareOptions {
   std::filesystem::path output;
   /// The curve's label when the file holds several (a sample column, pairs).
   std::string sample;
-  /// Units of rate and stress columns without units in their header.
-  std::string rate_unit, stress_unit;
+  /// The file's export format and the units of rate and stress columns
+  /// without units in their header.
+  MeasuredReading reading;
   /// The instrument's constants when they differ from the geometry's standard ones.
   std::optional<double> strain_constant, stress_constant;
   /// Only points whose shear rate lies in this window [1/s].

@@ -56,8 +56,8 @@ void add_compare_command(CLI::App& app, softglass::macro::app::CompareOptions& c
       ->required();
   compare
       ->add_option("data", compare_options.data_file,
-                   "measured curve (CSV): torque or stress against angular velocity or shear "
-                   "rate, units in the header")
+                   "measured curve: torque or stress against angular velocity or shear rate, "
+                   "as the instrument exported it (docs/measured-files.md)")
       ->required();
   compare->add_option("-o,--output", compare_options.output,
                       "output directory (default: <data stem>_vs_<scene stem>)");
@@ -73,9 +73,10 @@ void add_compare_command(CLI::App& app, softglass::macro::app::CompareOptions& c
   compare->add_option("--stress-constant", compare_options.stress_constant,
                       "the instrument's stress per torque [Pa/(N m)] (default: the geometry's "
                       "standard conversion)");
-  compare->add_option("--rate-unit", compare_options.rate_unit,
+  softglass::add_measured_format_option(*compare, compare_options.reading.format, "the measured curve");
+  compare->add_option("--rate-unit", compare_options.reading.rate,
                       "units of shear-rate columns without units (1/s, 1/min)");
-  compare->add_option("--stress-unit", compare_options.stress_unit,
+  compare->add_option("--stress-unit", compare_options.reading.stress,
                       "units of stress columns without units (Pa, kPa, MPa, mPa)");
   compare->add_option("--preset", compare_options.preset,
                       "override the file's solver preset: fast | standard | accurate");

@@ -16,7 +16,7 @@
 namespace softglass::bridge {
 namespace {
 
-std::vector<MeasuredCurve> load(const std::string& name, FallbackUnits units = {}) {
+std::vector<MeasuredCurve> load(const std::string& name, MeasuredReading units = {}) {
   return read_measured_curves(CsvTable::read(testing::rheometry_dir() / name), units);
 }
 
@@ -73,7 +73,7 @@ TEST_F(RealData, CastorOilEmulsionAboveItsSlipRegime) {
 
 // Dekker et al. 2018, castor oil in water, φ = 0.68 … 0.80 (digitized).
 TEST_F(RealData, DekkerEmulsionsAcrossVolumeFractions) {
-  const auto curves = load("dekker2018_emulsion_flow_curves_digitized.csv", {"1/s", "Pa"});
+  const auto curves = load("dekker2018_emulsion_flow_curves_digitized.csv", {.rate = "1/s", .stress = "Pa"});
   ASSERT_EQ(curves.size(), 7u);
   const auto rescaled = rescale(curves, water(0.03));
   double previous = 0.0;

@@ -15,11 +15,11 @@ namespace {
 
 using testing::expect_contains;
 
-std::vector<MeasuredCurve> read(const std::string& text, FallbackUnits units = {}) {
+std::vector<MeasuredCurve> read(const std::string& text, MeasuredReading units = {}) {
   return read_measured_curves(CsvTable::parse(text, "data.csv"), units);
 }
 
-std::string refusal(const std::string& text, FallbackUnits units = {}) {
+std::string refusal(const std::string& text, MeasuredReading units = {}) {
   try {
     read(text, units);
   } catch (const InputError& e) {
@@ -73,7 +73,7 @@ TEST(MeasuredCurves, ReadsPairedColumnsWithUnitsFromTheCommandLine) {
   const std::string text =
       "0.68,,0.80,\n0.001,4.7,0.001,28.7\n0.01,4.9,0.01,29.7\n0.1,5.5,0.1,34.0\n1,7.2,1,42.4\n"
       ",,10,63.2\n";
-  const auto curves = read(text, {"1/min", "Pa"});
+  const auto curves = read(text, {.rate = "1/min", .stress = "Pa"});
   ASSERT_EQ(curves.size(), 2u);
   EXPECT_EQ(curves[0].label, "0.68");
   EXPECT_EQ(curves[0].shear_rate.size(), 4u) << "a shorter curve ends at empty cells";

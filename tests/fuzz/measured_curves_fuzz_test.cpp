@@ -1,12 +1,16 @@
-// Fuzzing the reader of measured rheometer data (common/measured_curves.h)
-// with mutated instrument exports, in both layouts, each read with and without
-// units from the command line. Accepted curves are fitted or compared: every
-// value finite, rates and stresses positive, at least 4 points.
+// Fuzzing the reader of measured rheometer data (common/measured_file.h,
+// common/measured_curves.h) with mutated instrument exports, in every export
+// format and both layouts, each read with and without units from the command
+// line. Accepted curves are fitted or compared: every value finite, rates and
+// stresses positive, at least 4 points.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <optional>
+#include <sstream>
 
 #include "common/measured_curves.h"
+#include "common/measured_file.h"
 #include "fuzz_check.h"
 
 namespace softglass::bridge {
@@ -28,26 +32,44 @@ const std::string kTorques =
     "Angular velocity [rpm],Torque [mN.m],Axial force [g],Temperature [C]\n"
     "60,3,-1,25\n30,2,0.5,25\n90,4,2,25\n120,5,3,25\n";
 
-const FallbackUnits kNoUnits{}, kUnits{"1/min", "kPa"};
+// Exports in the vendors' layouts (tests/data/instrument_exports/), as UTF-8.
+std::string export_text(const std::string& name) {
+  std::ifstream in(std::string(SOFTGLASS_SOURCE_DIR) + "/tests/data/instrument_exports/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_FALSE(text.str().empty()) << name;
+  return text.str();
+}
+const std::string kTrios = export_text("trios_text_export.txt");
+const std::string kTriosLims = export_text("trios_lims_export.txt");
+const std::string kRheoCompass = export_text("rheocompass_comma_utf8_bom.csv");
+const std::string kSpreadsheet = export_text("spreadsheet_european.csv");
+const std::string kUnitsRow = export_text("units_row_tab.txt");
+
+const MeasuredReading kNoUnits{}, kUnits{.rate = "1/min", .stress = "kPa"};
 
 // Reads `text` with the command line's units and without; returns whether the
 // first was accepted (every seed is, with them).
 template <class Read, class Check>
 bool read_both_ways(const std::string& text, const std::string& input, Read read, Check check) {
-  std::optional<CsvTable> csv;
-  if (!accepted([&] { csv = CsvTable::parse(text, "m.csv"); }, input)) return false;
+  std::optional<MeasuredFile> file;
+  if (!accepted([&] { file = parse_measured_file(text, "m.csv"); }, input)) return false;
   bool with_units = false;
-  for (const FallbackUnits* units : {&kUnits, &kNoUnits}) {
-    const bool ok = read_and_check([&] { return read(*csv, *units); }, check, input);
+  for (const MeasuredReading* units : {&kUnits, &kNoUnits}) {
+    const bool ok = read_and_check([&] { return read(*file, *units); }, check, input);
     if (units == &kUnits) with_units = ok;
   }
   return with_units;
 }
 
 TEST(MeasuredCurvesFuzz, RefusesOrReadsEveryMutatedFlowCurve) {
-  fuzz_text({kInstrument, kSamples, kPaired}, 51, 2000,
-            [](const std::string& text, const std::string& input) {
-              return read_both_ways(text, input, read_measured_curves,
+  fuzz_text({kInstrument, kSamples, kPaired, kTrios, kTriosLims, kRheoCompass, kSpreadsheet,
+             kUnitsRow},
+            51, 4000, [](const std::string& text, const std::string& input) {
+              const auto read = [](const MeasuredFile& file, const MeasuredReading& units) {
+                return read_measured_curves(file, units);
+              };
+              return read_both_ways(text, input, read,
                                     [&](const std::vector<MeasuredCurve>& curves) {
                                       for (const MeasuredCurve& c : curves) {
                                         EXPECT_GE(c.shear_rate.size(), 4u) << input;
@@ -63,9 +85,13 @@ TEST(MeasuredCurvesFuzz, RefusesOrReadsEveryMutatedFlowCurve) {
 }
 
 TEST(MeasuredCurvesFuzz, RefusesOrReadsEveryMutatedRheometerExport) {
-  fuzz_text({kInstrument, kSamples, kPaired, kTorques}, 52, 2000,
-            [](const std::string& text, const std::string& input) {
-              return read_both_ways(text, input, read_rheometer_curves,
+  fuzz_text({kInstrument, kSamples, kPaired, kTorques, kTrios, kTriosLims, kRheoCompass,
+             kSpreadsheet, kUnitsRow},
+            52, 4000, [](const std::string& text, const std::string& input) {
+              const auto read = [](const MeasuredFile& file, const MeasuredReading& units) {
+                return read_rheometer_curves(file, units);
+              };
+              return read_both_ways(text, input, read,
                                     [&](const std::vector<RheometerCurve>& curves) {
                                       for (const RheometerCurve& c : curves) {
                                         EXPECT_GE(c.size(), 4u) << input;

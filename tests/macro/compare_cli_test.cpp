@@ -296,6 +296,85 @@ TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
   EXPECT_EQ(rows, 6) << "316 ... 1000 1/s";
 }
 
+// The numbers of an out/comparison.csv, row by row.
+std::vector<std::vector<double>> comparison_rows(const fs::path& folder) {
+  std::istringstream csv(read_text(folder / "comparison.csv"));
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  while (std::getline(csv, line) && line.starts_with('#')) {
+  }
+  while (std::getline(csv, line)) {
+    std::istringstream row(line);
+    std::vector<double>& v = rows.emplace_back();
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+  }
+  return rows;
+}
+
+// The castor-oil flow sweep as TRIOS exports it (tab-separated, parameter
+// blocks with the geometry's constants, a units row under the names, a peak
+// hold before the sweep): `macro compare` must read the same points as from
+// the plain CSV and say what it left out. It converts with the constants the
+// export records (Ω = γ̇/12.1872, the scene's ISO constant is 12.18715...),
+// so the speeds and predicted torques agree to the constants' 6 digits, and
+// the predicted stress is the predicted torque times the export's stress
+// constant, as the measured one is (the scene's ISO 3219 constant is 1.1 ×
+// the instrument's end-effect corrected one).
+TEST(MacroCompareRealData, ATriosExportComparesAsItsPlainCsv) {
+  const fs::path data =
+      fs::path(SOFTGLASS_SHARED_DIR) / "data" / "rheometry" / "castoroil85_couette_flow_sweep.csv";
+  if (!fs::exists(data)) GTEST_SKIP() << data << " is absent";
+  TemporaryDirectory dir;
+  std::istringstream export_lines(read_text(data));
+  std::string header, names, units, points;
+  std::getline(export_lines, header);
+  if (header.ends_with('\r')) header.pop_back();
+  std::istringstream cells(header);
+  for (std::string cell; std::getline(cells, cell, ',');) {
+    const auto open = cell.rfind(" [");
+    names += (names.empty() ? "" : "\t") + cell.substr(0, open);
+    units += (units.empty() ? "" : "\t") + cell.substr(open + 2, cell.size() - open - 3);
+  }
+  for (std::string line; std::getline(export_lines, line);) {
+    std::replace(line.begin(), line.end(), ',', '\t');
+    points += line + "\n";
+  }
+  write_text(dir.path() / "trios.txt",
+             "Filename\tcastoroil85\nInstrument name\tHR-3\n[Geometry Parameters]\n"
+             "Geometry Type\tConcentric cylinders\nName\tDIN cylinders\n"
+             "[Geometry Extended Parameters]\nStress constant\t16243.3 Pa/N.m\n"
+             "Strain constant\t12.1872 1/rad\n[step]\nPeak hold - 1\nStress\tShear rate\n"
+             "Pa\t1/s\n20\t1\n21\t1\n22\t1\n23\t1\n\n[step]\nFlow sweep - 2\n" +
+                 names + "\n" + units + "\n" + points);
+  write_text(dir.path() / "material.prm", material_text(10.0));
+  write_text(dir.path() / "cell.prm",
+             "set scene = couette\ninclude material.prm\nsubsection couette\n"
+             " set inner radius = 0.014\n set outer radius = 0.0152\n set length = 0.042\n"
+             "end\nsubsection solver\n set preset = fast\nend\n");
+  for (const auto& [file, folder] : {std::pair{data.string(), "plain"}, {"trios.txt", "trios"}}) {
+    const auto o = softglass::testing::run_tool(
+        MACRO_EXECUTABLE, fmt::format("compare cell.prm '{}' -o {} -q --min-rate 300", file, folder),
+        dir.path(), dir.path() / "capture");
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(o.err.find("warning"), std::string::npos) << "the cell is the instrument's: " << o.err;
+  }
+  const auto trios = comparison_rows(dir.path() / "trios");
+  const auto plain = comparison_rows(dir.path() / "plain");
+  ASSERT_EQ(trios.size(), 6u);
+  ASSERT_EQ(trios.size(), plain.size());
+  for (std::size_t i = 0; i < trios.size(); ++i) {
+    // Columns: Omega, rate, measured M, predicted M, error, estimate, measured τ, predicted τ.
+    for (const std::size_t c : {1, 2, 6}) EXPECT_EQ(trios[i][c], plain[i][c]) << "row " << i;
+    for (const std::size_t c : {0, 3}) EXPECT_NEAR(trios[i][c], plain[i][c], 1e-5 * plain[i][c]);
+    // The export's stress and torque are each rounded to 6 digits.
+    const double torque_ratio = trios[i][3] / trios[i][2];
+    EXPECT_NEAR(trios[i][7] / trios[i][6], torque_ratio, 1e-5 * torque_ratio) << "row " << i;
+  }
+  EXPECT_NE(read_text(dir.path() / "trios" / "summary.txt")
+                .find("measured file: step 'Peak hold - 1' left out"),
+            std::string::npos);
+}
+
 // Issue 65, class B1, with the file of the report: the castor-oil amplitude
 // sweep against the project's Couette cell was "map::at", exit code 1.
 TEST(MacroCompareRealData, TheAmplitudeSweepExportIsRefusedForWhatItIs) {
