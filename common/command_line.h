@@ -41,8 +41,8 @@ inline CLI::Option* add_measured_format_option(CLI::App& command, std::string& f
                                                const std::string& which) {
   return command
       .add_option("--format", format,
-                  "export format of " + which + " (default auto: detected):\n" +
-                      measured_file_formats_help())
+                  "export format of " + which +
+                      " (default auto: detected; docs/measured-files.md describes each)")
       ->check(CLI::IsMember(measured_file_formats()));
 }
 

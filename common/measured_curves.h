@@ -26,7 +26,7 @@
 //     "stress_Pa".
 // Units: rates in 1/s (also s^-1, s-1, 1/min); stresses in Pa, kPa, MPa or
 // mPa; torques in N.m, mN.m, µN.m, nN.m (also written Nm, N m, N·m); angular
-// velocities in rad/s or rpm; forces in N, mN or g (gram-force, as rheometers
+// velocities in rad/s, rpm or 1/min; forces in N, mN or g (gram-force, as rheometers
 // export "Axial force [g]"); moduli as stresses; strain amplitudes in % or 1;
 // oscillation frequencies in rad/s or Hz (a cycle per second is 2π rad/s). Headers of rates and
 // stresses without units take the `fallback` units (the command line's --rate-unit, --stress-unit);

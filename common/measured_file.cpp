@@ -53,11 +53,4 @@ std::vector<std::string> measured_file_formats() {
   return names;
 }
 
-std::string measured_file_formats_help() {
-  std::string help = "auto: the first format below that recognises the file";
-  for (const measured::FormatEntry& f : measured::formats().entries())
-    help += fmt::format("\n{}: {}", f.name, f.summary);
-  return help;
-}
-
 }  // namespace softglass

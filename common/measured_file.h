@@ -52,7 +52,5 @@ MeasuredFile parse_measured_file(std::string_view text, const std::string& sourc
 
 /// "auto" and the name of every export format, for --format's allowed values.
 std::vector<std::string> measured_file_formats();
-/// One line per format, "name: summary", for --help texts.
-std::string measured_file_formats_help();
 
 }  // namespace softglass
