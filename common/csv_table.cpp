@@ -68,7 +68,12 @@ CsvTable CsvTable::parse(std::string_view text, std::string source) {
     const std::string_view line = trim(raw);
     if (line.empty()) continue;
     if (line.front() == '#') {
-      if (table.header_.empty()) table.comments_.emplace_back(trim(line.substr(1)));
+      const std::string_view comment = trim(line.substr(1));
+      if (!table.header_.empty() && table.cells_.empty() && comment.starts_with("units:")) {
+        table.attach_units(comment.substr(6), number);
+      } else if (table.cells_.empty()) {
+        table.comments_.emplace_back(comment);
+      }
       continue;
     }
     const std::string where = fmt::format("{}, line {}", table.source_, number);
@@ -86,6 +91,24 @@ CsvTable CsvTable::parse(std::string_view text, std::string source) {
   }
   if (table.header_.empty()) throw InputError(table.source_ + ": no header line");
   return table;
+}
+
+void CsvTable::attach_units(std::string_view units, std::size_t line) {
+  const std::string where = fmt::format("{}, line {}", source_, line);
+  const std::vector<std::string> cells = split_cells(units, ',', where);
+  if (cells.size() != header_.size()) {
+    throw InputError(fmt::format("{}: {} units for the header's {} columns", where, cells.size(),
+                                 header_.size()));
+  }
+  for (std::size_t c = 0; c < header_.size(); ++c) {
+    if (cells[c].empty()) continue;
+    if (!split_units(header_[c]).units.empty()) {
+      throw InputError(fmt::format("{}: column '{}' has its units in the header and in the units "
+                                   "line",
+                                   where, header_[c]));
+    }
+    header_[c] = fmt::format("{} [{}]", header_[c], cells[c]);
+  }
 }
 
 CsvTable CsvTable::from_rows(std::string source, std::string title,

@@ -1,9 +1,12 @@
 // A strict reader of comma-separated tables: the form of every bridge input
 // and of the measured files `macro compare` reads.
 //
-// Lines starting with `#` are comments (the ones before the header are kept:
-// they carry provenance); blank lines are skipped. The first other line is the
-// header; every later line is a row with as many cells as the header.
+// Lines starting with `#` are comments (the ones before the first row are
+// kept: they carry provenance); blank lines are skipped. The first other line
+// is the header; every later line is a row with as many cells as the header.
+// A comment "# units: u1,u2,..." right under the header (the form the tools
+// write, csv_writer.h) gives each column its unit, read as if the header said
+// "name [unit]".
 // Double-quoted cells may hold commas ("" is a quote). Cells are trimmed.
 // A number is read whole (no trailing text) and must be finite: an empty cell,
 // `nan` or `inf` is refused with the file, line and column named.
@@ -53,6 +56,9 @@ class CsvTable {
   std::optional<std::size_t> find(std::string_view name) const;
 
  private:
+  /// The units line's units attached to the header's names.
+  void attach_units(std::string_view units, std::size_t line);
+
   std::string source_, title_;
   std::vector<std::string> comments_, header_;
   std::vector<std::vector<std::string>> cells_;

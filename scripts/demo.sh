@@ -32,6 +32,8 @@ start=$SECONDS
 source "$root/scripts/bundled_materials.sh"
 
 step() { printf '\n== %s  (%d s)\n' "$1" $((SECONDS - start)); }
+# Chosen columns of a result table, by name (scripts/show_table.py).
+show() { /usr/bin/python3 "$root/scripts/show_table.py" "$@"; }
 
 # The sweep spreads its cases over one MPI rank per core when mpirun is there.
 cores=$(nproc)
@@ -50,8 +52,7 @@ sed "s|out/demo/oscillation|$out/oscillation|" "$root/cases/demo_oscillation.prm
 
 step "1. micro sweep: 3 volume fractions x 5 rates, N = 200 ($cores worker(s))"
 "${launcher[@]}" "$micro" sweep "$sweep_file" -q
-# phi, gamma~, sigma and its standard error, N1 and its standard error.
-grep -v '^#' "$out/sweep/flow_curve.csv" | cut -d, -f1,2,4,5,10,11 | column -t -s,
+show "$out/sweep/flow_curve.csv" phi gamma_tilde sigma sigma_se N1 N1_se
 
 step "2. bridge fit"
 "$bridge" fit "$out/sweep/flow_curve.csv" -o "$out/law.prm" -f -q
@@ -63,7 +64,7 @@ castoroil85 "$bridge" "$out/law.prm" "$out/material_castoroil85.prm" --tabulated
 step "4. macro run: the paper's cone and plate, 20 speeds"
 "$macro" run "$root/cases/cone_plate.prm" --material "$out/material_paper_emulsion.prm" \
   -o "$out/cone_plate" -f -q
-grep -v '^#' "$out/cone_plate/results.csv" | cut -d, -f1,2 | column -t -s, | sed -n '1,21p'
+show "$out/cone_plate/results.csv" rotation_rate torque torque_discretisation_error
 
 if [ -f "$data" ]; then
   step "5. macro compare: the castor-oil emulsion in its Couette cell (no fitted parameter)"
@@ -73,7 +74,7 @@ if [ -f "$data" ]; then
 else
   step "5. no measured data (../shared/data/rheometry/ absent): Couette torques of the bundled law"
   "$macro" run "$root/cases/castoroil_couette.prm" -o "$out/couette" -f -q
-  grep -v '^#' "$out/couette/results.csv" | cut -d, -f1,2 | column -t -s,
+  show "$out/couette/results.csv" rotation_rate torque
   compared=""
 fi
 
@@ -82,8 +83,8 @@ fi
 predict_castoroil() {
   "$bridge" predict "$root/cases/bridge_law_paper_sweep.prm" --phi 0.85 --viscosity 0.89e-3 \
     --rates 0.01,0.1,1,10,100,1000 "$@" -o "$out/predicted.csv" -f > /dev/null
-  # shear rate, stress and its band, extrapolated (1: outside the simulated rates)
-  grep -v '^#' "$out/predicted.csv" | cut -d, -f1,2,5,8 | column -t -s,
+  # extrapolated: 1 outside the simulated rates
+  show "$out/predicted.csv" shear_rate shear_stress shear_stress_band extrapolated
 }
 step "5b. bridge predict: the castor-oil flow curve, (b) E* from G' = 143 Pa"
 predict_castoroil --plateau-modulus 143
@@ -96,8 +97,8 @@ fi
 
 step "6. micro oscillate: the castor-oil emulsion's amplitude sweep, 6 amplitudes, N = 200"
 "${launcher[@]}" "$micro" oscillate "$oscillation_file" -q
-# gamma0, G' and G'' with their standard errors, I3/I1.
-grep -v '^#' "$out/oscillation/oscillation.csv" | cut -d, -f3,5,6,7,8,21 | column -t -s,
+# G' and G'' (storage, loss) with their standard errors, and I3/I1.
+show "$out/oscillation/oscillation.csv" gamma0 storage storage_se loss loss_se intensity_3
 "$bridge" fit --law "$out/law.prm" --oscillation "$out/oscillation/oscillation.csv" \
   -o "$out/law_with_amplitude_sweep.prm" -f
 

@@ -17,7 +17,6 @@ in grey and labelled "the paper" for comparison.
 """
 
 import argparse
-import csv
 import math
 import os
 import sys
@@ -27,14 +26,15 @@ import matplotlib
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 
+from result_table import read_rows  # noqa: E402
+
 
 def read_table(path):
     """Rows of a bridge CSV table as dicts; '#' lines (provenance) skipped."""
     if not os.path.isfile(path):
         sys.exit(f"plot_bridge: error: table '{path}' does not exist (run bridge first)")
     with open(path, newline="", encoding="utf-8") as f:
-        lines = [line for line in f if not line.startswith("#")]
-    rows = list(csv.DictReader(lines))
+        rows, _ = read_rows(f)
     if not rows:
         sys.exit(f"plot_bridge: error: table '{path}' has no rows")
     return rows

@@ -28,6 +28,8 @@ import subprocess
 import sys
 import tempfile
 
+from result_table import read_rows
+
 SIMULATED_PHI = (0.70, 0.90)  # the bundled law's range; other curves are listed, not scored
 WATER = 0.89e-3  # Pa s at 25 C, every emulsion here
 FORMS = ("tabulated", "herschel-bulkley")
@@ -69,9 +71,7 @@ class Bridge:
                    "--rate-unit", "1/s", "--stress-unit", "Pa", "-o", out, "-f", *mode]
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
         with open(out) as f:
-            lines = f.read().splitlines()
-        notes = [line[2:] for line in lines if line.startswith("# ")]
-        table = list(csv.DictReader(line for line in lines if not line.startswith("#")))
+            table, notes = read_rows(f.read().splitlines())
         return ([float(r["shear_stress [Pa]"]) for r in table],
                 [r["extrapolated [1]"] == "1" for r in table], notes)
 

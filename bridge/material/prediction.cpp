@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "common/csv_writer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -355,10 +357,9 @@ TabulatedMaterial tabulated_material_in_mode(const Law& law, const SimulatedCurv
 }
 
 std::string prediction_table(const Prediction& p, const std::vector<std::string>& provenance) {
-  std::string out;
-  for (const std::string& line : provenance) out += fmt::format("# {}\n", line);
-  out += fmt::format("# mode: {}\n", mode_name(p.mode));
-  for (const std::string& line : p.notes) out += fmt::format("# {}\n", line);
+  std::vector<std::string> comments = provenance;
+  comments.push_back(fmt::format("mode: {}", mode_name(p.mode)));
+  comments.insert(comments.end(), p.notes.begin(), p.notes.end());
   const PredictedPoint& first = p.points.front();
   std::vector<Quantity> present;
   for (const Quantity q : kQuantities3)
@@ -366,20 +367,22 @@ std::string prediction_table(const Prediction& p, const std::vector<std::string>
   const auto name = [](Quantity q) {
     return q == Quantity::sigma ? std::string("shear_stress") : std::string(column_name(q));
   };
-  out += "shear_rate [1/s]";
-  for (const Quantity q : present) out += fmt::format(",{} [Pa]", name(q));
-  for (const Quantity q : present) out += fmt::format(",{}_band [Pa]", name(q));
+  std::vector<Column> columns = {{"shear_rate", "1/s"}};
+  for (const Quantity q : present) columns.push_back({name(q), "Pa"});
+  for (const Quantity q : present) columns.push_back({name(q) + "_band", "Pa"});
   const bool model_error = first.model_error.has_value();
-  if (model_error) out += ",shear_stress_model_error [Pa]";
-  out += ",extrapolated [1]\n";
+  if (model_error) columns.push_back({"shear_stress_model_error", "Pa"});
+  columns.push_back({"extrapolated", "1"});
+  CsvWriter table("the prediction", columns, comments);
   for (const PredictedPoint& point : p.points) {
-    out += fmt::format("{:.10g}", point.rate);
-    for (const Quantity q : present) out += fmt::format(",{:.10g}", point.value[index(q)]->value);
-    for (const Quantity q : present) out += fmt::format(",{:.4g}", point.value[index(q)]->band);
-    if (model_error) out += fmt::format(",{:.4g}", *point.model_error);
-    out += point.extrapolated ? ",1\n" : ",0\n";
+    table << point.rate;
+    for (const Quantity q : present) table << point.value[index(q)]->value;
+    for (const Quantity q : present) table << point.value[index(q)]->band;
+    if (model_error) table << *point.model_error;
+    table << (point.extrapolated ? 1.0 : 0.0);
+    table.end_row();
   }
-  return out;
+  return table.text();
 }
 
 }  // namespace softglass::bridge

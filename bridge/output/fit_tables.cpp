@@ -3,7 +3,8 @@
 #include <cmath>
 
 #include "bridge/law/law.h"
-#include "bridge/output/csv_writer.h"
+#include "common/csv_table.h"
+#include "common/csv_writer.h"
 #include "bridge/output/tables.h"
 
 namespace softglass::bridge {
@@ -58,7 +59,14 @@ std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& co
     for (const char* name : {"f_y [E*R^2]", "f_y_se [E*R^2]", "k_f [E*R^2]", "k_f_se [E*R^2]"})
       header.push_back(name);
   }
-  CsvWriter w(comments, header);
+  CsvWriter w("the phi table", header, comments);
+  // n/a: the quasi-static σ_y of a φ without its γ̃ = 0 row; the goodness of a
+  // fit without degrees of freedom.
+  for (const std::string& h : header) {
+    const std::string name = split_units(h).name;
+    if (name.ends_with("_yield_quasi_static") || name.ends_with("_chi2_dof") || name.ends_with("_p"))
+      w.may_be_na(name);
+  }
   for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
     const GroupFit &v = a.estimate.fit.groups[j], &e = a.uncertainty.error.groups[j];
     w << v.phi << v.modulus << e.modulus << v.yield_strain << e.yield_strain
@@ -97,7 +105,7 @@ std::string points_table(const SweepAnalysis& a, const std::vector<std::string>&
     header.push_back(fmt::format("{}_herschel_bulkley [{}]", name, u));
     if (q != Quantity::force) header.push_back(fmt::format("{}_ratio [1]", name));
   }
-  CsvWriter w(comments, header);
+  CsvWriter w("the points table", header, comments);
   for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
     const PhiGroup& g = a.sweep.groups[j];
     const GroupFit& f = a.estimate.fit.groups[j];
@@ -118,8 +126,10 @@ std::string points_table(const SweepAnalysis& a, const std::vector<std::string>&
 }
 
 std::string constants_table(const SweepAnalysis& a, const std::vector<std::string>& comments) {
-  CsvWriter w(comments, {"constant", "value [1]", "error [1]", "paper [1]", "paper_error [1]",
-                         "collapse_chi2_dof [1]", "collapse_p [1]"});
+  CsvWriter w("the constants table", {"constant", "value [1]", "error [1]", "paper [1]", "paper_error [1]",
+                         "collapse_chi2_dof [1]", "collapse_p [1]"}, comments);
+  w.may_be_na("collapse_chi2_dof");  // the mean exponent is no collapse
+  w.may_be_na("collapse_p");
   const std::pair<Quantity, Estimate> paper[] = {{Quantity::sigma, PaperValues::k},
                                                  {Quantity::N1, PaperValues::k_N1},
                                                  {Quantity::N2, PaperValues::k_N2}};

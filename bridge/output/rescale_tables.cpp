@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "bridge/output/csv_writer.h"
+#include "common/csv_writer.h"
 #include "bridge/output/tables.h"
 
 namespace softglass::bridge {
@@ -16,7 +16,7 @@ std::string rescaled_points_table(const std::vector<MeasuredCurve>& curves,
   if (normal) {
     for (const char* name : {"N1 [Pa]", "N1_ratio [1]", "N1_residual [1]"}) header.push_back(name);
   }
-  CsvWriter w(comments, header);
+  CsvWriter w("the rescaled points table", header, comments);
   for (std::size_t j = 0; j < curves.size(); ++j) {
     const MeasuredCurve& c = curves[j];
     const RescaledCurve& r = rescaled[j];
@@ -38,11 +38,10 @@ std::string rescaled_points_table(const std::vector<MeasuredCurve>& curves,
 std::string rescaled_curves_table(const std::vector<RescaledCurve>& rescaled,
                                   const RescaleSettings& settings,
                                   const std::vector<std::string>& comments) {
-  CsvWriter w(comments,
-              {"curve", "tau_y [Pa]", "tau_y_se [Pa]", "E* [Pa]", "E*_se [Pa]", "E*_shared [1]",
+  CsvWriter w("the rescaled curves table", {"curve", "tau_y [Pa]", "tau_y_se [Pa]", "E* [Pa]", "E*_se [Pa]", "E*_shared [1]",
                "gamma_y [1]", "gamma_y_se [1]", "k [1]", "k_N1 [1]", "N1_y [Pa]", "N1_y_se [Pa]",
                "rms_residual [1]", "hb_tau_y [Pa]", "hb_tau_y_se [Pa]", "hb_K [Pa s^n]",
-               "hb_K_se [Pa s^n]", "hb_n [1]", "hb_n_se [1]"});
+               "hb_K_se [Pa s^n]", "hb_n [1]", "hb_n_se [1]"}, comments);
   for (const RescaledCurve& r : rescaled) {
     const HerschelBulkleyFit& hb = r.herschel_bulkley;
     const Estimate n1 = r.N1_yield.value_or(Estimate{0.0, 0.0});

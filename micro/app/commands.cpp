@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/atomic_output.h"
+#include "common/csv_writer.h"
 #include "common/progress.h"
 #include "micro/analysis/layering.h"
 #include "micro/app/run_steps.h"
@@ -201,13 +202,17 @@ void summary_command(const std::vector<std::filesystem::path>& runs,
   }
 
   if (out) {
-    out->write_and_commit([&](std::ostream& f) {
-      f << "observable,mean [E*],standard_error [E*],within_runs [E*],between_packings [E*]\n";
-      for (const auto& o : a.observables) {
-        f << fmt::format("{},{:.10e},{:.4e},{:.4e},{:.4e}\n", o.name, o.mean, o.standard_error(),
-                         o.within, o.between);
-      }
-    });
+    CsvWriter table(out->final_path().string(),
+                    {"observable", "mean [E*]", "standard_error [E*]", "within_runs [E*]",
+                     "between_packings [E*]"},
+                    {});
+    table.may_be_na("within_runs");  // n/a with one run, or one packing
+    table.may_be_na("between_packings");
+    for (const auto& o : a.observables) {
+      table << o.name << o.mean << o.standard_error() << o.within << o.between;
+      table.end_row();
+    }
+    out->write_and_commit([&](std::ostream& f) { f << table.text(); });
     fmt::print("written  {}\n", out->final_path().string());
   }
 }

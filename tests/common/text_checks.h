@@ -6,12 +6,24 @@
 #include <initializer_list>
 #include <string>
 
+#include "common/csv_table.h"
+
 namespace softglass::testing {
 
 /// Expects `text` to contain every one of `parts`.
 inline void expect_contains(const std::string& text, std::initializer_list<std::string> parts) {
   for (const std::string& part : parts)
     EXPECT_NE(text.find(part), std::string::npos) << part << " in: " << text;
+}
+
+/// The header of a result table (common/csv_writer.h: names, then a units
+/// line) as "name [unit],...", the form the checks of its columns name.
+inline std::string table_header(const std::string& csv_text) {
+  const CsvTable table = CsvTable::parse(csv_text, "table");
+  std::string header;
+  for (const std::string& column : table.header())
+    header += (header.empty() ? "" : ",") + column;
+  return header;
 }
 
 }  // namespace softglass::testing

@@ -1,5 +1,6 @@
 // Every number a tool writes through UnitTable is finite, or NaN in an error
-// column, where it means n/a; anything else is refused naming row and column.
+// column, where it means n/a; anything else is refused naming row and column
+// (common/csv_writer.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +18,7 @@ TEST(UnitTable, WritesFiniteCellsAndNotApplicableErrorsOnly) {
   UnitTable table{{{"gamma0", "1"}, {"storage", "Pa"}, {"storage_se", "Pa"}}, {{1e-3, 120.5, NAN}}};
   write_csv(dir / "t.csv", dir / "t.csv", {}, table, 6);
   EXPECT_EQ(testing::read_text(dir / "t.csv"),
-            "gamma0 [1],storage [Pa],storage_se [Pa]\n0.001,120.5,nan\n");
+            "gamma0,storage,storage_se\n# units: 1,Pa,Pa\n0.001,120.5,nan\n");
   for (const double bad : {NAN, INFINITY}) {
     UnitTable wrong = table;
     wrong.rows.push_back({1e-2, bad, 1.0});

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "common/csv_table.h"
 #include "common/h5_file.h"
 #include "macro/exact/cone_plate.h"
 #include "tests/common/command_line.h"
@@ -67,21 +68,15 @@ class MacroCompare : public ::testing::Test {
 
   // Column `name` of out/comparison.csv.
   std::vector<double> column(const std::string& name) {
-    std::istringstream csv(read_text(dir_.path() / "out" / "comparison.csv"));
-    std::string line, cell;
-    while (std::getline(csv, line) && line[0] == '#') {
-    }
-    std::istringstream header(line);
-    std::size_t index = 0, found = std::string::npos;
-    for (; std::getline(header, cell, ','); ++index)
-      if (cell.starts_with(name + " [")) found = index;
-    EXPECT_NE(found, std::string::npos) << name;
+    const fs::path file = dir_.path() / "out" / "comparison.csv";
+    const CsvTable csv = CsvTable::parse(read_text(file), file.string());
     std::vector<double> values;
-    while (std::getline(csv, line)) {
-      std::istringstream row(line);
-      for (std::size_t c = 0; std::getline(row, cell, ','); ++c)
-        if (c == found) values.push_back(std::stod(cell));
+    for (std::size_t c = 0; c < csv.columns(); ++c) {
+      if (split_units(csv.header()[c]).name != name) continue;
+      for (std::size_t r = 0; r < csv.rows(); ++r) values.push_back(csv.number(r, c));
+      return values;
     }
+    ADD_FAILURE() << "no column " << name;
     return values;
   }
 
@@ -258,6 +253,15 @@ TEST_F(MacroCompare, ExistingResultsNeedForce) {
 namespace softglass::macro {
 namespace {
 
+// The numbers of FOLDER/comparison.csv, row by row.
+std::vector<std::vector<double>> comparison_rows(const fs::path& folder) {
+  const CsvTable csv = CsvTable::parse(read_text(folder / "comparison.csv"), "comparison.csv");
+  std::vector<std::vector<double>> rows(csv.rows());
+  for (std::size_t r = 0; r < csv.rows(); ++r)
+    for (std::size_t c = 0; c < csv.columns(); ++c) rows[r].push_back(csv.number(r, c));
+  return rows;
+}
+
 // The castor-oil export of ../shared/data/rheometry/ (TA HR-3, DIN cylinders
 // R1 = 14 mm, R2 = 15.2 mm, L = 42 mm) states the instrument's own constants:
 // strain constant 12.1872 1/rad and stress constant 16243.3 Pa/(N m), the
@@ -278,15 +282,8 @@ TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
       fmt::format("compare cell.prm '{}' -o out -q --min-rate 300", data.string()), dir.path(),
       dir.path() / "capture");
   ASSERT_EQ(o.code, 0) << o.err;
-  std::istringstream csv(read_text(dir.path() / "out" / "comparison.csv"));
-  std::string line;
-  while (std::getline(csv, line) && line[0] == '#') {
-  }
   int rows = 0;
-  while (std::getline(csv, line)) {
-    std::vector<double> v;
-    std::istringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+  for (const std::vector<double>& v : comparison_rows(dir.path() / "out")) {
     // Columns: Omega, rate, measured M, predicted M, error, estimate, measured τ, predicted τ.
     EXPECT_NEAR(v[1] / v[0], 12.1872, 12.1872 * 1e-5) << "Omega = rate / strain constant";
     EXPECT_NEAR(v[6] / v[2], 16243.3, 16243.3 * 2e-4) << "the export's stress per torque";
@@ -294,21 +291,6 @@ TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
     ++rows;
   }
   EXPECT_EQ(rows, 6) << "316 ... 1000 1/s";
-}
-
-// The numbers of an out/comparison.csv, row by row.
-std::vector<std::vector<double>> comparison_rows(const fs::path& folder) {
-  std::istringstream csv(read_text(folder / "comparison.csv"));
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  while (std::getline(csv, line) && line.starts_with('#')) {
-  }
-  while (std::getline(csv, line)) {
-    std::istringstream row(line);
-    std::vector<double>& v = rows.emplace_back();
-    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
-  }
-  return rows;
 }
 
 // The castor-oil flow sweep as TRIOS exports it (tab-separated, parameter
