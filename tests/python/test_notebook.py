@@ -15,6 +15,8 @@ NOTEBOOK = SOURCE / "docs" / "examples" / "measured_to_prediction.ipynb"
 
 def test_measured_to_prediction_notebook(castor_oil, tmp_path, monkeypatch):
     monkeypatch.setenv("SOFTGLASS_EXAMPLE_OUTPUT", str(tmp_path))
+    # The kernel's debugger warns about frozen modules on every start: noise here.
+    monkeypatch.setenv("PYDEVD_DISABLE_FILE_VALIDATION", "1")
     notebook = nbformat.read(NOTEBOOK, as_version=4)
     nbclient.NotebookClient(notebook, timeout=120, kernel_name="python3",
                             resources={"metadata": {"path": str(NOTEBOOK.parent)}}).execute()
@@ -27,9 +29,10 @@ def test_measured_to_prediction_notebook(castor_oil, tmp_path, monkeypatch):
                re.findall(r"^\((\w)\).*median \|predicted/measured - 1\| = ([0-9.]+) %",
                           printed, re.M)}
     assert sorted(medians) == ["b", "c", "d"]
-    # Mode (c) takes the stress scale from the data and fits best; every mode
-    # stays within the model's measured systematic error (docs/validation.md).
+    # Mode (c) takes the stress scale from the data and fits best; (b) and (d)
+    # stay within the median error docs/tutorial.md states for this sweep
+    # (38 % in (b)) and docs/validation.md's macro comparison (40 %).
     assert medians["c"] < min(medians["b"], medians["d"])
-    assert max(medians.values()) < 60
+    assert max(medians.values()) < 45
     png = tmp_path / "measured_to_prediction.png"
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
