@@ -28,7 +28,7 @@ def test_pip_installs_the_module_built_by_make(tmp_path):
     environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     environment.update(SOFTGLASS_SOURCE_DIR=str(SOURCE), SOFTGLASS_BUILD_DIR=build)
     done = subprocess.run([python, "-m", "pip", "install", "--no-build-isolation", "--no-index",
-                           str(package)], env=environment, capture_output=True, text=True)
+                           "--no-cache-dir", str(package)], env=environment, capture_output=True, text=True)
     assert done.returncode == 0, done.stdout + done.stderr
     check = subprocess.run(
         [python, "-c", "import softglass; print(softglass.__file__); "
