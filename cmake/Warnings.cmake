@@ -7,6 +7,10 @@ target_compile_options(softglass_options INTERFACE
   # Math functions never report through errno here, so sqrt can be inlined and
   # vectorised (no IEEE semantics change, unlike -ffast-math).
   -fno-math-errno
+  # Nothing replaces a softglass function at load time: calls within a
+  # library stay direct and inlinable when the code is position independent
+  # (the Python module, cmake/Python.cmake).
+  -fno-semantic-interposition
   $<$<CONFIG:Release>:-O3>)
 if(SOFTGLASS_SANITIZE)
   target_compile_options(softglass_options INTERFACE

@@ -11,6 +11,10 @@ packages=(
   libdeal.ii-dev libopenmpi-dev openmpi-bin
   libopenblas0-serial  # optimised BLAS for MUMPS's dense fronts (macro); single-threaded beside MPI
   gnuplot-nox python3-matplotlib python3-h5py python3-numpy
+  # the Python module (python/) and its tests: the notebook runs in Debian's kernel,
+  # `pip install ./python` in a venv with Debian's pip and setuptools
+  python3-dev pybind11-dev python3-pybind11 python3-pytest
+  python3-nbclient python3-nbformat python3-ipykernel python3-pip python3-venv python3-setuptools
 )
 if [ "${1:-}" = bench ]; then
   packages+=(lammps time rheolef librheolef-dev)  # the peers of bench/

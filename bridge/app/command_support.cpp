@@ -55,9 +55,7 @@ double contact_modulus(const ModulusSource& s, const Law& law, double phi, bool 
 }
 
 double emulsion_modulus(const ModulusSource& s, std::vector<std::string>& lines) {
-  require(*s.interfacial_tension > 0 && *s.radius > 0,
-          "the interfacial tension and the radius must be positive");
-  const double e_star = 9.92 * *s.interfacial_tension / *s.radius;
+  const double e_star = emulsion_contact_modulus(*s.interfacial_tension, *s.radius);
   lines.push_back(fmt::format(
       "E* = 9.92 gamma_i / R = 9.92 x {:.6g} N/m / {:.6g} m = {:.6g} Pa (Seth et al. 2006, "
       "emulsions)",

@@ -75,6 +75,12 @@ void check_phi(const std::vector<double>& p, double phi, bool extrapolate) {
                       phi, p.front(), p.back()));
 }
 
+double emulsion_contact_modulus(double interfacial_tension, double radius) {
+  require(interfacial_tension > 0 && radius > 0,
+          "the interfacial tension and the radius must be positive");
+  return 9.92 * interfacial_tension / radius;
+}
+
 MaterialValue contact_modulus_from_plateau(const Law& law, double phi, double plateau_modulus,
                                            bool extrapolate) {
   require(plateau_modulus > 0 && std::isfinite(plateau_modulus),

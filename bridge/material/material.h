@@ -97,6 +97,11 @@ std::string error_comment(const std::string& name, const MaterialValue& v, const
 MaterialValue contact_modulus_from_plateau(const Law& law, double phi, double plateau_modulus,
                                            bool extrapolate);
 
+/// E* = 9.92 γ_i/R of an emulsion's droplets (Seth et al. 2006) from the
+/// interfacial tension γ_i [N/m] and the mean radius R [m]; InputError unless
+/// both are positive.
+double emulsion_contact_modulus(double interfacial_tension, double radius);
+
 /// The material fragment; `provenance` lines open it as comments.
 std::string material_text(const Material& material, const std::vector<std::string>& provenance);
 

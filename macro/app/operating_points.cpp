@@ -40,6 +40,19 @@ std::string extrapolation_note(const Scene& scene, const Material& material,
       below + above, points.size(), window->first, window->second, below, above);
 }
 
+UnitTable results_table(const Scene& scene, const std::vector<double>& points,
+                        const std::vector<SceneResult>& results) {
+  UnitTable table{.columns = {scene.drive()}, .rows = {}};
+  const std::vector<Column> columns = scene.columns();
+  table.columns.insert(table.columns.end(), columns.begin(), columns.end());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    table.rows.push_back({points[k]});
+    const std::vector<double> values = results[k].values();
+    table.rows.back().insert(table.rows.back().end(), values.begin(), values.end());
+  }
+  return table;
+}
+
 RankGroups::RankGroups(std::size_t points, unsigned ranks_per_point) {
   const MPI_Comm world = MPI_COMM_WORLD;
   const unsigned rank = dealii::Utilities::MPI::this_mpi_process(world);

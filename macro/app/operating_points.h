@@ -24,6 +24,11 @@ std::string describe_model(const Material& material, const fe::SolverSettings& s
 std::string extrapolation_note(const Scene& scene, const Material& material,
                                const std::vector<double>& points);
 
+/// The table of results.csv and results.h5 (and of the Python module's
+/// run_scene): the operating point, then the scene's columns, a row per point.
+UnitTable results_table(const Scene& scene, const std::vector<double>& points,
+                        const std::vector<SceneResult>& results);
+
 /// What to write besides the rows, and how to show progress.
 struct SweepDisplay {
   /// The points whose fields are written (VTU), and where: the temporary name

@@ -24,20 +24,6 @@ namespace softglass::macro::app {
 
 namespace {
 
-// The table of results.csv and results.h5: the operating point, then the row.
-UnitTable results_table(const Scene& scene, const std::vector<double>& points,
-                        const std::vector<SceneResult>& results) {
-  UnitTable table{.columns = {scene.drive()}, .rows = {}};
-  const std::vector<Column> columns = scene.columns();
-  table.columns.insert(table.columns.end(), columns.begin(), columns.end());
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    table.rows.push_back({points[k]});
-    const std::vector<double> values = results[k].values();
-    table.rows.back().insert(table.rows.back().end(), values.begin(), values.end());
-  }
-  return table;
-}
-
 // The largest relative error estimates of the main quantity over the sweep.
 // Points where nothing yields (below the yield point) are left out: there the
 // regularised material only creeps at rates ~ε and the exact output is zero,
