@@ -10,7 +10,7 @@ packages=(
   libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
   libdeal.ii-dev libopenmpi-dev openmpi-bin
   libopenblas0-serial  # optimised BLAS for MUMPS's dense fronts (macro); single-threaded beside MPI
-  gnuplot-nox python3-matplotlib python3-h5py python3-numpy
+  gnuplot-nox python3-matplotlib python3-h5py python3-numpy python3-pandas
   # the Python module (python/) and its tests: the notebook runs in Debian's kernel,
   # `pip install ./python` in a venv with Debian's pip and setuptools
   python3-dev pybind11-dev python3-pybind11 python3-pytest

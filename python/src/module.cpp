@@ -57,10 +57,11 @@ const char* key(CurveKind kind) {
 }
 
 py::list rheometer_curves(const Path& file, const std::string& rate_unit,
-                          const std::string& stress_unit) {
+                          const std::string& stress_unit, const std::string& format) {
+  const MeasuredReading reading{.format = format, .rate = rate_unit, .stress = stress_unit};
   py::list curves;
   for (const RheometerCurve& c :
-       read_rheometer_curves(CsvTable::read(file), FallbackUnits{rate_unit, stress_unit})) {
+       read_rheometer_curves(read_measured_file(file, format), reading)) {
     py::dict d;
     d["label"] = c.label;
     d["kind"] = key(curve_kind(c));
@@ -70,9 +71,9 @@ py::list rheometer_curves(const Path& file, const std::string& rate_unit,
   return curves;
 }
 
-py::list amplitude_sweeps(const Path& file) {
+py::list amplitude_sweeps(const Path& file, const std::string& format) {
   py::list sweeps;
-  for (const MeasuredAmplitudeSweep& s : read_amplitude_sweeps(CsvTable::read(file))) {
+  for (const MeasuredAmplitudeSweep& s : read_amplitude_sweeps(read_measured_file(file, format))) {
     py::dict d;
     d["label"] = s.label;
     d["strain_amplitude"] = to_array(s.strain);
@@ -294,20 +295,24 @@ void bind_readers(py::module_& m) {
 
   m.def(
       "read_measured_curves",
-      [](const Path& file, const std::string& rate_unit, const std::string& stress_unit) {
-        return read_measured_curves(CsvTable::read(file), FallbackUnits{rate_unit, stress_unit});
+      [](const Path& file, const std::string& rate_unit, const std::string& stress_unit,
+         const std::string& format) {
+        const MeasuredReading reading{.format = format, .rate = rate_unit, .stress = stress_unit};
+        return read_measured_curves(read_measured_file(file, format), reading);
       },
       py::arg("file"), py::arg("rate_unit") = "", py::arg("stress_unit") = "",
-      "The flow curves of a measured rheometer file (every layout of common/measured/), "
-      "as MeasuredCurve objects in SI units. rate_unit and stress_unit are the units of "
-      "columns whose header has none.");
+      py::arg("format") = "auto",
+      "The flow curves of a measured rheometer file as the instrument exported it (TRIOS, "
+      "RheoCompass, delimited, plain: docs/measured-files.md), as MeasuredCurve objects in SI "
+      "units. rate_unit and stress_unit are the units of columns whose header has none; format "
+      "overrides the detected export format.");
   m.def("read_rheometer_curves", &rheometer_curves, py::arg("file"), py::arg("rate_unit") = "",
-        py::arg("stress_unit") = "",
+        py::arg("stress_unit") = "", py::arg("format") = "auto",
         "Every curve of a measured rheometer file as a dict: 'label', 'kind' (flow_curve, "
         "amplitude_sweep, other) and an array per recognised column (shear_rate, stress, N1, "
         "torque, angular_velocity, normal_force, storage_modulus, loss_modulus, "
         "strain_amplitude, angular_frequency), in SI units.");
-  m.def("read_amplitude_sweeps", &amplitude_sweeps, py::arg("file"),
+  m.def("read_amplitude_sweeps", &amplitude_sweeps, py::arg("file"), py::arg("format") = "auto",
         "The amplitude sweeps of a measured file: dicts of strain_amplitude [1], "
         "storage_modulus and loss_modulus [Pa], angular_frequency [rad/s] or None.");
   m.def("read_table", &csv_columns, py::arg("file"),
