@@ -34,12 +34,11 @@ std::string quoted(const std::string& text) {
 }
 
 // Inline data block: x, measured, predicted, relative error of the prediction.
-std::string data_block(const std::string& name, const std::vector<double>& x,
-                       const OverlaySeries& s) {
+std::string data_block(const std::string& name, const OverlaySeries& s) {
   std::string block = fmt::format("${} << EOD\n", name);
-  for (std::size_t i = 0; i < x.size(); ++i) {
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
     const double error = s.predicted[i] / s.measured[i] - 1.0;
-    block += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g}\n", x[i], s.measured[i], s.predicted[i],
+    block += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g}\n", s.x[i], s.measured[i], s.predicted[i],
                          std::isfinite(error) ? 100.0 * error : NAN);
   }
   return block + "EOD\n";
@@ -51,14 +50,14 @@ std::string script(const OverlayPlot& plot, const std::filesystem::path& output)
   g << fmt::format("set terminal pngcairo size {},900 enhanced font 'DejaVu Sans,11'\n", 560 * n);
   g << "set output " << quoted(output.string()) << "\n";
   for (std::size_t p = 0; p < n; ++p)
-    g << data_block(fmt::format("d{}", p), plot.x, plot.panels[p]);
+    g << data_block(fmt::format("d{}", p), plot.panels[p]);
   g << fmt::format("set multiplot layout 2,{} title {} noenhanced font ',10'\n", n,
                    quoted(plot.title));
   g << "set logscale x\nset grid\nset key top left\nset format x '10^{%L}'\n";
   // Upper row: the curves on log-log axes; lower row: the relative error.
   for (std::size_t p = 0; p < n; ++p) {
     g << "set logscale y\nset format y '10^{%L}'\n";
-    g << "set xlabel " << quoted(plot.abscissa) << "\nset ylabel "
+    g << "set xlabel " << quoted(plot.panels[p].abscissa) << "\nset ylabel "
       << quoted(plot.panels[p].quantity) << "\n";
     g << fmt::format(
         "plot $d{0} using 1:2 with points pt 7 ps 1.1 lc rgb '#1f77b4' title 'measured', "
@@ -67,6 +66,7 @@ std::string script(const OverlayPlot& plot, const std::filesystem::path& output)
   }
   for (std::size_t p = 0; p < n; ++p) {
     g << "unset logscale y\nset format y '%g'\n";
+    g << "set xlabel " << quoted(plot.panels[p].abscissa) << "\n";
     g << "set ylabel " << quoted("predicted / measured - 1 [%]") << "\n";
     g << fmt::format(
         "plot $d{0} using 1:4 with linespoints pt 7 lc rgb '#d62728' notitle, 0 with lines lc "

@@ -8,17 +8,19 @@
 
 namespace softglass {
 
-/// One measured and one predicted series over a common abscissa.
+/// One panel: a measured and a predicted series over their abscissa.
 struct OverlaySeries {
   std::string quantity;  // axis label, with its unit: "torque [N m]"
-  std::vector<double> measured, predicted;
+  std::string abscissa;  // axis label, with its unit: "shear rate [1/s]"
+  std::vector<double> x, measured, predicted;
 };
 
+/// Panels side by side, each with the relative error below it: a rheologist's
+/// axes (stress against shear rate) beside the instrument's (torque against
+/// angular velocity).
 struct OverlayPlot {
   std::string title;
-  std::string abscissa;  // axis label, with its unit
-  std::vector<double> x;
-  std::vector<OverlaySeries> panels;  // one panel each, with the relative error below
+  std::vector<OverlaySeries> panels;
 };
 
 /// How the writing of a plot ended. A plot is an extra of a result: without

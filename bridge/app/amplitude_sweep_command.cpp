@@ -249,10 +249,10 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
         .title = fmt::format("{}: amplitude sweep\npredicted: {}, phi = {}, E* = {:.4g} Pa",
                              o.data.filename().string(), o.law.filename().string(), o.phi,
                              request.modulus),
-        .abscissa = "strain amplitude {/Symbol g}_0",
-        .x = c->strain,
-        .panels = {{"G' [Pa]", c->storage, c->storage_predicted},
-                   {"G'' [Pa]", c->loss, c->loss_predicted}}};
+        .panels = {{"G' [Pa]", "strain amplitude {/Symbol g}_0", c->strain, c->storage,
+                    c->storage_predicted},
+                   {"G'' [Pa]", "strain amplitude {/Symbol g}_0", c->strain, c->loss,
+                    c->loss_predicted}}};
     const PlotOutcome plotted = write_overlay_png(plot, plot_out->temporary_path());
     if (plotted.kind == PlotOutcome::Kind::write_failed) {
       throw NumericalError(

@@ -233,18 +233,25 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
   return table;
 }
 
-// Predicted against measured torque (and normal force) over Ω into `file`.
+// Predicted against measured: the shear stress over the shear rate (a
+// rheologist's axes, both converted with the same instrument constants), the
+// torque (and normal force) over Ω (the instrument's), into `file`.
 PlotOutcome write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
-                       const std::filesystem::path& file) {
+                       const InstrumentConstants& constants, const std::filesystem::path& file) {
   const MeasuredTorques& m = c.measured;
+  const std::string omega = "angular velocity {/Symbol W} [rad/s]";
+  std::vector<double> predicted_stress;
+  for (const double torque : c.torque) predicted_stress.push_back(constants.stress_constant * torque);
   OverlayPlot plot{.title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
                                         label == o.data_file.stem().string() ? "" : ", " + label,
                                         o.scene_file.filename().string()),
-                   .abscissa = "angular velocity {/Symbol W} [rad/s]",
-                   .x = m.angular_velocity,
-                   .panels = {{"torque [N m]", m.torque, c.torque}}};
-  if (c.compares_force)
-    plot.panels.push_back({"normal force [N]", *m.normal_force, c.normal_force});
+                   .panels = {{"shear stress [Pa]", "shear rate [1/s]", m.shear_rate, m.stress,
+                               predicted_stress},
+                              {"torque [N m]", omega, m.angular_velocity, m.torque, c.torque}}};
+  if (c.compares_force) {
+    plot.panels.push_back(
+        {"normal force [N]", omega, m.angular_velocity, *m.normal_force, c.normal_force});
+  }
   return write_overlay_png(plot, file);
 }
 
@@ -363,7 +370,7 @@ int compare(const CompareOptions& o) {
   write_results_csv(folder.temporary("comparison.csv"), folder.path("comparison.csv"), header_lines,
                     table, 8);
   const PlotOutcome plot =
-      write_plot(comparison, o, measured.label, folder.temporary("comparison.png"));
+      write_plot(comparison, o, measured.label, constants, folder.temporary("comparison.png"));
   if (plot.kind == PlotOutcome::Kind::write_failed) {
     throw NumericalError(
         fmt::format("cannot write '{}': {}", folder.path("comparison.png").string(), plot.reason));

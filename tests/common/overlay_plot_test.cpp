@@ -71,10 +71,10 @@ TEST(PlotOutcome, AnIncompletePngAfterSuccessIsAWriteFailure) {
   EXPECT_NE(o.reason.find("incomplete"), std::string::npos) << o.reason;
 }
 
-const OverlayPlot kPlot{.title = "test",
-                        .abscissa = "x",
-                        .x = {1.0, 2.0, 4.0},
-                        .panels = {{"y [1]", {1.0, 2.0, 3.0}, {1.1, 2.1, 2.9}}}};
+const OverlayPlot kPlot{
+    .title = "test",
+    .panels = {{"y [1]", "x [1]", {1.0, 2.0, 4.0}, {1.0, 2.0, 3.0}, {1.1, 2.1, 2.9}},
+               {"z [Pa]", "w [1/s]", {0.1, 1.0}, {5.0, 6.0}, {5.5, 6.5}}}};
 
 TEST(OverlayPlot, WithoutGnuplotOnThePathTheOutcomeSaysSo) {
   TemporaryDirectory dir;
