@@ -16,7 +16,8 @@
 #
 # Usage: bench/contact_law_exponent.sh [build dir]   (env: N, PHI, PACKINGS,
 #        RATES, STRAIN, OUT). Defaults (N = 250, φ = 0.80, 2 packings, 1e-8 …
-#        1e-4 one per decade plus AQS, 5 strain per run) take ≈ 15 min of CPU.
+#        1e-4 one per decade plus AQS, 5 strain per run) are sized for a
+#        desktop run; the table gives each law's wall time.
 #        RATES needs at least 4 rates (a Herschel–Bulkley fit has 3 parameters)
 #        reaching down to the yield plateau (1e-8 at φ = 0.80; with 1e-7 as the
 #        lowest, `bridge fit` finds no plateau for hertz and refuses): the

@@ -5,8 +5,8 @@
 # with a strain of 2e-6 per step (LAMMPS: dt 0.002 × erate 1e-3).
 # The two alternate `rounds` times (default 5) so that load from other processes
 # hits both; the best round of each is compared. With 3 rounds on a loaded host
-# one side often had no quiet round (three runs: 7.30, 4.87, 6.03; with 5, the
-# same hour: 6.27, 6.28, 6.15; docs/validation.md §2).
+# one side often had no quiet round and the ratio scattered; with 5 it held
+# (bench/results/lammps_comparison-2026-11-28.md; docs/validation.md §2).
 # Last line: speedup_vs_lammps <ratio>.
 #   usage: bench/lammps_comparison.sh [BUILD_DIR] [ROUNDS]
 set -euo pipefail

@@ -9,7 +9,8 @@
 # makes a packing of N at each size (its input's 25 000 compression steps are
 # not timed: only its last run, the shear).
 # Last lines: growth_1e3_to_<N>_softglass / _lammps <ratio of ns per particle-step>.
-# The defaults took 22 min (2026-11-30; LAMMPS' compression at 1e5 alone 18 min).
+# The defaults run for tens of minutes, most of it LAMMPS' compression at the
+# largest N (bench/results/lammps_scaling-*.md).
 #   usage: bench/lammps_scaling.sh [BUILD_DIR]   (env: SIZES, default "1000 10000 100000")
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)

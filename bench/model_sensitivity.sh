@@ -9,7 +9,7 @@
 # Usage: bench/model_sensitivity.sh [build dir] [output dir]
 #   env: VARIANTS (comma-separated; `bench/model_sensitivity.py --list` names
 #   them), RANKS (MPI ranks, default 2). Not run by CI: the default variants take
-#   about 6 h on two cores (docs/fidelity.md gives each variant's wall time);
+#   hours on two cores (docs/fidelity.md gives each variant's wall time);
 #   finished variants are not rerun, so the study can be grown variant by variant.
 set -euo pipefail
 build=${1:-build}

@@ -10,7 +10,7 @@
 #
 # Usage: bench/oscillation_tradeoff.sh [build dir]   (env: N, PHI, OMEGA,
 #        MODEL, OUT). Defaults: N = 250, phi = 0.80, omega~ = 2.31e-7 (the
-#        castor-oil test), the default model; about 25 min on one core.
+#        castor-oil test), the default model; tens of minutes on one core.
 set -euo pipefail
 BUILD=${1:-build}
 MICRO="$BUILD/micro/micro"

@@ -3,9 +3,10 @@
 # (Hertz, phi = 0.80, no drag, fixed strain step 2e-6), one thread and all
 # threads. Large N tiles a relaxed base packing k×k×k times (see engine_bench.cpp):
 #   1e3 = 1000·1³, 1e4 = 1250·2³, 1e5 = 800·5³, 1e6 = 1000·10³.
-# Each timed loop is 4e7 particle-steps (1–3 s). The sizes are measured in
-# turn, `rounds` times (default 5), and the best round of each is printed: on a
-# shared host one run of a size scattered by up to 1.4× (docs/validation.md §2),
+# Each timed loop is 4e7 particle-steps, long enough to time, short enough to
+# repeat. The sizes are measured in turn, `rounds` times (default 5), and the
+# best round of each is printed: on a shared host single runs of a size
+# scatter widely (docs/validation.md §2; bench/results/scaling_against_198b852-2026-12-02-zen5.md),
 # enough to move the growth from 1e3 to 1e6 by as much, and a slow phase hits
 # one size in one round, not all rounds of it.
 # Then the roof for the sizes beyond the caches: one core's memory bandwidth

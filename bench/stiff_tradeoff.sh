@@ -33,8 +33,8 @@
 #
 # Usage: bench/stiff_tradeoff.sh [build dir]   (env: N, PHI, SEEDS, WINDOW,
 #        PRESHEAR, TIME_LIMIT, OUT, GAMMAS; BIN: the program, default BUILD's).
-#        The defaults took 6.6 min on 2 cores (2026-11-27, without the bdf2
-#        rows at 1e-4 and 1e-5).
+#        The defaults run for minutes on 2 cores; the logs
+#        bench/results/stiff_tradeoff*.md give the times.
 set -euo pipefail
 BUILD=${1:-build}
 BIN="${BIN:-$BUILD/bench/stiff_tradeoff}"

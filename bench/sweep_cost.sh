@@ -23,8 +23,8 @@
 #   preset's 1000), PHIS (default "0.80, 0.90"), RATES (default the preset's),
 #   QUASI_STATIC (true|false, default true), OUT (kept results).
 #   A quick check of the script itself: N=250 RATES="1e-4, 1e-5" QUASI_STATIC=false.
-#   At the defaults expect about 25 min with softglass (the two builds' slices
-#   side by side on two cores, 2026-11-27).
+#   At the defaults expect tens of minutes with softglass (the two builds'
+#   slices side by side on two cores).
 set -euo pipefail
 export LC_ALL=C OMP_NUM_THREADS=1
 build=$(realpath "${1:?usage: bench/sweep_cost.sh BUILD [BASE_BUILD]}")

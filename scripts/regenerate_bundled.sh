@@ -27,8 +27,9 @@
 #     compare_dekker_phi074.png, compare_castoroil_couette_slip.png;
 #   - the numbers the docs quote from the law, the materials and those
 #     comparisons: docs/bridge.md, macro.md, validation.md, fidelity.md,
-#     oscillation.md (yield strains, k, the crossover estimate), physics.md
-#     (sigma_w/sigma_y of the wall tables), tutorial.md, sweeps.md (the sweep's
+#     oscillation.md (yield strains, k, the crossover estimate),
+#     bench/results/wall_slip_micro-2026-11-26.md (sigma_w/sigma_y of the wall
+#     tables), tutorial.md, sweeps.md (the sweep's
 #     cost);
 #   - if the law's G0 at phi 0.85 moves, the castor-oil E* moves and with it
 #     omega~ = 2.31e-7, at which the amplitude sweeps of docs/oscillation.md

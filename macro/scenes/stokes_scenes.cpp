@@ -41,10 +41,11 @@ namespace Patterns = dealii::Patterns;
 
 namespace {
 
-// An unknown of the Stokes problem costs this many of a scalar scene's:
-// measured, the fast Bingham cavity (3891 units of estimated work) in 4.3 s
-// against 4e-5 s per unit for the scalar scenes (docs/macro.md, "Cost of a
-// sweep"): three fields, a saddle point, continuation on the coarse mesh.
+// An unknown of the Stokes problem costs this many of a scalar scene's: three
+// fields, a saddle point, continuation on the coarse mesh. Calibrated on the
+// fast Bingham cavity against the scalar scenes' cost per unit of estimated
+// work (docs/macro.md, "Cost of a sweep";
+// bench/results/macro_cost_and_mpi-2026-11-21.md).
 constexpr double kStokesRelativeCost = 30.0;
 
 // Centreline samples of the cavity: the minimum is located to L/kSamples.

@@ -38,8 +38,8 @@ double max_norm(const std::vector<Vec3>& x) {
 // of oversolving the exit test τ. That test is on the largest force, ‖g‖_∞ ≤ τ,
 // so the floor is taken in its norm: ½ τ/‖g_k‖_∞ asks for a residual of half the
 // tolerance measured in the current gradient's shape. (With 1 instead of ½,
-// more steps ended just above τ and took one more Newton iteration: 4 % more
-// of them in AQS, with the old rule.) The √(‖g_k‖/‖g_0‖) rule used before
+// more steps ended just above τ and took one more Newton iteration;
+// bench/results/forcing_term-2026-11-27.md.) The √(‖g_k‖/‖g_0‖) rule used before
 // asked for up to 30 times the accuracy the test needed in the last iteration,
 // and converged only linearly, by about a decade per iteration; measured in
 // docs/integrators.md ("The forcing term").
@@ -59,10 +59,10 @@ double forcing_term(double gnorm, double last_gnorm, double largest_force, doubl
 // puts that error near ½ θ μ, θ the rate, well inside the test's μ. An
 // estimate, not a bound (CG's error can exceed η times the correction by up to
 // the Hessian's condition number). The Eisenstat–Walker term alone asked the
-// second Newton solve of an implicit step for η ≈ 0.01 (median; N = 1000,
-// γ̃ = 1e-9): 61 % of the CG iterations, for the correction on which the rate
-// test ends nine solves in ten. Measured in docs/integrators.md ("Stopping the
-// Newton iteration").
+// second Newton solve of an implicit step for a tight η, and so for most of
+// the CG iterations, on the correction on which the rate test usually ends
+// (docs/integrators.md, "Stopping the Newton iteration"; measured in
+// bench/results/displacement_floor-2026-11-29-zen3.md).
 double displacement_floor(double last_move, double move_tolerance) {
   if (!(move_tolerance > 0.0) || !(last_move > 0.0)) return 0.0;
   return std::min(kMaxForcing, 0.5 * move_tolerance / last_move);
@@ -419,9 +419,9 @@ double IncrementalMinimiser::convex_fraction(std::span<const double> proximal) c
 // tenfold for the next iteration's model. Solving again at once with the
 // raised μ threw that truncated solve away, and in a plastic event, where μ
 // sits where the model is barely convex, most iterations did so: quasi-static
-// shear at N = 1000 takes 22–25 % fewer CG iterations without it, its yield
-// stress unchanged within the runs' scatter (docs/integrators.md, "Damping
-// through a plastic event").
+// shear takes markedly fewer CG iterations without it, its yield stress
+// unchanged within the runs' scatter (docs/integrators.md, "Damping through a
+// plastic event"; bench/results/aqs_damping-2026-11-29-zen3.md).
 double IncrementalMinimiser::damped_newton_direction(std::span<const double> proximal, double eta) {
   counters_.cg_iterations += static_cast<std::size_t>(newton_direction(proximal, eta));
   if (negative_curvature_ && !settings_.stop_when_unstable) {

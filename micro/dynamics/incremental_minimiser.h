@@ -41,7 +41,8 @@
 // rate of the last two Newton steps says the rest of it would move no particle
 // by more than `move_tolerance`. (A
 // sparse Cholesky factorisation was tried first: the fill-in of a periodic 3D
-// contact network made it 10× slower than CG already at N = 256.)
+// contact network made it slower than CG already at N = 256, and the fill-in
+// grows faster than N; bench/results/sparse_cholesky-2026-11-21.md.)
 
 // The √|w| law: the curvature of ⅔ a |w|^{3/2} is a |w|^{−1/2}(P − θ ŵŵᵀ),
 // unbounded as w → 0. Exactly as in the velocity solve (ehd_drag.h): θ = ½ is

@@ -87,7 +87,7 @@ struct IntegratorSpec {
   /// and cost by rate. Below the split `euler` is out of reach (its step ∝ γ̃).
   /// With the friction between neighbours every explicit step solves for the
   /// velocities through the pair dashpots, a system as costly as an implicit
-  /// step's, and `bdf2`, with far fewer steps, is 10× cheaper up to γ̃ = 1e-2.
+  /// step's, and `bdf2`, with far fewer steps, is the cheaper up to γ̃ = 1e-2.
   IntegratorSpec resolved_for(double gamma_tilde, StokesReference stokes) const;
 };
 

@@ -15,10 +15,10 @@
 //     M⁻¹ r = D⁻¹ r + P (PᵀHP)⁻¹ Pᵀ r,   P = [1⊗e_x, 1⊗e_y, 1⊗e_z],
 // solves that space exactly: PᵀHP = c I, c = Σ_α of the per-particle terms, so
 // the correction is the total residual force over c, one pass. M⁻¹ stays
-// symmetric positive definite (an SPD plus a PSD operator). Measured (φ 0.80,
-// γ̃ 1e-8, the `softglass` preset, N = 1000): 61 → 46 CG iterations per
-// evaluation, 7 % less time. Piecewise-uniform translations over 2³…4³ boxes
-// of the cell cut that to 34 but cost more time than they saved: what is left
+// symmetric positive definite (an SPD plus a PSD operator); it saves CG
+// iterations and time (bench/results/implicit_softglass_speedups-2026-11-25.md).
+// Piecewise-uniform translations over 2³…4³ boxes of the cell cut the
+// iterations further but cost more time than they saved: what is left
 // is the elastic Hessian's own soft modes, not long waves of the friction.
 //
 // CG stops at ‖r‖ ≤ η‖g‖ (an inexact Newton step), after `limit` iterations,

@@ -10,8 +10,8 @@ namespace softglass::micro {
 // The pairs come particle by particle (runs of equal i): particle i's share is
 // summed in registers over its run and stored once. Added to out[i] pair by
 // pair, each addition waited for the store of the one before
-// (store-to-load forwarding): 24.7 → 21.9 µs per CG iteration of a
-// quasi-static run (N = 1000, φ = 0.80). The loops run on raw pointers held
+// (store-to-load forwarding; bench/results/aqs_profile-2026-11-27.md).
+// The loops run on raw pointers held
 // in locals: Eigen stores its packets through may-alias types, so with the
 // vectors themselves the compiler reloaded every data pointer after each store.
 void pair_block_product_portable(const PairBlocks& pairs, std::span<const double> diagonal,

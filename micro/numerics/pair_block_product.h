@@ -14,13 +14,13 @@
 //   additions and shuffles. The block's columns and the vectors are read with
 //   masked loads (nothing is read past a 3-vector), the sums go into a padded
 //   buffer copied out at the end, and B (x_i − x_j) is two fused
-//   multiply-adds. 1.46× faster in place (3.47 against 5.07 ns per pair,
-//   quasi-static shear at N = 1000, φ = 0.80, on an AVX2 Zen 3).
+//   multiply-adds (measured in place:
+//   bench/results/hessian_product_avx2-2026-11-29-zen3.md).
 // They differ in the last bits (the fused multiply-adds round once, not
 // twice), as the force kernel's clones do (vector_clones.h): a trajectory can
 // part from the other's at a plastic event, statistically the same. Summed in
 // Eigen's order with separate multiplications and additions the vectorised
-// product was bit for bit the portable one, but only 8 % faster: the chain of
+// product was bit for bit the portable one, but gained little: the chain of
 // dependent additions, not the instruction count, bounds it.
 #pragma once
 

@@ -5,13 +5,13 @@
 // resolver). The binary stays portable while a recent processor runs the
 // vectorised square roots, divisions and powers 4 or 8 wide instead of 2.
 // Used on the contact-force kernel and on the passes over the particles of the
-// explicit step (moving; the velocities with the error estimate): with them, an
-// explicit Hertz step at N = 1000 takes 36 ns per particle instead of 45. On a
+// explicit step (moving; the velocities with the error estimate), where the
+// wider registers pay (bench/results/lammps_comparison-2026-11-28.md). On a
 // member function template the attribute belongs on the declaration in the
-// class: on the definition alone GCC inlined the template uncloned, and the
-// velocity pass ran baseline code unnoticed until 2026-12-02. The implicit
-// solver is not cloned (built whole for x86-64-v4 it ran the trade bench's
-// implicit runs no faster), except for the films' law over arrays that its
+// class: on the definition alone GCC inlines the template uncloned, and the
+// pass runs baseline code with nothing to show it. The implicit solver is not
+// cloned (a whole x86-64-v4 build ran the trade bench's implicit runs no
+// faster, same log), except for the films' law over arrays that its
 // evaluation of Φ calls (model/film.cpp).
 // The variants may differ in the last bits (the wider ones contract a·b + c
 // into one fused multiply-add), as results do between compilers — unless the

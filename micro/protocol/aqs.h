@@ -34,14 +34,15 @@ namespace softglass::micro {
 /// Δγ by default and at most. Over the `paper` sweep's quasi-static cases
 /// (five φ, five packings each and five more at φ = 0.80) 1e-3 gives the σ_y,
 /// N1, N2 and structure of the former 2e-4 within their errors (σ_y −0.09 ±
-/// 0.33 % pooled) at half the cost (docs/sweeps.md, "Strain step").
+/// 0.33 % pooled) at a lower cost (bench/results/aqs_strain_step-2026-11-29.md).
 inline constexpr double kDefaultAqsStrainStep = 1e-3;
 inline constexpr double kMaxAqsStrainStep = 0.01;
 /// The minimiser's tolerance (largest residual / mean contact force) by
 /// default and at most. 1e-6 leaves the stress of a trajectory within 1.5e-6
 /// of the mean stress of a 1e-9 one until a plastic event falls into another
 /// minimum; over the paper sweep's ten quasi-static cases σ_y moves by
-/// −0.03 ± 0.72 %, at 1.6–1.8× fewer CG iterations (docs/sweeps.md).
+/// −0.03 ± 0.72 %, with fewer CG iterations
+/// (bench/results/aqs_force_tolerance-2026-11-27.md).
 inline constexpr double kDefaultAqsForceTolerance = 1e-6;
 inline constexpr double kMaxAqsForceTolerance = 1e-3;
 

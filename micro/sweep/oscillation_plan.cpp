@@ -15,11 +15,12 @@ constexpr const char* kContext = "oscillation";
 
 // A case's cost from the steady-shear model at its peak rate: each cycle
 // shears 4γ0 of strain, at 2× the model's cost per strain (the model is the
-// literal preset's; the default's friction against the neighbours costs about
-// twice), and takes at least a few steps per sample (5e-5 s per particle and
-// sample, measured at N = 250 and γ0 = 1e-3). Below γ0 ≈ 0.03 a case is
-// periodic after min_cycles; past yielding its cycles scatter and it runs
-// towards max_cycles. Measured (docs/oscillation.md): within a factor 2.
+// literal preset's; the default's friction against the neighbours costs
+// more), and takes at least a few steps per sample (a cost per particle and
+// sample taken from runs at N = 250 and γ0 = 1e-3). Below γ0 ≈ 0.03 a case
+// is periodic after min_cycles; past yielding its cycles scatter and it runs
+// towards max_cycles. Checked against measured runs in
+// bench/results/oscillation-2026-11-26.md.
 double case_cost(std::size_t particles, const OscillationProtocol& p, const std::string& scheme,
                  StokesReference stokes) {
   const double per_strain = 2.0 * rate_cost(particles, p.peak_gamma_tilde(), scheme, stokes) / 5.0;

@@ -22,10 +22,11 @@ std::vector<double> decades(int first, int last, int per_decade) {
 
 const std::vector<double> kPaperVolumeFractions = {0.70, 0.75, 0.80, 0.85, 0.90};
 
-// The quasi-static case's cost (rate_cost's units): 52 s at Δγ = 1e-3, the
-// mean of the 25 of the whole `paper` sweep (41–79 s, falling with φ; the
-// same sweep as the `bdf2` traits), ∝ Δγ^-0.42: 25 such cases at 1e-3 took
-// 1.97× less time than at 2e-4 (1.87–2.03× per φ, docs/sweeps.md).
+// The quasi-static case's cost (rate_cost's units): the mean over the
+// quasi-static cases of the whole `paper` sweep at Δγ = 1e-3 (it falls with
+// φ; the same sweep as the `bdf2` traits), ∝ Δγ^-0.42 from those cases' cost
+// at 1e-3 against 2e-4 (bench/results/sweep_cost_model-2026-11-30.md,
+// aqs_strain_step-2026-11-29.md).
 double quasi_static_cost(std::size_t particles, double strain_step) {
   return 52.0 * minimiser_scale(particles) * std::pow(strain_step / 1e-3, -0.42);
 }

@@ -55,8 +55,9 @@ void expect_coverage(const Tally& t, double expected, const std::string& what) {
 
 TEST(Coverage, ReportedErrorsCoverTheTruthAboutTwoThirdsOfTheTime) {
   const testing::SyntheticTruth t;
-  // 80 sweeps in CI (4 s); SOFTGLASS_COVERAGE_SWEEPS=400 for the figures of
-  // docs/bridge.md (20 s), whose bands shrink by √5.
+  // 80 sweeps in CI, few enough to keep the test quick;
+  // SOFTGLASS_COVERAGE_SWEEPS=400 for the figures of docs/bridge.md, whose
+  // bands shrink by √5.
   const char* requested = std::getenv("SOFTGLASS_COVERAGE_SWEEPS");
   const int sweeps = requested ? std::max(10, std::atoi(requested)) : 80;
   std::printf("%d synthetic sweeps\n", sweeps);

@@ -37,7 +37,7 @@ dealii::Triangulation<2> channel_mesh() {
 SolverSettings channel_settings() {
   SolverSettings settings = preset("standard");
   settings.global_refinements = 1;
-  settings.adaptive_cycles = 0;  // the uniform refinement suffices here; keeps a test at 1 s
+  settings.adaptive_cycles = 0;  // the uniform refinement suffices here; keeps the test quick
   return settings;
 }
 

@@ -15,7 +15,8 @@ namespace softglass::macro::testing {
 // the interval (the inverse flow curve ((τ − τ_y)/K)^{1/n} at the yield stress,
 // α = 1/n down to 0.625 here). Gauss–Kronrod converges only algebraically on
 // such a function, and adaptive bisection down to 1e-13 then takes 2^20
-// intervals (the old version of this helper took ~100 s per test). The map
+// intervals (too slow for a unit test, as the old version of this helper
+// was). The map
 //
 //     x = a + (b − a) S(t),   S(t) = 35t⁴ − 84t⁵ + 70t⁶ − 20t⁷,   S'(t) = 140 t³(1 − t)³,
 //

@@ -162,9 +162,10 @@ SweepPlan column_plan(const std::vector<std::pair<double, double>>& column, Stok
 // The cost estimates split the work over the workers, so they must follow the
 // scheme that runs each case. Against the whole `paper` sweep of the default
 // model (friction between neighbours: `auto` is `bdf2` at every rate), the
-// means of its five N = 1000 packings at φ = 0.80 (2026-11-29, one core each,
-// 5 strain, the quasi-static case at the default strain step 1e-3;
-// docs/sweeps.md), every estimate is within a factor 2, the total within 25 %.
+// means of its five N = 1000 packings at φ = 0.80 (one core each, 5 strain,
+// the quasi-static case at the default strain step 1e-3;
+// bench/results/paper_sweep-2026-11-29-zen4.md), every estimate is within a
+// factor 2, the total within 25 %.
 TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
   const std::vector<std::pair<double, double>> measured = {
       {1e-9, 121.4}, {3.16e-9, 79.2}, {1e-8, 44.6}, {3.16e-8, 24.9}, {1e-7, 13.3}, {3.16e-7, 7.7},
@@ -186,9 +187,10 @@ TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
   }
   EXPECT_NEAR(std::log(estimated_total / measured_total), 0.0, std::log(1.25));
 
-  // The quasi-static case at the default step 1e-3 against 2e-4: its five
-  // packings at φ = 0.80 took 74 against 151 s (the same build and host,
-  // docs/sweeps.md "Strain step"); the model's ratio within 25 % of that.
+  // The quasi-static case at the default step 1e-3 against 2e-4: the measured
+  // times of its five packings at φ = 0.80 below (one build, one host;
+  // bench/results/aqs_strain_step-2026-11-29.md); the model's ratio within
+  // 25 % of theirs.
   const auto quasi_static_cost = [&](double step) {
     const SweepPlan p = column_plan(measured, StokesReference::neighbours, true, step);
     return std::find_if(p.cases.begin(), p.cases.end(), [](auto& c) { return c.quasi_static; })
@@ -199,8 +201,8 @@ TEST(SweepPlan, CostEstimatesFollowTheSchemeOfEachCase) {
 
   // With the friction against the affine flow `auto` keeps `euler` from 1e-5
   // up, and the estimates follow it: the literal model's column at φ = 0.80
-  // (docs/sweeps.md: 25, 9 and 5 s at 1e-5, 3.16e-5 and 1e-4), each within a
-  // factor 2.
+  // at 1e-5, 3.16e-5 and 1e-4 (bench/results/sweep_costs-2026-11-21.md), each
+  // within a factor 2.
   const std::vector<std::pair<double, double>> measured_euler = {
       {1e-5, 25}, {3.16e-5, 9}, {1e-4, 5}};
   const SweepPlan affine_plan = column_plan(measured_euler, StokesReference::affine, false);

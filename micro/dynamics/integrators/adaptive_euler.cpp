@@ -61,8 +61,9 @@ std::unique_ptr<Integrator> make(const IntegratorSpec& spec) {
 }
 }  // namespace
 
-// Cost (sweep planning): 25 s per 5 strain at N = 1000, γ̃ = 1e-5, steps per
-// strain ∝ γ̃^-0.8 below (docs/sweeps.md, docs/validation.md).
+// Cost (sweep planning): a measured cost per 5 strain at N = 1000, γ̃ = 1e-5,
+// steps per strain ∝ γ̃^-0.8 below (the step is bounded by stability, not
+// accuracy; bench/results/sweep_cost_model-2026-11-30.md, docs/validation.md).
 IntegratorEntry euler_integrator() {
   return {"euler",
           "explicit Euler with error control, step below the stability limit (cost ~ 1/gamma~)",

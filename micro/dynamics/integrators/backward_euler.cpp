@@ -170,10 +170,10 @@ class BackwardEuler final : public Integrator {
       // alone (1 %) and that bound 100× too cautious for any motion but a
       // uniform translation; so the solve also stops once Newton's rate says
       // that it would move no particle by more than a tenth of the step
-      // tolerance (CVODE's fraction). At γ̃ = 1e-9 (N = 1000, softglass,
-      // 1 strain) that took 30 % fewer Newton and 35 % fewer CG iterations;
-      // σ, N1, N2 moved by 0.02–0.07 % (median over 16 packings, N = 256,
-      // 1e-9 and 1e-8) — docs/integrators.md, "Stopping the Newton iteration".
+      // tolerance (CVODE's fraction). That saves Newton and CG iterations at
+      // the lowest rates and moves σ, N1, N2 by far less than their scatter
+      // (docs/integrators.md, "Stopping the Newton iteration"; measured in
+      // bench/results/newton_stop-2026-11-27.md).
       IncrementalSettings settings = minimiser_.settings();
       settings.absolute_force = 0.01 * spec_.tolerance *
                                 model.drag.stokes.reservoir(model.friction(min_radius(p.radius))) /
@@ -189,9 +189,9 @@ class BackwardEuler final : public Integrator {
       // the distance to the predictor). A fifth of the attempts are rejected,
       // most at the start of a plastic event, and each solved to the end cost
       // as much as an accepted one. The stopped attempt meets the same error
-      // test below, from its partial error. (The bound was the whole move
-      // until 2026-11-28, 2–3× looser than the argument: the constant is ½ to
-      // 8/23; with it 0–10 % fewer CG iterations, docs/integrators.md.)
+      // test below, from its partial error. (The bound subtracts the error
+      // constant, ½ to 8/23, times the move, not the whole move, which was 2–3×
+      // looser than the argument; bench/results/instability_stop-2026-11-28.md.)
       const auto hopeless = [&](const std::vector<Vec3>&, double move) {
         return step_error(f) - f.error_constant * move > spec_.tolerance;
       };
@@ -365,8 +365,9 @@ std::unique_ptr<Integrator> make_bdf2(const IntegratorSpec& spec) {
 }
 }  // namespace
 
-// Cost (sweep planning): about 4.5 s × (γ̃/1e-5)^-0.55 per 5 strain at N = 1000
-// (one measured column, docs/sweeps.md).
+// Cost (sweep planning): seconds_at_reference × (γ̃/1e-5)^rate_exponent per 5
+// strain at N = 1000, fitted to one measured column
+// (bench/results/sweep_cost_model-2026-11-30.md).
 IntegratorEntry implicit_integrator() {
   return {"implicit",
           "backward Euler as a minimising movement, Newton-CG, error control (for low gamma~)",
@@ -380,14 +381,13 @@ IntegratorEntry implicit_integrator() {
 
 // The default below γ̃ = 1e-5, and at every rate with the Stokes friction
 // between neighbours (`auto`). Tolerance 3e-3: as accurate as `implicit` at
-// 1e-3 (docs/integrators.md, "BDF2"). Cost: 1.42 s × (γ̃/1e-5)^-0.484 per 5
-// strain at N = 1000, and at least 2.33 s (about a step per stress sample,
-// each with its velocity solve): fitted to the 275 rate cases of the whole
-// `paper` sweep of the default model (2026-11-29, ba41311, two at a time on
-// the two cores of an AVX-512 host; least squares in logs over the 175 cases
-// at γ̃ ≤ 1e-6, the floor the median at 3.16e-5 and 1e-4). Each case is
-// within 0.56–1.76× of it (the model has no φ: at 1e-9 φ = 0.70 costs 0.8×
-// φ = 0.90, at 1e-8 0.5×), the sweep's total within 2 % (docs/sweeps.md).
+// 1e-3 (docs/integrators.md, "BDF2"). Cost: a power law in γ̃ per 5 strain at
+// N = 1000 with a floor (about a step per stress sample, each with its
+// velocity solve), fitted to the rate cases of the whole `paper` sweep of the
+// default model: least squares in logs over the low rates, the floor from the
+// median of the highest. The model has no φ, so single cases scatter about it
+// while the sweep's total, what the planner needs, follows it closely; the fit
+// and its scatter are in bench/results/sweep_cost_model-2026-11-30.md.
 IntegratorEntry bdf2_integrator() {
   return {"bdf2",
           "variable-step BDF2 as a minimising movement, Newton-CG, error control (for low gamma~)",
