@@ -201,7 +201,7 @@ std::vector<std::string> agreement_report(const Comparison& c) {
 }
 
 // The table of comparison.csv and comparison.h5, point by point.
-UnitTable comparison_table(const Comparison& c, const InstrumentConstants& constants) {
+UnitTable comparison_table(const Comparison& c) {
   const MeasuredTorques& m = c.measured;
   UnitTable table{.columns = {{"angular_velocity", "rad/s"},
                               {"shear_rate", "1/s"},
@@ -224,7 +224,7 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
         m.angular_velocity[i], m.shear_rate[i], m.torque[i], torque.value,
         torque.value / m.torque[i] - 1.0,
         std::abs(torque.discretisation_error) + std::abs(torque.regularisation_error), m.stress[i],
-        constants.stress_constant * torque.value, c.results[i].yielded_fraction});
+        m.stress_per_torque * torque.value, c.results[i].yielded_fraction});
     if (c.compares_force) {
       v.insert(v.end(), {(*m.normal_force)[i], c.normal_force[i],
                          c.normal_force[i] / (*m.normal_force)[i] - 1.0});
@@ -234,14 +234,14 @@ UnitTable comparison_table(const Comparison& c, const InstrumentConstants& const
 }
 
 // Predicted against measured: the shear stress over the shear rate (a
-// rheologist's axes, both converted with the same instrument constants), the
+// rheologist's axes, both stresses with the file's stress per torque), the
 // torque (and normal force) over Ω (the instrument's), into `file`.
 PlotOutcome write_plot(const Comparison& c, const CompareOptions& o, const std::string& label,
-                       const InstrumentConstants& constants, const std::filesystem::path& file) {
+                       const std::filesystem::path& file) {
   const MeasuredTorques& m = c.measured;
   const std::string omega = "angular velocity {/Symbol W} [rad/s]";
   std::vector<double> predicted_stress;
-  for (const double torque : c.torque) predicted_stress.push_back(constants.stress_constant * torque);
+  for (const double torque : c.torque) predicted_stress.push_back(m.stress_per_torque * torque);
   OverlayPlot plot{.title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
                                         label == o.data_file.stem().string() ? "" : ", " + label,
                                         o.scene_file.filename().string()),
@@ -363,14 +363,14 @@ int compare(const CompareOptions& o) {
   if (!extrapolation.empty()) report.push_back(extrapolation);
   if (!material.source.empty()) report.insert(report.begin(), "material: " + material.source);
   report.insert(report.end(), file_report.begin(), file_report.end());
-  const UnitTable table = comparison_table(comparison, constants);
+  const UnitTable table = comparison_table(comparison);
   const std::vector<std::string> header_lines =
       provenance(o, scene->description(), measured, describe_model(material, settings));
 
   write_results_csv(folder.temporary("comparison.csv"), folder.path("comparison.csv"), header_lines,
                     table, 8);
   const PlotOutcome plot =
-      write_plot(comparison, o, measured.label, constants, folder.temporary("comparison.png"));
+      write_plot(comparison, o, measured.label, folder.temporary("comparison.png"));
   if (plot.kind == PlotOutcome::Kind::write_failed) {
     throw NumericalError(
         fmt::format("cannot write '{}': {}", folder.path("comparison.png").string(), plot.reason));

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "common/errors.h"
 
 namespace softglass::macro::app {
@@ -41,6 +44,21 @@ MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentCo
                                   : constants.stress_constant * torque);
     if (m.normal_force) m.normal_force->push_back(curve[Measured::normal_force][i]);
   }
+  m.stress_per_torque = constants.stress_constant;
+  if (has_stress && has_torque) {
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < m.torque.size(); ++i) ratios.push_back(m.stress[i] / m.torque[i]);
+    std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+    if (!ratios.empty()) m.stress_per_torque = ratios[ratios.size() / 2];
+    if (std::abs(m.stress_per_torque / constants.stress_constant - 1.0) > 0.01) {
+      m.conversions.push_back(fmt::format(
+          "predicted stress = predicted torque x {:.6g} Pa/(N m), the file's own stress per "
+          "torque ({} the {:.6g} of {}: the instrument's end-effect correction or constants)",
+          m.stress_per_torque,
+          m.stress_per_torque < constants.stress_constant ? "below" : "above",
+          constants.stress_constant, constants.convention));
+    }
+  }
   require(m.angular_velocity.size() >= 2,
           fmt::format("curve '{}': {} point(s) with shear rate in [{:g}, {:g}] 1/s; a comparison "
                       "needs at least 2",
@@ -55,6 +73,7 @@ MeasuredTorques thinned(const MeasuredTorques& m, std::size_t max_points) {
   MeasuredTorques kept{.label = m.label,
                        .normal_force = m.normal_force ? std::optional(std::vector<double>{})
                                                       : std::nullopt,
+                       .stress_per_torque = m.stress_per_torque,
                        .conversions = m.conversions,
                        .left_out = m.left_out,
                        .thinned_out = n - max_points};

@@ -25,6 +25,11 @@ struct MeasuredTorques {
   std::vector<double> torque{};                       // M [N m]
   std::vector<double> stress{};                       // τ [Pa] as reported (or c_τ M)
   std::optional<std::vector<double>> normal_force{};  // F [N] when measured
+  /// τ/M as the file has it: with stress and torque both measured, the median
+  /// of their ratios (the instrument's own constant, end-effect correction
+  /// included); otherwise the c_τ of the conversion. Predicted stresses are
+  /// predicted torques times this, so both stresses compare as the torques do.
+  double stress_per_torque = 0.0;
   std::vector<std::string> conversions{};             // one line per derived quantity
   std::size_t left_out = 0;                         // points outside the rate window
   std::size_t thinned_out = 0;                      // points left out by thinned()

@@ -26,6 +26,7 @@ TEST(MeasuredTorques, DerivesAngularVelocityAndTorqueFromRateAndStress) {
   EXPECT_DOUBLE_EQ(m.torque[0], 2.0);            // 4000 Pa / 2000 Pa/(N m)
   EXPECT_DOUBLE_EQ(m.stress[3], 8000.0);
   EXPECT_EQ(m.conversions.size(), 2u) << "both Omega and M are derived, and said so";
+  EXPECT_DOUBLE_EQ(m.stress_per_torque, 2000.0) << "c_τ: the torques are derived with it";
   EXPECT_FALSE(m.normal_force.has_value());
 }
 
@@ -39,7 +40,12 @@ TEST(MeasuredTorques, KeepsMeasuredTorquesAndDerivesOnlyWhatIsMissing) {
   EXPECT_DOUBLE_EQ(m.torque[0], 3e-3) << "the measured torque, not stress / constant";
   ASSERT_TRUE(m.normal_force.has_value());
   EXPECT_DOUBLE_EQ((*m.normal_force)[0], 2.0 * 9.80665e-3);
-  EXPECT_EQ(m.conversions.size(), 1u);
+  // Stress and torque both measured: the file's own stress per torque, the
+  // median of the ratios (7.27e5 of 6.67e5, 7.14e5, 7.27e5, 1.33e6 Pa/(N m)),
+  // converts predicted torques, and differing from c_τ it is said.
+  EXPECT_DOUBLE_EQ(m.stress_per_torque, 8000.0 / 11e-3);
+  ASSERT_EQ(m.conversions.size(), 2u);
+  EXPECT_NE(m.conversions[1].find("the file's own stress per torque"), std::string::npos);
 }
 
 TEST(MeasuredTorques, AppliesTheRateWindowAndRefusesTooFewPoints) {
