@@ -33,15 +33,27 @@ std::string quoted(const std::string& text) {
   return q + "\"";
 }
 
-// Inline data block: x, measured, predicted, relative error of the prediction.
-std::string data_block(const std::string& name, const OverlaySeries& s) {
+constexpr const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+
+// Inline data block of a curve: x, y.
+std::string data_block(const std::string& name, const PlotCurve& c) {
   std::string block = fmt::format("${} << EOD\n", name);
-  for (std::size_t i = 0; i < s.x.size(); ++i) {
-    const double error = s.predicted[i] / s.measured[i] - 1.0;
-    block += fmt::format("{:.10g} {:.10g} {:.10g} {:.10g}\n", s.x[i], s.measured[i], s.predicted[i],
-                         std::isfinite(error) ? 100.0 * error : NAN);
-  }
+  for (std::size_t i = 0; i < c.x.size(); ++i) block += fmt::format("{:.10g} {:.10g}\n", c.x[i], c.y[i]);
   return block + "EOD\n";
+}
+
+// The plot command of `curves`, whose data blocks are $<prefix><k>.
+std::string plot_command(const std::vector<PlotCurve>& curves, const std::string& prefix) {
+  std::string command = "plot ";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const PlotCurve& c = curves[k];
+    const std::string colour = kPalette[static_cast<std::size_t>(c.colour) % std::size(kPalette)];
+    command += fmt::format("{}${}{} using 1:2 with {} lc rgb '{}' title {}", k ? ", " : "",
+                           prefix, k,
+                           c.line ? "linespoints pt 6 ps 0.6 lw 2" : "points pt 7 ps 1.0",
+                           colour, quoted(c.title));
+  }
+  return command;
 }
 
 std::string script(const OverlayPlot& plot, const std::filesystem::path& output) {
@@ -49,29 +61,28 @@ std::string script(const OverlayPlot& plot, const std::filesystem::path& output)
   const std::size_t n = plot.panels.size();
   g << fmt::format("set terminal pngcairo size {},900 enhanced font 'DejaVu Sans,11'\n", 560 * n);
   g << "set output " << quoted(output.string()) << "\n";
-  for (std::size_t p = 0; p < n; ++p)
-    g << data_block(fmt::format("d{}", p), plot.panels[p]);
+  for (std::size_t p = 0; p < n; ++p) {
+    for (std::size_t k = 0; k < plot.panels[p].curves.size(); ++k)
+      g << data_block(fmt::format("c{}_{}", p, k), plot.panels[p].curves[k]);
+    for (std::size_t k = 0; k < plot.panels[p].errors.size(); ++k)
+      g << data_block(fmt::format("e{}_{}", p, k), plot.panels[p].errors[k]);
+  }
   g << fmt::format("set multiplot layout 2,{} title {} noenhanced font ',10'\n", n,
                    quoted(plot.title));
   g << "set logscale x\nset grid\nset key top left\nset format x '10^{%L}'\n";
-  // Upper row: the curves on log-log axes; lower row: the relative error.
+  // Upper row: the curves on log-log axes; lower row: the relative errors.
   for (std::size_t p = 0; p < n; ++p) {
     g << "set logscale y\nset format y '10^{%L}'\n";
     g << "set xlabel " << quoted(plot.panels[p].abscissa) << "\nset ylabel "
       << quoted(plot.panels[p].quantity) << "\n";
-    g << fmt::format(
-        "plot $d{0} using 1:2 with points pt 7 ps 1.1 lc rgb '#1f77b4' title 'measured', "
-        "$d{0} using 1:3 with linespoints pt 6 lw 2 lc rgb '#d62728' title 'predicted'\n",
-        p);
+    g << plot_command(plot.panels[p].curves, fmt::format("c{}_", p)) << "\n";
   }
   for (std::size_t p = 0; p < n; ++p) {
     g << "unset logscale y\nset format y '%g'\n";
     g << "set xlabel " << quoted(plot.panels[p].abscissa) << "\n";
     g << "set ylabel " << quoted("predicted / measured - 1 [%]") << "\n";
-    g << fmt::format(
-        "plot $d{0} using 1:4 with linespoints pt 7 lc rgb '#d62728' notitle, 0 with lines lc "
-        "rgb 'black' notitle\n",
-        p);
+    g << plot_command(plot.panels[p].errors, fmt::format("e{}_", p))
+      << ", 0 with lines lc rgb 'black' notitle\n";
   }
   g << "unset multiplot\n";
   return g.str();
@@ -132,6 +143,28 @@ class BrokenPipeIgnored {
 };
 
 }  // namespace
+
+PlotCurve relative_errors(std::string title, const std::vector<double>& x,
+                          const std::vector<double>& measured,
+                          const std::vector<double>& predicted, int colour) {
+  PlotCurve c{.title = std::move(title), .x = {}, .y = {}, .line = true, .colour = colour};
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double error = predicted[i] / measured[i] - 1.0;
+    if (!std::isfinite(error)) continue;  // a measured zero: no relative error
+    c.x.push_back(x[i]);
+    c.y.push_back(100.0 * error);
+  }
+  return c;
+}
+
+OverlayPanel compared_panel(std::string quantity, std::string abscissa,
+                            const std::vector<double>& x, const std::vector<double>& measured,
+                            const std::vector<double>& predicted) {
+  return {.quantity = std::move(quantity),
+          .abscissa = std::move(abscissa),
+          .curves = {{"measured", x, measured, false, 0}, {"predicted", x, predicted, true, 1}},
+          .errors = {relative_errors("", x, measured, predicted, 1)}};
+}
 
 PlotOutcome plot_outcome(int shell_status, const std::filesystem::path& file) {
   using Kind = PlotOutcome::Kind;

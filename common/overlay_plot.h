@@ -8,19 +8,37 @@
 
 namespace softglass {
 
-/// One panel: a measured and a predicted series over their abscissa.
-struct OverlaySeries {
-  std::string quantity;  // axis label, with its unit: "torque [N m]"
-  std::string abscissa;  // axis label, with its unit: "shear rate [1/s]"
-  std::vector<double> x, measured, predicted;
+/// A curve of a panel: measured points, or a predicted line.
+struct PlotCurve {
+  std::string title;  // its legend entry
+  std::vector<double> x, y;
+  bool line = false;  // a prediction (a line) or a measurement (points)
+  int colour = 0;     // its index in the palette: one colour per quantity
 };
 
-/// Panels side by side, each with the relative error below it: a rheologist's
-/// axes (stress against shear rate) beside the instrument's (torque against
-/// angular velocity).
+/// One panel: curves on log-log axes above the relative errors
+/// predicted/measured − 1 [%] at the compared points.
+struct OverlayPanel {
+  std::string quantity;  // axis label, with its unit: "torque [N m]"
+  std::string abscissa;  // axis label, with its unit: "shear rate [1/s]"
+  std::vector<PlotCurve> curves, errors;
+};
+
+/// The panel of one measured and one predicted series at the same points.
+OverlayPanel compared_panel(std::string quantity, std::string abscissa,
+                            const std::vector<double>& x, const std::vector<double>& measured,
+                            const std::vector<double>& predicted);
+
+/// The relative errors predicted/measured − 1 [%] of a quantity as a curve.
+PlotCurve relative_errors(std::string title, const std::vector<double>& x,
+                          const std::vector<double>& measured,
+                          const std::vector<double>& predicted, int colour);
+
+/// Panels side by side: a rheologist's axes (stress against shear rate)
+/// beside the instrument's (torque against angular velocity).
 struct OverlayPlot {
   std::string title;
-  std::vector<OverlaySeries> panels;
+  std::vector<OverlayPanel> panels;
 };
 
 /// How the writing of a plot ended. A plot is an extra of a result: without

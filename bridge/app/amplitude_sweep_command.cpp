@@ -197,6 +197,26 @@ void print_comparison(const Comparison& c, const MeasuredAmplitudeSweep& m,
   }
 }
 
+// G′ and G″ on one axis against the strain amplitude: every measured point,
+// the predicted sweep over its simulated amplitudes, and below them the
+// relative errors at the measured amplitudes the prediction covers.
+OverlayPanel sweep_panel(const MeasuredAmplitudeSweep& measured, const AmplitudeSweepPrediction& p,
+                         const Comparison& c) {
+  const auto values = [](const std::vector<MaterialValue>& v) {
+    std::vector<double> out;
+    for (const MaterialValue& m : v) out.push_back(m.value);
+    return out;
+  };
+  return {.quantity = "G', G'' [Pa]",
+          .abscissa = "strain amplitude {/Symbol g}_0",
+          .curves = {{"G' measured", measured.strain, measured.storage, false, 0},
+                     {"G'' measured", measured.strain, measured.loss, false, 1},
+                     {"G' predicted", p.amplitudes, values(p.storage), true, 0},
+                     {"G'' predicted", p.amplitudes, values(p.loss), true, 1}},
+          .errors = {relative_errors("G'", c.strain, c.storage, c.storage_predicted, 0),
+                     relative_errors("G''", c.strain, c.loss, c.loss_predicted, 1)}};
+}
+
 }  // namespace
 
 void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& command_line) {
@@ -249,10 +269,7 @@ void amplitude_sweep_command(const AmplitudeSweepOptions& o, const std::string& 
         .title = fmt::format("{}: amplitude sweep\npredicted: {}, phi = {}, E* = {:.4g} Pa",
                              o.data.filename().string(), o.law.filename().string(), o.phi,
                              request.modulus),
-        .panels = {{"G' [Pa]", "strain amplitude {/Symbol g}_0", c->strain, c->storage,
-                    c->storage_predicted},
-                   {"G'' [Pa]", "strain amplitude {/Symbol g}_0", c->strain, c->loss,
-                    c->loss_predicted}}};
+        .panels = {sweep_panel(*measured, p, *c)}};
     const PlotOutcome plotted = write_overlay_png(plot, plot_out->temporary_path());
     if (plotted.kind == PlotOutcome::Kind::write_failed) {
       throw NumericalError(

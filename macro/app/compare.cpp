@@ -245,12 +245,13 @@ PlotOutcome write_plot(const Comparison& c, const CompareOptions& o, const std::
   OverlayPlot plot{.title = fmt::format("{}{}\npredicted: {}", o.data_file.filename().string(),
                                         label == o.data_file.stem().string() ? "" : ", " + label,
                                         o.scene_file.filename().string()),
-                   .panels = {{"shear stress [Pa]", "shear rate [1/s]", m.shear_rate, m.stress,
-                               predicted_stress},
-                              {"torque [N m]", omega, m.angular_velocity, m.torque, c.torque}}};
+                   .panels = {compared_panel("shear stress [Pa]", "shear rate [1/s]",
+                                             m.shear_rate, m.stress, predicted_stress),
+                              compared_panel("torque [N m]", omega, m.angular_velocity, m.torque,
+                                             c.torque)}};
   if (c.compares_force) {
-    plot.panels.push_back(
-        {"normal force [N]", omega, m.angular_velocity, *m.normal_force, c.normal_force});
+    plot.panels.push_back(compared_panel("normal force [N]", omega, m.angular_velocity,
+                                         *m.normal_force, c.normal_force));
   }
   return write_overlay_png(plot, file);
 }

@@ -73,8 +73,8 @@ TEST(PlotOutcome, AnIncompletePngAfterSuccessIsAWriteFailure) {
 
 const OverlayPlot kPlot{
     .title = "test",
-    .panels = {{"y [1]", "x [1]", {1.0, 2.0, 4.0}, {1.0, 2.0, 3.0}, {1.1, 2.1, 2.9}},
-               {"z [Pa]", "w [1/s]", {0.1, 1.0}, {5.0, 6.0}, {5.5, 6.5}}}};
+    .panels = {compared_panel("y [1]", "x [1]", {1.0, 2.0, 4.0}, {1.0, 2.0, 3.0}, {1.1, 2.1, 2.9}),
+               compared_panel("z [Pa]", "w [1/s]", {0.1, 1.0}, {5.0, 6.0}, {5.5, 6.5})}};
 
 TEST(OverlayPlot, WithoutGnuplotOnThePathTheOutcomeSaysSo) {
   TemporaryDirectory dir;
