@@ -103,9 +103,10 @@ void CsvTable::attach_units(std::string_view units, std::size_t line) {
   for (std::size_t c = 0; c < header_.size(); ++c) {
     if (cells[c].empty()) continue;
     if (!split_units(header_[c]).units.empty()) {
-      throw InputError(fmt::format("{}: column '{}' has its units in the header and in the units "
-                                   "line",
-                                   where, header_[c]));
+      throw InputError(
+          fmt::format("{}: column '{}' has its units in the header and in the units "
+                      "line",
+                      where, header_[c]));
     }
     header_[c] = fmt::format("{} [{}]", header_[c], cells[c]);
   }

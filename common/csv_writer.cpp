@@ -44,9 +44,9 @@ void check_cell(const Column& c, double value, const std::string& table, std::si
         table, row, c.name, value));
   }
   if (c.name.ends_with("_se") && value < 0) {
-    throw NumericalError(fmt::format(
-        "{}: row {}, column '{}' came out as {}: a standard error is not negative", table, row,
-        c.name, value));
+    throw NumericalError(
+        fmt::format("{}: row {}, column '{}' came out as {}: a standard error is not negative",
+                    table, row, c.name, value));
   }
 }
 
@@ -73,7 +73,8 @@ void CsvWriter::may_be_na(const std::string& name) {
 
 void CsvWriter::separate() {
   if (cells_ >= columns_.size())
-    throw std::logic_error(fmt::format("{}: a row wider than its {} columns", table_, columns_.size()));
+    throw std::logic_error(
+        fmt::format("{}: a row wider than its {} columns", table_, columns_.size()));
   if (cells_++ > 0) text_ += ',';
 }
 

@@ -35,10 +35,10 @@ MeasuredFile parse_measured_file(std::string_view text, const std::string& sourc
   if (format == "auto") return detected->read(text, lines, source);
   const measured::FormatEntry& chosen = measured::formats().at(format);
   if (!chosen.recognises(lines)) {
-    throw InputError(fmt::format("{}: --format {} reads {}; this file is not one: it looks like "
-                                 "{} ({}), which --format auto reads",
-                                 source, chosen.name, chosen.summary, detected->name,
-                                 detected->summary));
+    throw InputError(
+        fmt::format("{}: --format {} reads {}; this file is not one: it looks like "
+                    "{} ({}), which --format auto reads",
+                    source, chosen.name, chosen.summary, detected->name, detected->summary));
   }
   return chosen.read(text, lines, source);
 }

@@ -27,18 +27,18 @@ namespace softglass {
 
 /// What an export records of the instrument besides its points.
 struct InstrumentRecord {
-  std::string geometry{};                 // its name and type as recorded, "" when none
+  std::string geometry{};                   // its name and type as recorded, "" when none
   std::optional<double> strain_constant{};  // c_γ [1/rad]: the software's γ̇ = c_γ Ω
   std::optional<double> stress_constant{};  // c_τ [Pa/(N m)]: the software's τ = c_τ M
 };
 
 /// A measured file, read.
 struct MeasuredFile {
-  std::string source{};             // the file, for messages
-  std::string format{};             // the export format that read it
-  std::vector<CsvTable> sections{}; // a step, an interval, or the whole table
+  std::string source{};              // the file, for messages
+  std::string format{};              // the export format that read it
+  std::vector<CsvTable> sections{};  // a step, an interval, or the whole table
   InstrumentRecord instrument{};
-  std::vector<std::string> notes{}; // what was left out, and why ("step 'Peak hold - 1': ...")
+  std::vector<std::string> notes{};  // what was left out, and why ("step 'Peak hold - 1': ...")
 };
 
 /// Reads `file` through the input gate (input_file.h) in the export format

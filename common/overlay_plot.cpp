@@ -38,7 +38,8 @@ constexpr const char* kPalette[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
 // Inline data block of a curve: x, y.
 std::string data_block(const std::string& name, const PlotCurve& c) {
   std::string block = fmt::format("${} << EOD\n", name);
-  for (std::size_t i = 0; i < c.x.size(); ++i) block += fmt::format("{:.10g} {:.10g}\n", c.x[i], c.y[i]);
+  for (std::size_t i = 0; i < c.x.size(); ++i)
+    block += fmt::format("{:.10g} {:.10g}\n", c.x[i], c.y[i]);
   return block + "EOD\n";
 }
 
@@ -48,9 +49,8 @@ std::string plot_command(const std::vector<PlotCurve>& curves, const std::string
   for (std::size_t k = 0; k < curves.size(); ++k) {
     const PlotCurve& c = curves[k];
     const std::string colour = kPalette[static_cast<std::size_t>(c.colour) % std::size(kPalette)];
-    command += fmt::format("{}${}{} using 1:2 with {} lc rgb '{}' title {}", k ? ", " : "",
-                           prefix, k,
-                           c.line ? "linespoints pt 6 ps 0.6 lw 2" : "points pt 7 ps 1.0",
+    command += fmt::format("{}${}{} using 1:2 with {} lc rgb '{}' title {}", k ? ", " : "", prefix,
+                           k, c.line ? "linespoints pt 6 ps 0.6 lw 2" : "points pt 7 ps 1.0",
                            colour, quoted(c.title));
   }
   return command;
@@ -145,8 +145,8 @@ class BrokenPipeIgnored {
 }  // namespace
 
 PlotCurve relative_errors(std::string title, const std::vector<double>& x,
-                          const std::vector<double>& measured,
-                          const std::vector<double>& predicted, int colour) {
+                          const std::vector<double>& measured, const std::vector<double>& predicted,
+                          int colour) {
   PlotCurve c{.title = std::move(title), .x = {}, .y = {}, .line = true, .colour = colour};
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double error = predicted[i] / measured[i] - 1.0;

@@ -31,8 +31,8 @@ OverlayPanel compared_panel(std::string quantity, std::string abscissa,
 
 /// The relative errors predicted/measured − 1 [%] of a quantity as a curve.
 PlotCurve relative_errors(std::string title, const std::vector<double>& x,
-                          const std::vector<double>& measured,
-                          const std::vector<double>& predicted, int colour);
+                          const std::vector<double>& measured, const std::vector<double>& predicted,
+                          int colour);
 
 /// Panels side by side: a rheologist's axes (stress against shear rate)
 /// beside the instrument's (torque against angular velocity).

@@ -25,7 +25,9 @@ const std::map<std::string, double> kStressUnits = {
 const std::map<std::string, double> kTorqueUnits = {{"N.m", 1.0},   {"mN.m", 1e-3}, {"µN.m", 1e-6},
                                                     {"μN.m", 1e-6}, {"uN.m", 1e-6}, {"nN.m", 1e-9}};
 const std::map<std::string, double> kAngularVelocityUnits = {
-    {"rad/s", 1.0}, {"rpm", 2.0 * std::numbers::pi / 60.0}, {"1/min", 2.0 * std::numbers::pi / 60.0}};
+    {"rad/s", 1.0},
+    {"rpm", 2.0 * std::numbers::pi / 60.0},
+    {"1/min", 2.0 * std::numbers::pi / 60.0}};
 const std::map<std::string, double> kForceUnits = {{"N", 1.0}, {"mN", 1e-3}, {"g", 9.80665e-3}};
 const std::map<std::string, double> kStrainUnits = {{"%", 0.01}, {"1", 1.0}};
 const std::map<std::string, double> kFrequencyUnits = {{"rad/s", 1.0},

@@ -56,8 +56,8 @@ MeasuredFile read(std::string_view, const std::vector<TextLine>& lines, const st
   for (const TextLine& l : lines)
     if (!l.text.starts_with('#')) table.push_back(l);
   const char delimiter = detect_delimiter(table);
-  const std::string read_as =
-      fmt::format("{} (read as a delimited table, {}-separated)", source, delimiter_name(delimiter));
+  const std::string read_as = fmt::format("{} (read as a delimited table, {}-separated)", source,
+                                          delimiter_name(delimiter));
   std::vector<std::vector<std::string>> cells;
   std::vector<std::size_t> numbers;
   for (const TextLine& l : table) {

@@ -14,7 +14,9 @@ namespace softglass::measured {
 
 namespace {
 
-bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool digit(char c) {
+  return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
 
 // Whether `cell` is a number whose decimal separator, if any, is `separator`.
 bool number_with(std::string_view cell, char separator) {
@@ -47,10 +49,9 @@ bool has_separator(std::string_view cell, char separator) {
 
 // Units instrument exports write for columns no reader uses (times,
 // temperatures, viscosities, angles, lengths): a row of them is a units row.
-constexpr std::array kOtherUnits = {"s",    "min",   "h",     "°C",    "K",     "Pa.s",
-                                    "Pa·s", "mPa.s", "mPa·s", "Pa s",  "mPa s", "rad",
-                                    "mrad", "°",     "deg",   "mm",    "µm",    "um",
-                                    "m",    "Hz",    "-",     "1/rad", "N",     "J/m³"};
+constexpr std::array kOtherUnits = {
+    "s",    "min", "h",   "°C", "K",  "Pa.s", "Pa·s", "mPa.s", "mPa·s", "Pa s",  "mPa s", "rad",
+    "mrad", "°",   "deg", "mm", "µm", "um",   "m",    "Hz",    "-",     "1/rad", "N",     "J/m³"};
 
 }  // namespace
 
@@ -120,17 +121,17 @@ Decimal detect_decimal(const std::vector<std::vector<std::string>>& rows,
 }
 
 bool looks_like_unit(std::string_view cell) {
-  if (cell.size() >= 2 && ((cell.front() == '[' && cell.back() == ']') ||
-                           (cell.front() == '(' && cell.back() == ')')))
+  if (cell.size() >= 2 &&
+      ((cell.front() == '[' && cell.back() == ']') || (cell.front() == '(' && cell.back() == ')')))
     return true;
   const std::string unit(cell);
-  return known_unit(unit) || std::find(kOtherUnits.begin(), kOtherUnits.end(), unit) !=
-                                 kOtherUnits.end();
+  return known_unit(unit) ||
+         std::find(kOtherUnits.begin(), kOtherUnits.end(), unit) != kOtherUnits.end();
 }
 
 std::string bare_unit(std::string_view cell) {
-  if (cell.size() >= 2 && ((cell.front() == '[' && cell.back() == ']') ||
-                           (cell.front() == '(' && cell.back() == ')')))
+  if (cell.size() >= 2 &&
+      ((cell.front() == '[' && cell.back() == ']') || (cell.front() == '(' && cell.back() == ')')))
     cell = cell.substr(1, cell.size() - 2);
   return std::string(cell);
 }
@@ -139,7 +140,8 @@ CsvTable section_table(const std::string& source, Section section, Decimal decim
   std::vector<std::string> header;
   for (std::size_t c = 0; c < section.names.size(); ++c) {
     const std::string unit = c < section.units.size() ? bare_unit(section.units[c]) : "";
-    header.push_back(unit.empty() ? section.names[c] : fmt::format("{} [{}]", section.names[c], unit));
+    header.push_back(unit.empty() ? section.names[c]
+                                  : fmt::format("{} [{}]", section.names[c], unit));
   }
   const char separator = decimal == Decimal::comma ? ',' : '.';
   const char thousands = decimal == Decimal::comma ? '.' : ',';

@@ -55,9 +55,9 @@ std::string bare_unit(std::string_view cell);
 
 /// A section of an export before it becomes a table.
 struct Section {
-  std::string title{};                        // "Flow sweep - 3", "" for a whole file
-  std::vector<std::string> comments{};        // provenance: "Sample name: ..."
-  std::vector<std::string> names{}, units{};  // units[c] "" when none; units may be empty
+  std::string title{};                           // "Flow sweep - 3", "" for a whole file
+  std::vector<std::string> comments{};           // provenance: "Sample name: ..."
+  std::vector<std::string> names{}, units{};     // units[c] "" when none; units may be empty
   std::vector<std::vector<std::string>> rows{};  // cells as written
   std::vector<std::size_t> lines{};              // each row's line in the file
 };

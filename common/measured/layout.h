@@ -21,7 +21,8 @@ struct LayoutEntry {
   std::string name;
   std::string summary;
   bool (*recognises)(const std::vector<std::string>& header) = nullptr;
-  std::vector<RheometerCurve> (*read)(const CsvTable& csv, const MeasuredReading& fallback) = nullptr;
+  std::vector<RheometerCurve> (*read)(const CsvTable& csv,
+                                      const MeasuredReading& fallback) = nullptr;
 };
 
 /// Every layout, in the order they are tried.

@@ -36,8 +36,7 @@ MeasuredFile read(std::string_view text, const std::vector<TextLine>&, const std
 }  // namespace
 
 FormatEntry plain_format() {
-  return {"plain", "comma-separated, '#' comments, names with units in brackets", recognises,
-          read};
+  return {"plain", "comma-separated, '#' comments, names with units in brackets", recognises, read};
 }
 
 }  // namespace softglass::measured

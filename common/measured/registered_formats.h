@@ -5,7 +5,7 @@
 #pragma once
 
 #define SOFTGLASS_MEASURED_FORMATS(FORMAT) \
-  FORMAT(trios)                             \
-  FORMAT(rheocompass)                       \
-  FORMAT(plain)                             \
+  FORMAT(trios)                            \
+  FORMAT(rheocompass)                      \
+  FORMAT(plain)                            \
   FORMAT(delimited)

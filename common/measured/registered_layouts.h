@@ -5,5 +5,5 @@
 #pragma once
 
 #define SOFTGLASS_MEASURED_LAYOUTS(LAYOUT) \
-  LAYOUT(paired)                            \
+  LAYOUT(paired)                           \
   LAYOUT(long)

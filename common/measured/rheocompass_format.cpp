@@ -105,15 +105,15 @@ MeasuredFile read(std::string_view, const std::vector<TextLine>& lines, const st
         s.units = row;
         break;
       }
-      if (std::any_of(row.begin(), row.end(), [](const std::string& u) {
-            return looks_numeric(u);
-          }))
+      if (std::any_of(row.begin(), row.end(),
+                      [](const std::string& u) { return looks_numeric(u); }))
         break;  // points with no units row above them
     }
     if (s.units.empty()) {
-      throw InputError(fmt::format("{}, line {}: interval of result '{}' has no row of bracketed "
-                                   "units ('[1/s]', '[Pa]') under its column names",
-                                   read_as, lines[i].number, s.title));
+      throw InputError(
+          fmt::format("{}, line {}: interval of result '{}' has no row of bracketed "
+                      "units ('[1/s]', '[Pa]') under its column names",
+                      read_as, lines[i].number, s.title));
     }
     for (++j; j < lines.size() && !blank(lines[j].text) && !keyword_line(lines[j].text); ++j) {
       s.rows.push_back(shifted(cells(lines[j])));
@@ -133,8 +133,7 @@ MeasuredFile read(std::string_view, const std::vector<TextLine>& lines, const st
     const Decimal decimal = detect_decimal(s.rows, s.lines, delimiter, read_as);
     file.sections.push_back(section_table(source, std::move(s), decimal));
   }
-  if (file.sections.empty())
-    throw InputError(fmt::format("{}: no interval has points", read_as));
+  if (file.sections.empty()) throw InputError(fmt::format("{}: no interval has points", read_as));
   return file;
 }
 

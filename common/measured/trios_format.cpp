@@ -121,14 +121,14 @@ struct Reader {
       if (key == "stress constant") {
         file.instrument.stress_constant = constant(value, {"Pa/N.m", "Pa/Nm"});
         if (!file.instrument.stress_constant)
-          file.notes.push_back(fmt::format("{}: stress constant '{}' not read (expected Pa/N.m)",
-                                           where(i), value));
+          file.notes.push_back(
+              fmt::format("{}: stress constant '{}' not read (expected Pa/N.m)", where(i), value));
       }
       if (key == "strain constant") {
         file.instrument.strain_constant = constant(value, {"1/rad", "rad^-1"});
         if (!file.instrument.strain_constant)
-          file.notes.push_back(fmt::format("{}: strain constant '{}' not read (expected 1/rad)",
-                                           where(i), value));
+          file.notes.push_back(
+              fmt::format("{}: strain constant '{}' not read (expected 1/rad)", where(i), value));
       }
     }
     file.instrument.geometry = geometry_type.empty() || geometry_name.empty()
@@ -151,10 +151,12 @@ struct Reader {
     Section s{.title = lims && c.size() > 1 ? c[1] : c[0], .comments = comments};
     ++i;
     if (lims && next() && lower(cells(lines[i])[0]) == "number of points") ++i;
-    if (!next()) throw InputError(fmt::format("{}: step '{}' has no column names", where(marker), s.title));
+    if (!next())
+      throw InputError(fmt::format("{}: step '{}' has no column names", where(marker), s.title));
     const std::size_t names_line = i;
     s.names = cells(lines[i++]);
-    if (lims && !s.names.empty() && lower(s.names[0]) == "variables") s.names.erase(s.names.begin());
+    if (lims && !s.names.empty() && lower(s.names[0]) == "variables")
+      s.names.erase(s.names.begin());
     if (i >= lines.size() || blank(lines[i].text) || is_step_marker(lines[i].text))
       throw InputError(fmt::format("{}: step '{}' has column names but no row of units under them",
                                    where(names_line), s.title));
@@ -179,9 +181,9 @@ struct Reader {
         s.names[k] = "Angular velocity";
     const std::string kind = step_kind(s.title);
     if (!kept(kind)) {
-      file.notes.push_back(fmt::format(
-          "step '{}' left out: a {} is not a steady flow curve or an amplitude sweep", s.title,
-          kind.empty() ? "step without a name" : kind));
+      file.notes.push_back(
+          fmt::format("step '{}' left out: a {} is not a steady flow curve or an amplitude sweep",
+                      s.title, kind.empty() ? "step without a name" : kind));
     } else if (s.rows.empty()) {
       file.notes.push_back(fmt::format("step '{}' left out: it has no points", s.title));
     } else {

@@ -54,8 +54,7 @@ MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentCo
       m.conversions.push_back(fmt::format(
           "predicted stress = predicted torque x {:.6g} Pa/(N m), the file's own stress per "
           "torque ({} the {:.6g} of {}: the instrument's end-effect correction or constants)",
-          m.stress_per_torque,
-          m.stress_per_torque < constants.stress_constant ? "below" : "above",
+          m.stress_per_torque, m.stress_per_torque < constants.stress_constant ? "below" : "above",
           constants.stress_constant, constants.convention));
     }
   }
@@ -70,13 +69,13 @@ MeasuredTorques measured_torques(const RheometerCurve& curve, const InstrumentCo
 MeasuredTorques thinned(const MeasuredTorques& m, std::size_t max_points) {
   const std::size_t n = m.angular_velocity.size();
   if (n <= max_points) return m;
-  MeasuredTorques kept{.label = m.label,
-                       .normal_force = m.normal_force ? std::optional(std::vector<double>{})
-                                                      : std::nullopt,
-                       .stress_per_torque = m.stress_per_torque,
-                       .conversions = m.conversions,
-                       .left_out = m.left_out,
-                       .thinned_out = n - max_points};
+  MeasuredTorques kept{
+      .label = m.label,
+      .normal_force = m.normal_force ? std::optional(std::vector<double>{}) : std::nullopt,
+      .stress_per_torque = m.stress_per_torque,
+      .conversions = m.conversions,
+      .left_out = m.left_out,
+      .thinned_out = n - max_points};
   for (std::size_t k = 0; k < max_points; ++k) {
     const std::size_t i = (k * (n - 1) + (max_points - 1) / 2) / (max_points - 1);
     kept.angular_velocity.push_back(m.angular_velocity[i]);

@@ -30,9 +30,9 @@ struct MeasuredTorques {
   /// included); otherwise the c_τ of the conversion. Predicted stresses are
   /// predicted torques times this, so both stresses compare as the torques do.
   double stress_per_torque = 0.0;
-  std::vector<std::string> conversions{};             // one line per derived quantity
-  std::size_t left_out = 0;                         // points outside the rate window
-  std::size_t thinned_out = 0;                      // points left out by thinned()
+  std::vector<std::string> conversions{};  // one line per derived quantity
+  std::size_t left_out = 0;                // points outside the rate window
+  std::size_t thinned_out = 0;             // points left out by thinned()
 };
 
 /// The points of `curve` whose shear rate (reported, or c_γ Ω) lies in

@@ -42,16 +42,19 @@ TEST(CsvWriter, WritesTheHeaderFirstThenUnitsCommentsAndRows) {
 TEST(CsvWriter, RefusesNumbersWithoutMeaningNamingRowAndColumn) {
   const std::vector<std::string> header = {"phi [1]", "yield [E*]", "yield_se [E*]"};
   for (const double bad : {NAN, INFINITY, -INFINITY}) {
-    EXPECT_NE(numerical_error([&] { CsvWriter("t.csv", header, {}) << 0.8 << bad; })
-                  .find("t.csv: row 1, column 'yield' came out as"),
+    EXPECT_NE(numerical_error([&] {
+                CsvWriter("t.csv", header, {}) << 0.8 << bad;
+              }).find("t.csv: row 1, column 'yield' came out as"),
               std::string::npos)
         << bad;
   }
-  EXPECT_NE(numerical_error([&] { CsvWriter("t.csv", header, {}) << 0.8 << 1.0 << INFINITY; })
-                .find("column 'yield_se'"),
+  EXPECT_NE(numerical_error([&] {
+              CsvWriter("t.csv", header, {}) << 0.8 << 1.0 << INFINITY;
+            }).find("column 'yield_se'"),
             std::string::npos);
-  EXPECT_NE(numerical_error([&] { CsvWriter("t.csv", header, {}) << 0.8 << 1.0 << -1e-3; })
-                .find("a standard error is not negative"),
+  EXPECT_NE(numerical_error([&] {
+              CsvWriter("t.csv", header, {}) << 0.8 << 1.0 << -1e-3;
+            }).find("a standard error is not negative"),
             std::string::npos);
   CsvWriter declared("t.csv", header, {});
   declared.may_be_na("yield");

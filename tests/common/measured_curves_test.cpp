@@ -14,6 +14,7 @@ namespace softglass {
 namespace {
 
 using testing::expect_contains;
+using testing::refusal_of;
 
 std::vector<MeasuredCurve> read(const std::string& text, MeasuredReading units = {}) {
   return read_measured_curves(CsvTable::parse(text, "data.csv"), units);
@@ -29,17 +30,6 @@ std::string refusal(const std::string& text, MeasuredReading units = {}) {
   return "";
 }
 
-// The message of what `read` throws.
-template <class Read>
-std::string refusal_of(Read read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "accepted";
-  return "";
-}
 
 const std::string kInstrument =
     "Stress [Pa],Shear rate [1/s],Viscosity [Pa.s],Normal stress [Pa]\n"

@@ -16,18 +16,7 @@ namespace softglass {
 namespace {
 
 using testing::expect_contains;
-
-// The message of the InputError `read` throws.
-template <class Read>
-std::string refusal_of(Read read) {
-  try {
-    read();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "accepted";
-  return "";
-}
+using testing::refusal_of;
 
 const std::filesystem::path kExports =
     std::filesystem::path(SOFTGLASS_SOURCE_DIR) / "tests/data/instrument_exports";
@@ -115,8 +104,10 @@ TEST(InstrumentExport, TriosRecordsItsGeometryAndConstants) {
 
 TEST(InstrumentExport, AFormatChosenByHandMustFitTheFile) {
   expect_contains(
-      refusal_of([] { read_measured_file(kExports / "trios_text_export.txt", "rheocompass"); }), {"--format rheocompass reads", "it looks like trios"});
-  expect_contains(refusal_of([] { read_measured_file(kExports / "plain_flow.csv", "excel"); }), {"measured-file format 'excel' is unknown", "trios, rheocompass, plain"});
+      refusal_of([] { read_measured_file(kExports / "trios_text_export.txt", "rheocompass"); }),
+      {"--format rheocompass reads", "it looks like trios"});
+  expect_contains(refusal_of([] { read_measured_file(kExports / "plain_flow.csv", "excel"); }),
+                  {"measured-file format 'excel' is unknown", "trios, rheocompass, plain"});
   EXPECT_EQ(read_measured_file(kExports / "plain_flow.csv", "delimited").format, "delimited");
 }
 
@@ -129,20 +120,26 @@ TEST(InstrumentExport, MalformedExportsAreRefusedNamingTheCause) {
     });
   };
   // A TRIOS step whose units row is missing: the points follow the names.
-  expect_contains(refused("Filename\tx\n[step]\nFlow sweep - 1\nStress\tShear rate\n"
-                          "1.0\t0.1\n2.0\t1.0\n3.0\t10\n4.0\t100\n"), {"line 5", "the row under the column names should hold their units",
-                  "the number '1.0'"});
+  expect_contains(
+      refused("Filename\tx\n[step]\nFlow sweep - 1\nStress\tShear rate\n"
+              "1.0\t0.1\n2.0\t1.0\n3.0\t10\n4.0\t100\n"),
+      {"line 5", "the row under the column names should hold their units", "the number '1.0'"});
   // A TRIOS export of transients only.
-  expect_contains(refused("[step]\nPeak hold - 1\nStress\tShear rate\nPa\t1/s\n1\t2\n"), {"no step is a steady flow curve or an amplitude sweep",
-                  "'Peak hold - 1' left out"});
+  expect_contains(
+      refused("[step]\nPeak hold - 1\nStress\tShear rate\nPa\t1/s\n1\t2\n"),
+      {"no step is a steady flow curve or an amplitude sweep", "'Peak hold - 1' left out"});
   // A thousands separator in a decimal-comma file.
-  expect_contains(refused("Shear rate [1/s];Stress [Pa]\n0,1;1.234,5\n1;2\n10;3\n100;4\n"), {"line 2", "'1.234,5' is written with a thousands separator"});
+  expect_contains(refused("Shear rate [1/s];Stress [Pa]\n0,1;1.234,5\n1;2\n10;3\n100;4\n"),
+                  {"line 2", "'1.234,5' is written with a thousands separator"});
   // Decimal commas and points in one file.
-  expect_contains(refused("Shear rate [1/s];Stress [Pa]\n0,1;1\n1;2.5\n10;3\n100;4\n"), {"decimal commas (line 2) and with decimal points (line 3)"});
+  expect_contains(refused("Shear rate [1/s];Stress [Pa]\n0,1;1\n1;2.5\n10;3\n100;4\n"),
+                  {"decimal commas (line 2) and with decimal points (line 3)"});
   // A RheoCompass interval without its row of units.
-  expect_contains(refused("Result:;r\nInterval data:;Shear Rate;Shear Stress\n;0,1;1\n;1;2\n"), {"RheoCompass", "line 2", "no row of bracketed units"});
+  expect_contains(refused("Result:;r\nInterval data:;Shear Rate;Shear Stress\n;0,1;1\n;1;2\n"),
+                  {"RheoCompass", "line 2", "no row of bracketed units"});
   // A unit no column knows, in a units row.
-  expect_contains(refused("Shear rate\tStress\n[1/s]\t[psi]\n0.1\t1\n1\t2\n10\t3\n100\t4\n"), {"'psi' is not a stress unit"});
+  expect_contains(refused("Shear rate\tStress\n[1/s]\t[psi]\n0.1\t1\n1\t2\n10\t3\n100\t4\n"),
+                  {"'psi' is not a stress unit"});
   // Numbers without names above them.
   expect_contains(refused("0.1;1\n1;2\n"), {"the numbers have no row of column names"});
 }
@@ -154,10 +151,10 @@ TEST(InstrumentExport, AnExportOfOneKindIsNotReadAsAnother) {
       "[step]\nAmplitude sweep - 1\nOscillation strain\tStorage modulus\tLoss modulus\n%\tPa\tPa\n"
       "0.1\t100\t5\n1\t99\t6\n10\t60\t30\n100\t10\t20\n[step]\nFlow sweep - 2\nStress\tShear "
       "rate\nPa\t1/s\n10\t0.1\n11\t0.1\n12\t0.1\n13\t0.1\n";
-  expect_contains(refusal_of([&] {
-                    read_measured_curves(parse_measured_file(amplitude_only, "a.txt"), {});
-                  }), {"no section that is a flow curve", "'Amplitude sweep - 1' (an amplitude sweep",
-                  "'Flow sweep - 2' (a flow curve at one rate)"});
+  expect_contains(
+      refusal_of([&] { read_measured_curves(parse_measured_file(amplitude_only, "a.txt"), {}); }),
+      {"no section that is a flow curve", "'Amplitude sweep - 1' (an amplitude sweep",
+       "'Flow sweep - 2' (a flow curve at one rate)"});
 }
 
 }  // namespace

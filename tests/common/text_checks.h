@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/csv_table.h"
+#include "common/errors.h"
 
 namespace softglass::testing {
 
@@ -14,6 +15,18 @@ namespace softglass::testing {
 inline void expect_contains(const std::string& text, std::initializer_list<std::string> parts) {
   for (const std::string& part : parts)
     EXPECT_NE(text.find(part), std::string::npos) << part << " in: " << text;
+}
+
+/// The message of the InputError `read` throws; a failure when it throws none.
+template <class Read>
+std::string refusal_of(Read read) {
+  try {
+    read();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "accepted";
+  return "";
 }
 
 /// The header of a result table (common/csv_writer.h: names, then a units

@@ -144,8 +144,8 @@ TEST_F(MacroCompare, AbsurdMeasuredSpeedIsBadInput) {
              "Angular velocity [rad/s],Torque [N.m]\n0.1,1e-3\n1,2e-3\n10,4e-3\n1e300,8e-3\n");
   const auto o = compare("cone.prm absurd.csv -o out -q");
   EXPECT_EQ(o.code, 2) << o.err;
-  for (const char* part : {"characteristic shear rate", "measurement/angular velocity = 1e+300",
-                           "absurd.csv"})
+  for (const char* part :
+       {"characteristic shear rate", "measurement/angular velocity = 1e+300", "absurd.csv"})
     EXPECT_NE(o.err.find(part), std::string::npos) << part << " in " << o.err;
   EXPECT_FALSE(fs::exists(dir_.path() / "out"));
 }
@@ -208,9 +208,9 @@ TEST_F(MacroCompare, WithoutGnuplotTheResultHasNoPlotAndAWarning) {
   EXPECT_NE(o.err.find("macro: warning: no plot written (gnuplot is not installed)"),
             std::string::npos)
       << o.err;
-  EXPECT_EQ(softglass::testing::file_names(dir_.path() / "out"),
-            (std::vector<std::string>{"comparison.csv", "comparison.h5", "manifest.txt",
-                                      "summary.txt"}));
+  EXPECT_EQ(
+      softglass::testing::file_names(dir_.path() / "out"),
+      (std::vector<std::string>{"comparison.csv", "comparison.h5", "manifest.txt", "summary.txt"}));
   EXPECT_NE(
       read_text(dir_.path() / "out" / "summary.txt").find("no plot: gnuplot is not installed"),
       std::string::npos);
@@ -293,8 +293,9 @@ TEST(MacroCompareRealData, CouetteConstantsAreTheInstrumentsOwn) {
   }
   EXPECT_EQ(rows, 6) << "316 ... 1000 1/s";
   // The scene's ISO 3219 constant is 1.1 x the instrument's (its end-effect correction).
-  EXPECT_NE(read_text(dir.path() / "out" / "summary.txt").find("the file's own stress per torque (below"),
-            std::string::npos);
+  EXPECT_NE(
+      read_text(dir.path() / "out" / "summary.txt").find("the file's own stress per torque (below"),
+      std::string::npos);
 }
 
 // The castor-oil flow sweep as TRIOS exports it (tab-separated, parameter
@@ -339,10 +340,12 @@ TEST(MacroCompareRealData, ATriosExportComparesAsItsPlainCsv) {
              "end\nsubsection solver\n set preset = fast\nend\n");
   for (const auto& [file, folder] : {std::pair{data.string(), "plain"}, {"trios.txt", "trios"}}) {
     const auto o = softglass::testing::run_tool(
-        MACRO_EXECUTABLE, fmt::format("compare cell.prm '{}' -o {} -q --min-rate 300", file, folder),
-        dir.path(), dir.path() / "capture");
+        MACRO_EXECUTABLE,
+        fmt::format("compare cell.prm '{}' -o {} -q --min-rate 300", file, folder), dir.path(),
+        dir.path() / "capture");
     ASSERT_EQ(o.code, 0) << o.err;
-    EXPECT_EQ(o.err.find("warning"), std::string::npos) << "the cell is the instrument's: " << o.err;
+    EXPECT_EQ(o.err.find("warning"), std::string::npos)
+        << "the cell is the instrument's: " << o.err;
   }
   const auto trios = comparison_rows(dir.path() / "trios");
   const auto plain = comparison_rows(dir.path() / "plain");
