@@ -67,12 +67,12 @@ run() {
     echo "the whole output: $log" >&2
     exit $status
   fi
-  grep -i 'warning' "$step_output" | sed -E 's/^ *//' | sort | uniq -c | sort -rn |
-    awk -v log="$log" '{ n = $1; sub(/^ *[0-9]+ /, "") }
+  { grep -i 'warning' "$step_output" || true; } | sed -E 's/^ *//' | sort | uniq -c | sort -rn |
+    awk -v logfile="$log" '{ n = $1; sub(/^ *[0-9]+ /, "") }
       NR <= 3 { w = length($0) > 110 ? substr($0, 1, 107) "..." : $0
                 print "   " w (n > 1 ? "  (" n " times)" : "") }
       NR > 3 { more++ }
-      END { if (more) print "   and " more " more warning(s) in " log }'
+      END { if (more) print "   and " more " more warning(s) in " logfile }'
 }
 # The long simulations draw their progress line on a terminal; in a pipe or
 # a file they keep quiet (-q) and say nothing until done.
@@ -106,7 +106,7 @@ record "$out/sweep/flow_curve.csv" phi gamma_tilde sigma sigma_se N1 N1_se
 
 step "2. bridge fit: Herschel-Bulkley and universal laws, bootstrap errors"
 run "$bridge" fit "$out/sweep/flow_curve.csv" -o "$out/law.prm" -f -q
-grep -E '^  k    ' "$log" | tail -n 1 | sed -E 's/^  /   /'
+{ grep -E '^  k    ' "$log" || true; } | tail -n 1 | sed -E 's/^  /   /'
 
 step "3. bridge material: the paper's emulsion and the castor-oil emulsion"
 run paper_emulsion "$bridge" "$out/law.prm" "$out/material_paper_emulsion.prm"
@@ -167,7 +167,7 @@ else
   run "$bridge" amplitude-sweep "$out/law_with_amplitude_sweep.prm" --phi 0.85 --plateau-modulus 143 \
     --viscosity 0.89e-3 -o "$out/amplitude_castoroil" -f
 fi
-grep -E '^amplitude sweep at omega = ' "$step_output" | head -n 1 | fold -s -w 100 | sed 's/^/   /'
+{ grep -E '^amplitude sweep at omega = ' "$step_output" || true; } | head -n 1 | fold -s -w 100 | sed 's/^/   /'
 
 step "done in $((SECONDS - start)) s"
 # The summary: the prediction with its band, and where the files are; on the
