@@ -67,7 +67,10 @@ run() {
     echo "the whole output: $log" >&2
     exit $status
   fi
-  { grep -i 'warning' "$step_output" || true; } | sed -E 's/^ *//' | sort | uniq -c | sort -rn |
+  # Warnings of one kind differ in their place ("line 11 (phi = 0.85, ...): "):
+  # without it they fold into one line with a count.
+  { grep -i 'warning' "$step_output" | grep -v -x -i ' *warnings' || true; } |
+    sed -E 's/^ *//; s/line [0-9]+ \([^)]*\): //' | sort | uniq -c | sort -rn |
     awk -v logfile="$log" '{ n = $1; sub(/^ *[0-9]+ /, "") }
       NR <= 3 { w = length($0) > 110 ? substr($0, 1, 107) "..." : $0
                 print "   " w (n > 1 ? "  (" n " times)" : "") }
@@ -106,6 +109,9 @@ record "$out/sweep/flow_curve.csv" phi gamma_tilde sigma sigma_se N1 N1_se
 
 step "2. bridge fit: Herschel-Bulkley and universal laws, bootstrap errors"
 run "$bridge" fit "$out/sweep/flow_curve.csv" -o "$out/law.prm" -f -q
+# The fit report's warnings, one line per kind (bridge folds the repeats).
+awk -v logfile="$log" '/^warnings$/ { on = 1; next } on && /^  / { n++ } on && !/^  / { on = 0 }
+  END { if (n) print "   " n " kind(s) of warning (each once, repeats counted): see " logfile }' "$step_output"
 { grep -E '^  k    ' "$log" || true; } | tail -n 1 | sed -E 's/^  /   /'
 
 step "3. bridge material: the paper's emulsion and the castor-oil emulsion"
@@ -120,8 +126,9 @@ show "$out/cone_plate/results.csv" rotation_rate torque torque_discretisation_er
 
 if [ -f "$data" ]; then
   step "5. macro compare: the castor-oil emulsion in its Couette cell (no fitted parameter)"
-  run "$macro" compare "$root/cases/castoroil_couette.prm" "$data" \
+  with_progress "$macro" compare "$root/cases/castoroil_couette.prm" "$data" \
     --material "$out/material_castoroil85.prm" -o "$out/compare_castoroil" -f
+  { grep -E '^torque: ' "$step_output" || true; } | sed 's/^/   /'
   compared="$out/compare_castoroil/comparison.csv"
 else
   step "5. no measured data (../shared/data/rheometry/ absent): Couette torques of the bundled law"
@@ -169,7 +176,7 @@ else
 fi
 { grep -E '^amplitude sweep at omega = ' "$step_output" || true; } | head -n 1 | fold -s -w 100 | sed 's/^/   /'
 
-step "done in $((SECONDS - start)) s"
+step "done"
 # The summary: the prediction with its band, and where the files are; on the
 # terminal and at the end of the log.
 {
