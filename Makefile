@@ -5,7 +5,7 @@ BUILD    ?= build
 JOBS     ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build test demo sanitize bench format clean
+.PHONY: all deps build quiet-build test demo sanitize bench format clean
 
 all: build
 
@@ -16,6 +16,13 @@ build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# The same build for `make demo`, its output in $(BUILD)/build.log (and the
+# dependency install's in $(BUILD)/deps.log), shown only when it fails.
+quiet-build:
+	@bash scripts/quietly.sh $(BUILD)/deps.log "installing dependencies" bash scripts/install-deps.sh
+	@bash scripts/quietly.sh $(BUILD)/build.log "build" \
+	  bash -c 'cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) && cmake --build $(BUILD) -j $(JOBS)'
+
 # The CI suite: everything but the long validation runs and the campaigns of
 # open defects (tests/CMakeLists.txt).
 test: build
@@ -23,7 +30,7 @@ test: build
 
 # The whole workflow: micro sweep -> bridge fit, material -> macro cone-plate
 # -> macro compare with the castor-oil measurement (scripts/demo.sh).
-demo: build
+demo: quiet-build
 	@bash scripts/demo.sh $(BUILD) out/demo
 
 # The same suite under AddressSanitizer and UndefinedBehaviorSanitizer.

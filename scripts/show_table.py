@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Prints chosen columns of a result table, by name, aligned, for the terminal.
 
-    show_table.py TABLE.csv NAME [NAME ...] [--rows N]
+    show_table.py TABLE.csv NAME [NAME ...] [--rows N] [--every N]
 
 Each column is headed "name [unit]" and its numbers keep 4 significant
 digits: what a reader takes in at a glance (the table keeps them all).
@@ -18,6 +18,8 @@ def main():
     parser.add_argument("table")
     parser.add_argument("names", nargs="+", help="columns, by name (without the unit)")
     parser.add_argument("--rows", type=int, default=0, help="at most this many rows (0: all)")
+    parser.add_argument("--every", type=int, default=0,
+                        help="every N-th row and the last one (0: all); a glance at a long table")
     args = parser.parse_args()
     with open(args.table, encoding="utf-8") as f:
         rows, _ = read_rows(f.read().splitlines())
@@ -38,6 +40,8 @@ def main():
             return text
 
     shown = rows[:args.rows] if args.rows else rows
+    if args.every > 1:
+        shown = [r for i, r in enumerate(shown) if i % args.every == 0 or i == len(shown) - 1]
     table = [keys] + [[cell(r[k]) for k in keys] for r in shown]
     widths = [max(len(line[c]) for line in table) for c in range(len(keys))]
     for line in table:

@@ -13,20 +13,29 @@ namespace softglass::bridge {
 // 1e-6 of a step's displacement; repeated deterministic cycles agree to 1e-10).
 constexpr double kNoiseLevel = 1e-8;
 
-std::string with_error(double value, double error, int digits) {
+std::string with_error(double value, double error, int digits, const std::string& unit) {
   if (!std::isfinite(value)) return "not fitted";
+  const std::string u = unit.empty() ? "" : " " + unit;
   // No error, or only noise: one packing has no packing-to-packing spread, and
   // the cycles of a deterministic (unyielded) oscillation repeat to the
   // solver's tolerance, far below what any digit printed here could show.
   if (!std::isfinite(error) || error <= kNoiseLevel * std::abs(value))
-    return fmt::format("{:.4g}", value);
+    return fmt::format("{:.4g}{}", value, u);
+  // Not one significant digit of the value is known: said in words.
+  if (error > std::abs(value))
+    return fmt::format("{:.2g}{}, not distinguishable from zero (error {:.{}g}{})", value, u, error,
+                       digits, u);
   // Print the value to the decimal place of the error's last significant digit.
   const int place = static_cast<int>(std::floor(std::log10(error))) - (digits - 1);
   const double magnitude = std::max(std::abs(value), error);
-  if (magnitude < 1e-3 || magnitude >= 1e5)
-    return fmt::format("{:.3e} ± {:.{}g}", value, error, digits);
+  if (magnitude < 1e-3 || magnitude >= 1e5) {
+    // As many significant digits of the value as reach the error's last one.
+    const int value_digits =
+        std::max(1, static_cast<int>(std::floor(std::log10(std::abs(value)))) - place + 1);
+    return fmt::format("{:.{}e} ± {:.{}g}{}", value, value_digits - 1, error, digits, u);
+  }
   const int decimals = std::max(0, -place);
-  return fmt::format("{:.{}f} ± {:.{}f}", value, decimals, error, decimals);
+  return fmt::format("{:.{}f} ± {:.{}f}{}", value, decimals, error, decimals, u);
 }
 
 namespace {
@@ -163,9 +172,9 @@ void print_material_report(const Material& m) {
     const auto& law = m.laws[index(q)];
     if (!law) continue;
     const char* lhs = q == Quantity::sigma ? "tau" : column_name(q);
-    fmt::print("         {:<3} = {} Pa + {} Pa s^n gamma_dot^({})\n", lhs,
-               with_error(law->yield.value, law->yield.error()),
-               with_error(law->consistency.value, law->consistency.error()),
+    fmt::print("         {:<3} = {} + {} gamma_dot^n, n = {}\n", lhs,
+               with_error(law->yield.value, law->yield.error(), 2, "Pa"),
+               with_error(law->consistency.value, law->consistency.error(), 2, "Pa s^n"),
                with_error(law->index.value, law->index.error()));
   }
 }

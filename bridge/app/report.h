@@ -22,7 +22,10 @@ void print_amplitude_sweep_prediction(const AmplitudeSweepPrediction& p);
 void print_rescale_report(const std::vector<RescaledCurve>& rescaled,
                           const RescaleSettings& settings, const std::string& constants_source);
 
-/// "80.7 ± 1.3": a value with its error, to `digits` significant digits of the error.
-std::string with_error(double value, double error, int digits = 2);
+/// "80.7 ± 1.3": a value with its error, to `digits` significant digits of the
+/// error and the value to the same decimal place; `unit`, if given, follows
+/// ("80.7 ± 1.3 Pa"). An error larger than the value is said in words:
+/// "-0.86 Pa, not distinguishable from zero (error 3.5e+05 Pa)".
+std::string with_error(double value, double error, int digits = 2, const std::string& unit = "");
 
 }  // namespace softglass::bridge

@@ -61,10 +61,16 @@ std::string phi_table(const SweepAnalysis& a, const std::vector<std::string>& co
   }
   CsvWriter w("the phi table", header, comments);
   // n/a: the quasi-static σ_y of a φ without its γ̃ = 0 row; the goodness of a
-  // fit without degrees of freedom.
+  // fit without degrees of freedom; every value of a normal-stress or force
+  // law whose fit failed (warned; only the stress law must fit, and a failed
+  // one is refused before this table).
   for (const std::string& h : header) {
     const std::string name = split_units(h).name;
-    if (name.ends_with("_yield_quasi_static") || name.ends_with("_chi2_dof") || name.ends_with("_p"))
+    const bool optional_law = !name.starts_with(std::string(column_name(Quantity::sigma)) + "_") &&
+                              name != "phi" && !name.starts_with("G0") &&
+                              !name.starts_with("gamma_y") && !name.starts_with("universal_gamma_y");
+    if (optional_law || name.ends_with("_yield_quasi_static") || name.ends_with("_chi2_dof") ||
+        name.ends_with("_p"))
       w.may_be_na(name);
   }
   for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
@@ -106,6 +112,10 @@ std::string points_table(const SweepAnalysis& a, const std::vector<std::string>&
     if (q != Quantity::force) header.push_back(fmt::format("{}_ratio [1]", name));
   }
   CsvWriter w("the points table", header, comments);
+  // n/a: the curve of a normal-stress or force law whose fit failed (warned).
+  for (Quantity q : kAllQuantities)
+    if (q != Quantity::sigma && has(a, q))
+      w.may_be_na(fmt::format("{}_herschel_bulkley", column_name(q)));
   for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
     const PhiGroup& g = a.sweep.groups[j];
     const GroupFit& f = a.estimate.fit.groups[j];

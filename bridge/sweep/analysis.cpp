@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/errors.h"
+#include "common/warning_collector.h"
 
 namespace softglass::bridge {
 
@@ -43,7 +44,8 @@ void require_stress_law(const Sweep& sweep, const SweepFitOutcome& outcome) {
   }
 }
 
-void warn_about_fits(const SweepAnalysis& a, std::vector<std::string>& warnings) {
+// One line per kind of warning, its places (volume fraction and quantity) listed.
+void warn_about_fits(const SweepAnalysis& a, WarningCollector& warnings) {
   for (std::size_t j = 0; j < a.sweep.groups.size(); ++j) {
     const PhiGroup& g = a.sweep.groups[j];
     const GroupFit& error = a.uncertainty.error.groups[j];
@@ -53,26 +55,27 @@ void warn_about_fits(const SweepAnalysis& a, std::vector<std::string>& warnings)
       const std::string where = fmt::format("phi = {}, {}", g.phi, column_name(q));
       const HerschelBulkleyFit& hb = *a.estimate.diagnostics.hb[j][index(q)];
       if (!hb.converged) {
-        warnings.push_back(where + ": the Herschel-Bulkley fit failed: " + hb.status);
+        warnings.add("the Herschel-Bulkley fit failed: " + hb.status, where);
         continue;
       }
       if (hb.goodness.p_value < kMissesData) {
-        warnings.push_back(where + ": the Herschel-Bulkley law misses the data (" +
-                           goodness_text(hb.goodness) + ")");
+        warnings.add(fmt::format("the Herschel-Bulkley law misses the data (p < {:g})", kMissesData),
+                     where + " (" + goodness_text(hb.goodness) + ")");
       }
       if (q != Quantity::sigma) {
         const PlateauCheck plateau = check_plateau(*g.curves[index(q)], hb);
-        if (!plateau.ok) warnings.push_back(where + ": " + plateau.reason);
+        if (!plateau.ok) warnings.add(plateau.reason, where);
       }
       const HbParameters& v = *value.hb[index(q)];
       const HbParameters& e = *error.hb[index(q)];
       // Not the consistency: it is the value at γ̃ = 1, far outside the data, and
       // its error mostly mirrors the exponent's (their correlation is ~0.99).
       if (e.yield > kPoorRelativeError * std::abs(v.yield) || e.exponent > kPoorExponentError) {
-        warnings.push_back(fmt::format(
-            "{}: poorly determined: yield {:.3g} ± {:.2g}, consistency {:.3g} ± {:.2g}, "
-            "exponent {:.3f} ± {:.3f}",
-            where, v.yield, e.yield, v.consistency, e.consistency, v.exponent, e.exponent));
+        warnings.add(
+            fmt::format("the Herschel-Bulkley law is poorly determined (a yield stress error over "
+                        "{:.0f} % or an exponent error over {:g}; the values in the _phi.csv table)",
+                        100.0 * kPoorRelativeError, kPoorExponentError),
+            where);
       }
     }
   }
@@ -155,15 +158,21 @@ SweepAnalysis analyse_sweep(const Sweep& sweep, const Resampler& resampler,
         "their values and errors are less reliable): {}",
         sweep.unconverged.size(), points));
   }
-  warn_about_fits(a, a.warnings);
+  WarningCollector fits;
+  warn_about_fits(a, fits);
+  for (const std::string& line : fits.lines()) a.warnings.push_back(line);
   warn_about_collapse(a, a.warnings);
+  WarningCollector failures;
   for (const auto& [name, fraction] : a.uncertainty.failures) {
     if (fraction > kTolerableFailures) {
-      a.warnings.push_back(fmt::format(
-          "{}: {:.1f} % of the bootstrap replicates failed to fit; its error is unreliable", name,
-          100.0 * fraction));
+      failures.add(
+          fmt::format("more than {:g} % of the bootstrap replicates failed to fit; the error is "
+                      "unreliable",
+                      100.0 * kTolerableFailures),
+          fmt::format("{} ({:.1f} %)", name, 100.0 * fraction));
     }
   }
+  for (const std::string& line : failures.lines()) a.warnings.push_back(line);
   return a;
 }
 
