@@ -79,8 +79,8 @@ void CsvWriter::separate() {
 }
 
 CsvWriter& CsvWriter::operator<<(double value) {
-  check_cell(columns_[std::min(cells_, columns_.size() - 1)], value, table_, rows_ + 1);
-  separate();
+  separate();  // refuses a row wider than the columns
+  check_cell(columns_[cells_ - 1], value, table_, rows_ + 1);
   text_ += fmt::format("{:.{}g}", value, digits_);
   return *this;
 }

@@ -9,20 +9,11 @@
 #include "common/csv_table.h"
 #include "common/csv_writer.h"
 #include "common/errors.h"
+#include "tests/common/text_checks.h"
 
 namespace softglass {
 namespace {
 
-template <class Write>
-std::string numerical_error(Write write) {
-  try {
-    write();
-  } catch (const NumericalError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "written";
-  return "";
-}
 
 TEST(CsvWriter, WritesTheHeaderFirstThenUnitsCommentsAndRows) {
   CsvWriter w("t.csv", {"curve", "phi [1]", "yield [E*]", "yield_se [E*]"}, {"made by a test"});
@@ -42,17 +33,17 @@ TEST(CsvWriter, WritesTheHeaderFirstThenUnitsCommentsAndRows) {
 TEST(CsvWriter, RefusesNumbersWithoutMeaningNamingRowAndColumn) {
   const std::vector<std::string> header = {"phi [1]", "yield [E*]", "yield_se [E*]"};
   for (const double bad : {NAN, INFINITY, -INFINITY}) {
-    EXPECT_NE(numerical_error([&] {
+    EXPECT_NE(testing::refusal_of<NumericalError>([&] {
                 CsvWriter("t.csv", header, {}) << 0.8 << bad;
               }).find("t.csv: row 1, column 'yield' came out as"),
               std::string::npos)
         << bad;
   }
-  EXPECT_NE(numerical_error([&] {
+  EXPECT_NE(testing::refusal_of<NumericalError>([&] {
               CsvWriter("t.csv", header, {}) << 0.8 << 1.0 << INFINITY;
             }).find("column 'yield_se'"),
             std::string::npos);
-  EXPECT_NE(numerical_error([&] {
+  EXPECT_NE(testing::refusal_of<NumericalError>([&] {
               CsvWriter("t.csv", header, {}) << 0.8 << 1.0 << -1e-3;
             }).find("a standard error is not negative"),
             std::string::npos);

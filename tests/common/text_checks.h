@@ -17,12 +17,13 @@ inline void expect_contains(const std::string& text, std::initializer_list<std::
     EXPECT_NE(text.find(part), std::string::npos) << part << " in: " << text;
 }
 
-/// The message of the InputError `read` throws; a failure when it throws none.
-template <class Read>
+/// The message of the `Error` (an InputError unless said) `read` throws; a
+/// failure when it throws none.
+template <class Error = InputError, class Read>
 std::string refusal_of(Read read) {
   try {
     read();
-  } catch (const InputError& e) {
+  } catch (const Error& e) {
     return e.what();
   }
   ADD_FAILURE() << "accepted";
